@@ -1,0 +1,16 @@
+# Every third-party piece comes from Debian's packages (see ./fxlab setup for the package names).
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glfw3 3.3 REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(GTest REQUIRED)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+
+# Dear ImGui's Debian build is a static library with the GLFW and OpenGL3 backends inside; its
+# headers live in /usr/include/imgui (backends in /usr/include/imgui/backends).
+add_library(fx_imgui INTERFACE)
+target_link_libraries(fx_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
+target_include_directories(fx_imgui SYSTEM INTERFACE ${IMGUI_INCLUDE_DIRS} ${IMGUI_INCLUDE_DIRS}/backends)
