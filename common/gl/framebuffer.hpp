@@ -1,0 +1,37 @@
+#pragma once
+// Framebuffers with names: completeness is checked when attachments change and an incomplete one
+// is reported by name ("GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT on bloom.down[3]"), never drawn into.
+#include <string>
+#include <string_view>
+
+#include "base/result.hpp"
+#include "gl/object.hpp"
+#include "gl/texture.hpp"
+
+namespace fx::gl {
+
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    explicit Framebuffer(std::string_view label);
+
+    void attachColor(int index, const Texture& texture, int level = 0);
+    void attachDepth(const Texture& texture, int level = 0);
+    // Which colour attachments the fragment shader's outputs go to, in order.
+    void setDrawBuffers(int colorCount);
+
+    // Ok, or the status name and the label.
+    Status checkComplete() const;
+
+    GLuint name() const { return name_.name(); }
+    const std::string& label() const { return label_; }
+
+private:
+    FramebufferName name_;
+    std::string label_;
+};
+
+std::string_view framebufferStatusName(GLenum status);
+Status checkFramebufferComplete(GLuint framebuffer, std::string_view label);
+
+}  // namespace fx::gl

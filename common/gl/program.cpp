@@ -1,0 +1,159 @@
+#include "gl/program.hpp"
+
+#include "base/log.hpp"
+#include "base/paths.hpp"
+#include "gl/shader_source.hpp"
+
+namespace fx::gl {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path resolveShaderPath(const fs::path& p) { return p.is_absolute() ? p : shaderDir() / p; }
+
+std::string shaderInfoLog(GLuint shader) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    log.resize(std::char_traits<char>::length(log.c_str()));
+    return log;
+}
+
+std::string programInfoLog(GLuint program) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    log.resize(std::char_traits<char>::length(log.c_str()));
+    return log;
+}
+
+struct CompiledStage {
+    ShaderName shader;
+    std::vector<fs::path> files;
+};
+
+Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std::string& defines) {
+    auto source = expandShaderSource(resolveShaderPath(file), shaderDir(), defines);
+    if (!source) return Error{source.error()};
+    ShaderName shader(glCreateShader(stage));
+    shader.label(source->fileNames.front());
+    const char* text = source->text.c_str();
+    auto length = static_cast<GLint>(source->text.size());
+    glShaderSource(shader.name(), 1, &text, &length);
+    glCompileShader(shader.name());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        return Error{cat("compile failed: ", source->fileNames.front(), "\n",
+                         mapCompilerLog(shaderInfoLog(shader.name()), source->fileNames))};
+    }
+    return CompiledStage{std::move(shader), std::move(source->files)};
+}
+
+}  // namespace
+
+Result<Program> Program::build(const ProgramSources& sources) {
+    std::vector<std::pair<GLenum, fs::path>> stages;
+    if (!sources.compute.empty()) stages.emplace_back(GL_COMPUTE_SHADER, sources.compute);
+    if (!sources.vertex.empty()) stages.emplace_back(GL_VERTEX_SHADER, sources.vertex);
+    if (!sources.fragment.empty()) stages.emplace_back(GL_FRAGMENT_SHADER, sources.fragment);
+    if (stages.empty()) return Error{"a program needs a vertex and fragment shader, or a compute shader"};
+
+    Program program;
+    program.label_ = sources.label;
+    if (program.label_.empty()) {
+        for (auto& [stage, path] : stages) {
+            program.label_ += (program.label_.empty() ? "" : " + ") + path.generic_string();
+        }
+    }
+
+    std::vector<CompiledStage> compiled;
+    for (auto& [stage, path] : stages) {
+        auto result = compileStage(stage, path, sources.defines);
+        if (!result) return Error{result.error()};
+        for (auto& f : result->files) program.files_.push_back(f);
+        compiled.push_back(std::move(*result));
+    }
+
+    program.name_ = ProgramName(glCreateProgram());
+    program.name_.label(program.label_);
+    for (auto& stage : compiled) glAttachShader(program.name(), stage.shader.name());
+    glLinkProgram(program.name());
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program.name(), GL_LINK_STATUS, &linked);
+    // Shaders are no longer needed once linked (or once linking failed).
+    for (auto& stage : compiled) glDetachShader(program.name(), stage.shader.name());
+    if (linked != GL_TRUE) {
+        // Unlike the chapter's version, a failed program is not kept: an unusable non-zero name
+        // would raise GL_INVALID_OPERATION at every draw.
+        return Error{cat("link failed: ", program.label_, "\n", programInfoLog(program.name()))};
+    }
+
+    GLint count = 0;
+    glGetProgramInterfaceiv(program.name(), GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const GLenum properties[] = {GL_NAME_LENGTH, GL_LOCATION};
+        GLint values[2] = {};
+        glGetProgramResourceiv(program.name(), GL_UNIFORM, static_cast<GLuint>(i), 2, properties, 2, nullptr, values);
+        std::string uniform(static_cast<std::size_t>(std::max(values[0], 1)), '\0');
+        glGetProgramResourceName(program.name(), GL_UNIFORM, static_cast<GLuint>(i), values[0], nullptr, uniform.data());
+        uniform.resize(std::char_traits<char>::length(uniform.c_str()));
+        if (values[1] >= 0) program.uniforms_[uniform] = values[1];
+    }
+    return program;
+}
+
+GLint Program::uniformLocation(const std::string& uniform) const {
+    auto it = uniforms_.find(uniform);
+    if (it != uniforms_.end()) return it->second;
+    // Arrays are listed as "name[0]".
+    it = uniforms_.find(uniform + "[0]");
+    return it != uniforms_.end() ? it->second : -1;
+}
+
+ReloadableProgram::ReloadableProgram(ProgramSources sources) : sources_(std::move(sources)) { (void)reload(); }
+
+void ReloadableProgram::rememberStamps(const std::vector<fs::path>& files) {
+    watched_ = files;
+    stamps_.clear();
+    for (auto& f : watched_) {
+        std::error_code ec;
+        stamps_.push_back(fs::last_write_time(f, ec));
+    }
+}
+
+Status ReloadableProgram::reload() {
+    auto built = Program::build(sources_);
+    if (!built) {
+        error_ = built.error();
+        log::error(error_, usable() ? "(keeping the last good program)" : "");
+        // Watch the top-level files so that a fix is picked up; includes are watched once they built.
+        std::vector<fs::path> files = watched_;
+        for (auto* p : {&sources_.vertex, &sources_.fragment, &sources_.compute}) {
+            if (!p->empty()) files.push_back(resolveShaderPath(*p));
+        }
+        rememberStamps(files);
+        return Error{error_};
+    }
+    program_ = std::move(*built);
+    error_.clear();
+    ++generation_;
+    rememberStamps(program_.sourceFiles());
+    return Status::success();
+}
+
+bool ReloadableProgram::reloadIfChanged() {
+    for (std::size_t i = 0; i < watched_.size(); ++i) {
+        std::error_code ec;
+        auto stamp = fs::last_write_time(watched_[i], ec);
+        if (ec || stamp != stamps_[i]) {
+            (void)reload();
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace fx::gl

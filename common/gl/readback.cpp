@@ -1,0 +1,65 @@
+#include "gl/readback.hpp"
+
+#include <algorithm>
+
+namespace fx::gl {
+namespace {
+
+GLenum readFormatFor(int channels) {
+    switch (channels) {
+        case 1: return GL_RED;
+        case 2: return GL_RG;
+        case 3: return GL_RGB;
+        default: return GL_RGBA;
+    }
+}
+
+}  // namespace
+
+FloatImage readTexture(GLuint texture, const TextureInfo& info, int level) {
+    FloatImage image;
+    image.width = mipSize(info.width, level);
+    image.height = mipSize(info.height, level);
+    image.channels = channelCount(info.internalFormat);
+    image.texels.assign(static_cast<std::size_t>(image.width) * image.height * image.channels, 0.0f);
+    GLenum format = isDepthFormat(info.internalFormat) ? GL_DEPTH_COMPONENT : readFormatFor(image.channels);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(texture, level, format, GL_FLOAT, static_cast<GLsizei>(image.texels.size() * sizeof(float)),
+                      image.texels.data());
+    return image;
+}
+
+FloatImage readTexture(const Texture& texture, int level) { return readTexture(texture.name(), texture.info(), level); }
+
+Texel readTexel(GLuint texture, const TextureInfo& info, int level, int x, int y) {
+    Texel texel;
+    int w = mipSize(info.width, level);
+    int h = mipSize(info.height, level);
+    if (x < 0 || y < 0 || x >= w || y >= h) return texel;
+    int channels = channelCount(info.internalFormat);
+    GLenum format = isDepthFormat(info.internalFormat) ? GL_DEPTH_COMPONENT : readFormatFor(channels);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    float values[4] = {0, 0, 0, 1};
+    glGetTextureSubImage(texture, level, x, y, 0, 1, 1, 1, format, GL_FLOAT, sizeof(values), values);
+    std::copy(values, values + channels, texel.value);
+    return texel;
+}
+
+ByteImage readFramebufferRgba8(GLuint framebuffer, int width, int height) {
+    ByteImage image;
+    image.width = std::max(width, 0);
+    image.height = std::max(height, 0);
+    image.channels = 4;
+    image.texels.assign(static_cast<std::size_t>(image.width) * image.height * 4, 0);
+    if (image.texels.empty()) return image;
+    GLint previous = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    if (framebuffer == 0) glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.texels.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+    return image;
+}
+
+}  // namespace fx::gl

@@ -1,0 +1,134 @@
+#include "gl/shader_source.hpp"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+#include "base/file_io.hpp"
+#include "base/log.hpp"
+
+namespace fx::gl {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Expander {
+    const fs::path& includeRoot;
+    const FileReader& reader;
+    ExpandedSource out;
+    std::vector<fs::path> stack;  // files being expanded, for cycle detection
+
+    std::string displayName(const fs::path& file) const {
+        std::error_code ec;
+        auto relative = fs::relative(file, includeRoot, ec);
+        if (!ec && !relative.empty() && *relative.begin() != "..") return relative.generic_string();
+        return file.generic_string();
+    }
+
+    Result<fs::path> resolve(const fs::path& includer, const std::string& name, int line) {
+        for (const fs::path& base : {includer.parent_path(), includeRoot}) {
+            fs::path candidate = (base / name).lexically_normal();
+            std::error_code ec;
+            if (fs::exists(candidate, ec)) return candidate;
+        }
+        return Error{cat(displayName(includer), ":", line, ": cannot find included file \"", name,
+                         "\" (looked beside the file and in ", includeRoot.generic_string(), ")")};
+    }
+
+    // Appends `file` to the output; returns its source-string number.
+    Status expand(const fs::path& file, std::string_view defines, bool isMain) {
+        if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
+            std::string chain;
+            for (auto& f : stack) chain += displayName(f) + " -> ";
+            return Error{cat("#include cycle: ", chain, displayName(file))};
+        }
+        auto text = reader(file);
+        if (!text) return Error{text.error()};
+
+        int index = static_cast<int>(out.fileNames.size());
+        out.fileNames.push_back(displayName(file));
+        out.files.push_back(file);
+        stack.push_back(file);
+        // An included file counts from its own first line.
+        if (!isMain) out.text += cat("#line 1 ", index, "\n");
+
+        static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
+        static const std::regex versionLine(R"(^\s*#\s*version\b.*)");
+        std::istringstream lines(*text);
+        std::string line;
+        int number = 0;
+        bool sawVersion = false;
+        while (std::getline(lines, line)) {
+            ++number;
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            std::smatch match;
+            if (isMain && !sawVersion && std::regex_match(line, versionLine)) {
+                sawVersion = true;
+                out.text += line + "\n";
+                if (!defines.empty()) {
+                    out.text += std::string(defines);
+                    if (defines.back() != '\n') out.text += "\n";
+                }
+                out.text += cat("#line ", number + 1, " ", index, "\n");
+                continue;
+            }
+            if (std::regex_match(line, match, includeLine)) {
+                auto target = resolve(file, match[1].str(), number);
+                if (!target) return Error{target.error()};
+                bool already = std::find(out.files.begin(), out.files.end(), *target) != out.files.end();
+                if (already && std::find(stack.begin(), stack.end(), *target) == stack.end()) {
+                    out.text += "\n";  // included before: keep the line count
+                    continue;
+                }
+                if (auto status = expand(*target, {}, false); !status) return status;
+                out.text += cat("#line ", number + 1, " ", index, "\n");
+                continue;
+            }
+            out.text += line + "\n";
+        }
+        if (isMain && !sawVersion) {
+            return Error{cat(displayName(file), ":1: the first directive must be #version (e.g. #version 450 core)")};
+        }
+        stack.pop_back();
+        return Status::success();
+    }
+};
+
+}  // namespace
+
+Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& includeRoot, std::string_view defines,
+                                          const FileReader& reader) {
+    FileReader read = reader ? reader : FileReader([](const fs::path& p) { return readTextFile(p); });
+    Expander expander{includeRoot, read, {}, {}};
+    auto status = expander.expand(file.lexically_normal(), defines, true);
+    if (!status) return Error{status.error()};
+    return std::move(expander.out);
+}
+
+std::string mapCompilerLog(std::string_view log, const std::vector<std::string>& fileNames) {
+    auto nameOf = [&](const std::string& index) -> std::string {
+        std::size_t i = std::stoul(index);
+        return i < fileNames.size() ? fileNames[i] : cat("<source ", index, ">");
+    };
+    static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\): )");
+    static const std::regex nvidia(R"(^(\d+)\((\d+)\) : )");
+    static const std::regex amd(R"(^(ERROR|WARNING): (\d+):(\d+): )");
+    std::ostringstream out;
+    std::istringstream lines{std::string(log)};
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (std::regex_search(line, m, mesa)) {
+            out << nameOf(m[1]) << ":" << m[2] << ":" << m[3] << ": " << m.suffix() << "\n";
+        } else if (std::regex_search(line, m, nvidia)) {
+            out << nameOf(m[1]) << ":" << m[2] << ": " << m.suffix() << "\n";
+        } else if (std::regex_search(line, m, amd)) {
+            out << nameOf(m[2]) << ":" << m[3] << ": " << m[1] << ": " << m.suffix() << "\n";
+        } else if (!line.empty()) {
+            out << line << "\n";
+        }
+    }
+    return out.str();
+}
+
+}  // namespace fx::gl

@@ -1,0 +1,63 @@
+#pragma once
+// One GL context interface with two implementations: a GLFW window, and EGL headless (Mesa
+// surfaceless, the EGL device platform for NVIDIA, or a pbuffer). Lessons never see which one runs:
+// they draw into presentFramebuffer() at framebufferSize().
+#include <memory>
+#include <string>
+
+#include "base/result.hpp"
+#include "gl/gl.hpp"
+
+struct GLFWwindow;
+
+namespace fx {
+
+struct Extent {
+    int width = 0;
+    int height = 0;
+    bool empty() const { return width <= 0 || height <= 0; }
+    bool operator==(const Extent&) const = default;
+};
+
+struct ContextOptions {
+    Extent size{1280, 720};
+    std::string title = "fxlab";
+    bool debugContext = true;  // KHR_debug messages are delivered reliably only in debug contexts
+    bool visible = true;       // windows only
+};
+
+class Context {
+public:
+    virtual ~Context() = default;
+
+    // The size of what is presented; 0x0 while a window is minimised (render nothing then).
+    virtual Extent framebufferSize() const = 0;
+    // 0 for a window's back buffer; an offscreen framebuffer when headless.
+    virtual GLuint presentFramebuffer() const = 0;
+    virtual void present() = 0;
+    virtual void pollEvents() = 0;
+    virtual bool shouldClose() const = 0;
+    virtual bool headless() const = 0;
+    // Headless contexts resize their offscreen target on request; windows follow the user.
+    virtual void resize(Extent size) = 0;
+    virtual GLFWwindow* window() const { return nullptr; }
+
+    // "EGL surfaceless (Mesa)", "GLFW window" ...
+    const std::string& kind() const { return kind_; }
+    // GL_RENDERER and GL_VERSION of the context.
+    const std::string& renderer() const { return renderer_; }
+    const std::string& version() const { return version_; }
+
+protected:
+    // After the context is current and GL is loaded: checks for 4.5 and fills renderer/version.
+    Status finishSetup(std::string kind);
+    std::string kind_, renderer_, version_;
+};
+
+Result<std::unique_ptr<Context>> createWindowContext(const ContextOptions& options);
+Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& options);
+
+// True when a window system is reachable ($DISPLAY or $WAYLAND_DISPLAY set and GLFW starts).
+bool displayAvailable();
+
+}  // namespace fx
