@@ -11,6 +11,7 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 
 # Dear ImGui's Debian build is a static library with the GLFW and OpenGL3 backends inside; its
 # headers live in /usr/include/imgui (backends in /usr/include/imgui/backends).
+find_path(FX_IMGUI_BACKENDS_DIR imgui_impl_glfw.h PATH_SUFFIXES imgui/backends REQUIRED)
 add_library(fx_imgui INTERFACE)
 target_link_libraries(fx_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
-target_include_directories(fx_imgui SYSTEM INTERFACE ${IMGUI_INCLUDE_DIRS} ${IMGUI_INCLUDE_DIRS}/backends)
+target_include_directories(fx_imgui SYSTEM INTERFACE ${IMGUI_INCLUDE_DIRS} ${FX_IMGUI_BACKENDS_DIR})

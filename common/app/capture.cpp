@@ -1,0 +1,58 @@
+#include "app/capture.hpp"
+
+#include "base/log.hpp"
+#include "gl/readback.hpp"
+#include "image/pfm_file.hpp"
+#include "image/png_file.hpp"
+#include "image/view_transform.hpp"
+#include "render_gl/gl_formats.hpp"
+
+namespace fx {
+
+std::vector<CapturedTexture> readFrameTextures(const FrameGraph& graph) {
+    std::vector<CapturedTexture> out;
+    for (std::uint32_t i = 0; i < graph.textureCount(); ++i) {
+        const TextureView& view = graph.texture(TextureHandle{i});
+        if (view.native == 0 || view.origin == TextureOrigin::PresentedOutput) continue;
+        gl::TextureInfo info{view.spec.width, view.spec.height, view.spec.mipLevels, glInternalFormat(view.spec.format), view.name};
+        CapturedTexture c{view.name, view.spec, gl::readTexture(view.native, info, 0), {}};
+        c.stats = computeStats(c.pixels);
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::string captureFileStem(std::string_view name) {
+    std::string stem;
+    for (char ch : name) {
+        bool plain = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' ||
+                     ch == '_' || ch == '-';
+        if (plain) {
+            stem += ch;
+        } else if (ch == ']') {
+            continue;
+        } else if (stem.empty() || stem.back() != '-') {
+            stem += '-';
+        }
+    }
+    return stem.empty() ? "texture" : stem;
+}
+
+Status writeCaptures(const std::filesystem::path& dir, const ByteImage& finalImage,
+                     const std::vector<CapturedTexture>& textures, bool floats) {
+    if (!finalImage.empty()) {
+        if (auto s = writePng(dir / "final.png", finalImage); !s) return s;
+    }
+    for (const CapturedTexture& t : textures) {
+        bool floatFormat = isFloat(t.spec.format);
+        std::string stem = captureFileStem(t.name);
+        ByteImage shown = toDisplay(t.pixels, floatFormat ? ViewTransform::LinearToSrgb : ViewTransform::Direct);
+        if (auto s = writePng(dir / (stem + ".png"), shown); !s) return s;
+        if (floats) {
+            if (auto s = writePfm(dir / (stem + ".pfm"), t.pixels); !s) return s;
+        }
+    }
+    return Status::success();
+}
+
+}  // namespace fx

@@ -1,0 +1,68 @@
+#pragma once
+// What a lesson is: who it is, its steps (following the chapter), its parameters, and how it builds
+// the frame graph for the current step. Everything else (context, loop, overlay, capture, report)
+// is the runner's; a lesson's main() is one line: return fx::runLesson<MyLesson>(argc, argv);
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/params.hpp"
+#include "base/result.hpp"
+#include "gl/program.hpp"
+#include "render/frame_graph.hpp"
+#include "scene/scene.hpp"
+
+namespace fx {
+
+struct LessonInfo {
+    int number = 0;
+    std::string slug;          // "program-objects": the executable is fxlab-01-program-objects
+    std::string title;         // "Program objects"
+    std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"
+};
+
+struct LessonStep {
+    std::string title;
+    std::string text;  // a few sentences: what this step shows and what to look at
+};
+
+// The clock and the frame, as a lesson sees them. Time is the fixed-step clock when headless.
+struct FrameInfo {
+    std::uint64_t index = 0;
+    double seconds = 0;  // scene time, wrapped by lessons that feed it to shaders
+    double deltaSeconds = 0;
+    Size2D size;
+    int step = 0;  // 0-based
+    std::uint32_t seed = 1;
+    bool headless = false;
+    const FrameReport* previousFrame = nullptr;  // the last frame's passes and times, if any
+};
+
+class Lesson {
+public:
+    virtual ~Lesson() = default;
+
+    virtual LessonInfo info() const = 0;
+    virtual std::vector<LessonStep> steps() const = 0;
+    // Called once before the context exists, so --param and --list-params work without GL.
+    virtual void declareParams(ParamSet& params) { (void)params; }
+
+    // The GL context is current and the scene loaded; create programs, meshes, buffers.
+    virtual Status init(const Scene& scene) = 0;
+    // Everything the lesson owns in GL goes here, before the context does.
+    virtual void shutdown() {}
+
+    // Simulation for the frame (only what the scene has).
+    virtual void update(const FrameInfo& frame) { (void)frame; }
+    // Declares this frame's passes for the current step.
+    virtual void buildFrame(FrameGraph& graph, const FrameInfo& frame) = 0;
+
+    // Programs the runner reloads on F5 or when their files change, and whose errors it shows.
+    virtual std::vector<gl::ReloadableProgram*> programs() { return {}; }
+    // The lesson's own panel in the overlay (ImGui calls), under its steps and parameters.
+    virtual void drawPanel(const FrameInfo& frame) { (void)frame; }
+    // Extra facts for the report ("uniform look-ups per frame": 1200).
+    virtual void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const { (void)facts; }
+};
+
+}  // namespace fx

@@ -1,0 +1,33 @@
+#pragma once
+// The JSON report of a run (--report FILE): who rendered, how long frames took and how that was
+// measured, GL errors, every pass with why it did or did not run, and statistics of every texture
+// (per channel min, max, mean, NaN and Inf counts) read back on the last frame.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/capture.hpp"
+#include "render/frame_report.hpp"
+
+namespace fx {
+
+struct RunFacts {
+    std::string lesson, stepTitle, contextKind, renderer, glVersion, timingMethod, timingReason, scene;
+    int step = 0;  // 1-based
+    Size2D size;
+    std::vector<double> frameCpuMs;
+    std::vector<double> frameGpuMs;  // sum of the pass times the timer had for each frame
+    std::int64_t glErrors = 0, glExpectedErrors = 0, glWarnings = 0;
+    std::string lastGlError;
+    std::vector<std::string> shaderErrors;
+    std::vector<std::pair<std::string, std::string>> lessonFacts;
+};
+
+nlohmann::ordered_json statsJson(const std::vector<ChannelStats>& stats);
+
+nlohmann::ordered_json buildRunReport(const RunFacts& facts, const FrameReport& lastFrame,
+                                      const std::vector<CapturedTexture>& textures, const FloatImage& finalImage);
+
+}  // namespace fx

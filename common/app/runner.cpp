@@ -1,0 +1,352 @@
+#include "app/runner.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/capture.hpp"
+#include "app/run_options.hpp"
+#include "app/run_report.hpp"
+#include "base/file_io.hpp"
+#include "base/log.hpp"
+#include "base/paths.hpp"
+#include "gl/context_guard.hpp"
+#include "gl/debug_output.hpp"
+#include "gl/readback.hpp"
+#include "image/png_file.hpp"
+#include "platform/context.hpp"
+#include "render_gl/gl_pass_executor.hpp"
+#include "render_gl/gl_texture_allocator.hpp"
+#include "scene/scene_loader.hpp"
+#include "ui/overlay.hpp"
+
+namespace fx {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string executableName(const LessonInfo& info) {
+    char number[8];
+    std::snprintf(number, sizeof number, "%02d", info.number);
+    return cat("fxlab-", number, "-", info.slug);
+}
+
+void printSteps(const std::vector<LessonStep>& steps) {
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::cout << i + 1 << ". " << steps[i].title << "\n   " << steps[i].text << "\n";
+    }
+}
+
+void printParams(const ParamSet& params) {
+    if (params.all().empty()) std::cout << "(this lesson has no parameters)\n";
+    for (const Param& p : params.all()) {
+        std::cout << p.name << " = " << p.text() << "  (" << p.rangeText() << ")";
+        if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
+        std::cout << "\n    " << p.description << "\n";
+    }
+}
+
+// Keys are read in a GLFW callback (ImGui chains its own after ours).
+struct KeyState {
+    bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
+};
+KeyState* keys = nullptr;
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (action != GLFW_PRESS || !keys) return;
+    switch (key) {
+        case GLFW_KEY_RIGHT: keys->next = true; break;
+        case GLFW_KEY_LEFT: keys->previous = true; break;
+        case GLFW_KEY_F1: keys->toggleOverlay = true; break;
+        case GLFW_KEY_F5: keys->reload = true; break;
+        case GLFW_KEY_F12: keys->screenshot = true; break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+        default: break;
+    }
+}
+
+struct Session {
+    Lesson& lesson;
+    RunOptions options;
+    ParamSet params;
+    Scene scene;
+    int step = 0;
+    std::string status;
+};
+
+int run(Session& s, const std::string& exe) {
+    const RunOptions& o = s.options;
+    bool headless = o.forceHeadless;
+    if (!headless && !displayAvailable()) {
+        headless = true;
+        log::info("no display found: rendering headless");
+    }
+    fs::path captureDir = o.captureDir;
+    fs::path reportFile = o.reportFile;
+    if (headless && captureDir.empty() && reportFile.empty()) {
+        // A new user's first run with no display still shows something: the picture and the report.
+        captureDir = fs::path("out") / exe;
+        reportFile = captureDir / "report.json";
+    }
+    int frames = o.frames.value_or(headless ? 3 : 0);  // 0: until the window closes
+
+    ContextOptions co;
+    co.size = {o.width.value_or(headless ? 1280 : 1280), o.height.value_or(720)};
+    co.title = cat("fxlab ", s.lesson.info().number, ": ", s.lesson.info().title);
+    Result<std::unique_ptr<Context>> made = headless ? createHeadlessContext(co) : createWindowContext(co);
+    if (!made && !headless) {
+        log::warning(made.error(), "; trying headless instead");
+        headless = true;
+        made = createHeadlessContext(co);
+    }
+    if (!made) {
+        log::error(made.error());
+        return 1;
+    }
+    std::unique_ptr<Context> context = std::move(*made);
+    if (headless && (co.size.width == 0 || co.size.height == 0)) context->resize({co.size.width, co.size.height});
+
+    KeyState keyState;
+    keys = &keyState;
+    if (context->window()) glfwSetKeyCallback(context->window(), onKey);
+
+    int exitCode = 0;
+    {
+        if (auto status = s.lesson.init(s.scene); !status) {
+            log::error(exe, ": ", status.error());
+            s.lesson.shutdown();
+            return 1;
+        }
+        GlTextureAllocator allocator;
+        TexturePool pool(allocator);
+        PassTimer timer(o.timing, context->renderer());
+        GlPassExecutor executor(timer, {context->presentFramebuffer(), true});
+        std::unique_ptr<Overlay> overlay;
+        if (!headless || o.overlayHeadless) overlay = std::make_unique<Overlay>(context->window());
+        bool overlayVisible = headless ? o.overlayHeadless : o.overlay;
+
+        RunFacts facts;
+        facts.lesson = exe;
+        facts.contextKind = context->kind();
+        facts.renderer = context->renderer();
+        facts.glVersion = context->version();
+        facts.timingMethod = std::string(toString(timer.method()));
+        facts.timingReason = timer.reason();
+        facts.scene = s.scene.file.string();
+
+        double timeStep = o.timeStep.value_or(1.0 / 60.0);
+        double seconds = 0;
+        auto wallStart = std::chrono::steady_clock::now();
+        auto lastWall = wallStart;
+        auto lastReloadCheck = wallStart;
+        FrameReport lastReport;
+        std::vector<CapturedTexture> lastTextures;
+        FloatImage lastFinal;
+        ByteImage lastFinalBytes;
+        int screenshotCount = 0;
+        gl::resetDebugCounters();
+
+        for (std::uint64_t index = 0; frames == 0 || index < std::uint64_t(frames); ++index) {
+            context->pollEvents();
+            if (context->shouldClose()) break;
+            auto frameStart = std::chrono::steady_clock::now();
+            double delta = headless ? timeStep : std::chrono::duration<double>(frameStart - lastWall).count();
+            lastWall = frameStart;
+            seconds += delta;
+
+            int stepCount = int(s.lesson.steps().size());
+            if (keyState.next && !(overlay && overlay->wantsKeyboard())) s.step = std::min(s.step + 1, stepCount - 1);
+            if (keyState.previous && !(overlay && overlay->wantsKeyboard())) s.step = std::max(s.step - 1, 0);
+            if (keyState.toggleOverlay) overlayVisible = !overlayVisible;
+            bool reloadNow = keyState.reload;
+            bool screenshot = keyState.screenshot;
+            keyState = {};
+            if (!headless && frameStart - lastReloadCheck > std::chrono::milliseconds(500)) {
+                lastReloadCheck = frameStart;
+                for (auto* p : s.lesson.programs()) p->reloadIfChanged();
+            }
+            if (reloadNow) {
+                for (auto* p : s.lesson.programs()) (void)p->reload();
+                s.status = "reloaded shaders";
+            }
+
+            Extent extent = context->framebufferSize();
+            FrameInfo frame{index, seconds, delta, {extent.width, extent.height}, s.step, o.seed, headless,
+                            index > 0 ? &lastReport : nullptr};
+            s.lesson.update(frame);
+            if (extent.empty()) {
+                // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
+                if (!headless) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+                facts.frameCpuMs.push_back(0);
+                facts.frameGpuMs.push_back(0);
+                continue;
+            }
+            executor.setPresentFramebuffer(context->presentFramebuffer());
+
+            bool lastFrame = frames != 0 && index + 1 == std::uint64_t(frames);
+            FrameGraph graph(OutputTarget{{extent.width, extent.height}, "output", TextureFormat::RGBA8, 0});
+            s.lesson.buildFrame(graph, frame);
+            for (auto& name : o.inspect) graph.inspect(name);
+            if (lastFrame) {
+                for (std::uint32_t t = 1; t < graph.textureCount(); ++t) graph.capture(TextureHandle{t});
+            }
+            if (auto status = graph.execute(pool, executor); !status) log::error("frame graph: ", status.error());
+            lastReport = graph.report();
+            if (lastFrame) lastTextures = readFrameTextures(graph);
+            graph.releaseTextures();
+            pool.endFrame();
+
+            double passMs = 0;
+            for (auto& p : lastReport.passes) passMs += p.timeMs.value_or(0.0);
+
+            if (overlay && overlayVisible) {
+                glBindFramebuffer(GL_FRAMEBUFFER, context->presentFramebuffer());
+                glViewport(0, 0, extent.width, extent.height);
+                OverlayModel model;
+                model.title = cat(s.lesson.info().number, ". ", s.lesson.info().title);
+                for (auto& st : s.lesson.steps()) model.steps.push_back({st.title, st.text});
+                model.step = &s.step;
+                model.params = &s.params;
+                model.frame = &lastReport;
+                model.timing = cat(toString(timer.method()));
+                model.renderer = cat(context->renderer(), " (", context->kind(), ")");
+                model.frameMs = facts.frameCpuMs.empty() ? 0 : facts.frameCpuMs.back();
+                model.glErrors = gl::debugCounters().errors;
+                model.glExpectedErrors = gl::debugCounters().expectedErrors;
+                for (auto* p : s.lesson.programs()) {
+                    if (!p->error().empty()) model.shaderErrors.push_back(p->error());
+                }
+                model.status = s.status;
+                model.lessonPanel = [&] { s.lesson.drawPanel(frame); };
+                fs::path presetPath = fs::path("out") / (exe + ".preset.json");
+                model.onSavePreset = [&, presetPath] {
+                    auto saved = writeFileAtomically(presetPath, s.params.toJson());
+                    s.status = saved ? cat("saved ", presetPath.string()) : saved.error();
+                };
+                model.onLoadPreset = [&, presetPath] {
+                    auto text = readTextFile(presetPath);
+                    Status loaded = text ? s.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
+                    s.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
+                };
+                overlay->draw(model, extent.width, extent.height, delta);
+            }
+
+            if (lastFrame || screenshot) {
+                lastFinalBytes = gl::readFramebufferRgba8(context->presentFramebuffer(), extent.width, extent.height);
+                lastFinal = toFloatImage(lastFinalBytes);
+                if (screenshot) {
+                    fs::path shot = fs::path("out") / cat(exe, "-screenshot-", ++screenshotCount, ".png");
+                    auto written = writePng(shot, lastFinalBytes);
+                    s.status = written ? cat("saved ", shot.string()) : written.error();
+                    log::info(s.status);
+                }
+            }
+            context->present();
+            gl::drainErrorFlags();
+            facts.frameCpuMs.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+            facts.frameGpuMs.push_back(passMs);
+        }
+
+        // The results of the run.
+        Extent extent = context->framebufferSize();
+        facts.size = {extent.width, extent.height};
+        facts.step = s.step + 1;
+        auto steps = s.lesson.steps();
+        facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)].title : "";
+        facts.glErrors = gl::debugCounters().errors;
+        facts.glExpectedErrors = gl::debugCounters().expectedErrors;
+        facts.glWarnings = gl::debugCounters().warnings;
+        facts.lastGlError = gl::debugCounters().lastError;
+        for (auto* p : s.lesson.programs()) {
+            if (!p->error().empty()) facts.shaderErrors.push_back(p->error());
+        }
+        s.lesson.reportFacts(facts.lessonFacts);
+        if (!captureDir.empty()) {
+            if (auto written = writeCaptures(captureDir, lastFinalBytes, lastTextures, o.captureFloat); !written) {
+                log::error(written.error());
+                exitCode = 1;
+            } else {
+                log::info("captures written to ", captureDir.string(), "/ (final.png and ", lastTextures.size(),
+                          " intermediate textures)");
+            }
+        }
+        if (!reportFile.empty()) {
+            auto json = buildRunReport(facts, lastReport, lastTextures, lastFinal).dump(2) + "\n";
+            if (auto written = writeFileAtomically(reportFile, json); !written) {
+                log::error(written.error());
+                exitCode = 1;
+            } else {
+                log::info("report written to ", reportFile.string());
+            }
+        }
+        if (facts.glErrors > 0) log::error(facts.glErrors, " GL error(s) in this run; the last: ", facts.lastGlError);
+        s.lesson.shutdown();
+        // overlay, executor, pool and allocator go here, while the context is still current.
+    }
+    keys = nullptr;
+    return exitCode;
+}
+
+}  // namespace
+
+int runLesson(Lesson& lesson, int argc, char** argv) {
+    std::string exe = executableName(lesson.info());
+    std::vector<std::string> args(argv + 1, argv + argc);
+    auto parsed = parseRunOptions(args);
+    if (!parsed) {
+        std::cerr << exe << ": " << parsed.error() << "\n";
+        return 2;
+    }
+    Session s{lesson, std::move(*parsed), {}, {}, 0, {}};
+    lesson.declareParams(s.params);
+    if (s.options.help) {
+        std::cout << lesson.info().title << "\n\n" << runOptionsHelp(exe);
+        return 0;
+    }
+    if (s.options.listSteps) {
+        printSteps(lesson.steps());
+        return 0;
+    }
+    if (s.options.listParams) {
+        printParams(s.params);
+        return 0;
+    }
+    int stepCount = int(lesson.steps().size());
+    if (s.options.step) {
+        if (*s.options.step > stepCount) {
+            std::cerr << exe << ": --step: expected a step number from 1 to " << stepCount << ", got " << *s.options.step << "\n";
+            return 2;
+        }
+        s.step = *s.options.step - 1;
+    }
+    if (!s.options.presetFile.empty()) {
+        auto text = readTextFile(s.options.presetFile);
+        Status loaded = text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});
+        if (!loaded) {
+            std::cerr << exe << ": --preset: " << loaded.error() << "\n";
+            return 2;
+        }
+    }
+    for (const std::string& assignment : s.options.params) {
+        if (auto status = s.params.assign(assignment); !status) {
+            std::cerr << exe << ": --param: " << status.error() << "\n";
+            return 2;
+        }
+    }
+    fs::path sceneFile = s.options.scene.empty() ? resourceDir() / lesson.info().defaultScene : s.options.scene;
+    auto scene = loadScene(sceneFile);
+    if (!scene) {
+        std::cerr << exe << ": " << scene.error() << "\n";
+        return 1;
+    }
+    s.scene = std::move(*scene);
+    return run(s, exe);
+}
+
+}  // namespace fx

@@ -1,0 +1,135 @@
+#include "image/plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "base/log.hpp"
+#include "image/plot_style.hpp"
+
+namespace fx {
+namespace {
+
+using namespace plot_style;
+
+// A note that ends in a list of names, "prefix: a, b, c", cut short so that it fits on one line of
+// a picture `width` pixels wide.
+std::string noteWithNames(const std::string& prefix, const std::vector<std::string>& names, int width) {
+    const double charWidth = measureText("0", kTextScale).width + kTextScale;  // advance per character
+    const auto fits = [&](const std::string& text) {
+        return measureText(text, kTextScale).width <= width - 2.0 * kMargin - 4.0 * charWidth;
+    };
+    std::string note = prefix + ": ";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const std::string name = names[i].empty() ? std::string("(unnamed)") : names[i];
+        const std::string next = note + (i > 0 ? ", " : "") + name;
+        if (!fits(next))
+            return i > 0 ? note + ", ..." : cat(note, names.size(), names.size() == 1 ? " point" : " points");
+        note = next;
+    }
+    return note;
+}
+
+}  // namespace
+
+bool PlotLayout::isDrawable(const PlotPoint& point) const {
+    return std::isfinite(point.x) && std::isfinite(point.y);
+}
+
+double PlotLayout::pixelX(double x) const {
+    return left + xAxis.fraction(x) * (right - left);
+}
+
+double PlotLayout::pixelY(double y) const {
+    if (yAxis.logarithmic && yFloor > 0.0 && !(y >= yFloor)) y = yFloor;
+    return bottom - yAxis.fraction(y) * (bottom - top);
+}
+
+std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (std::isfinite(points[i].x) && std::isfinite(points[i].y)) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        if (points[a].x != points[b].x) return points[a].x < points[b].x;
+        return points[a].y < points[b].y;
+    });
+    // Sweeping by increasing x, a point is on the front when it improves on the lowest y so far.
+    std::vector<std::size_t> front;
+    double lowestY = std::numeric_limits<double>::infinity();
+    for (std::size_t i : order) {
+        if (points[i].y < lowestY) {
+            front.push_back(i);
+            lowestY = points[i].y;
+        }
+    }
+    return front;
+}
+
+PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
+    PlotLayout layout;
+    const double rowHeight = lineHeight();
+
+    double minX = std::numeric_limits<double>::infinity(), maxX = -minX, minY = minX, maxY = -minX;
+    double minPositiveY = minX;
+    std::vector<std::string> skipped, floored;
+    for (const PlotPoint& point : plot.points) {
+        if (!layout.isDrawable(point)) {
+            skipped.push_back(point.label);
+            continue;
+        }
+        minX = std::min(minX, point.x), maxX = std::max(maxX, point.x);
+        minY = std::min(minY, point.y), maxY = std::max(maxY, point.y);
+        if (point.y > 0.0) minPositiveY = std::min(minPositiveY, point.y);
+        if (point.y <= 0.0) floored.push_back(displayLabel(point));
+    }
+    const bool hasData = minX <= maxX;
+    if (!hasData) {
+        minX = minY = 0.0;
+        maxX = maxY = 1.0;
+        layout.notes.push_back("no points to plot");
+    }
+    if (!skipped.empty())
+        layout.notes.push_back(noteWithNames("not drawn (NaN or infinite values)", skipped, width));
+    bool logY = plot.logY && hasData;
+    if (logY && !(minPositiveY <= maxY)) {
+        logY = false;
+        layout.notes.push_back("no y above 0, which a log scale needs: linear scale used");
+    }
+
+    // Vertical extent first: it decides how many y ticks fit, and their labels decide the left margin.
+    // Below the frame, top to bottom: tick marks, tick labels, the x-axis label, the notes.
+    const std::size_t noteCount = layout.notes.size() + (logY && !floored.empty() ? 1 : 0);
+    layout.top = plot.title.empty() ? kMargin + 8.0 : kMargin + measureText("0", kTitleScale).height + 22.0;
+    const double belowFrame = kTickLength + kTickLabelGap + rowHeight + kLabelGap +
+                              (plot.xLabel.empty() ? 0.0 : rowHeight + kLabelGap) +
+                              static_cast<double>(noteCount) * (rowHeight + kNoteSpacing);
+    layout.bottom = std::max(layout.top + 1.0, height - kMargin - belowFrame);
+    layout.xLabelTop = layout.bottom + kTickLength + kTickLabelGap + rowHeight + kLabelGap;
+    layout.notesTop = layout.xLabelTop + (plot.xLabel.empty() ? 0.0 : rowHeight + kLabelGap);
+    const int yTicks = std::clamp(static_cast<int>((layout.bottom - layout.top) / 70.0), 2, 8);
+
+    if (logY) {
+        if (!floored.empty()) {
+            layout.yFloor = minPositiveY / 10.0;
+            layout.notes.push_back(noteWithNames(
+                cat("y <= 0 drawn at ", formatValue(layout.yFloor), " on the log scale"), floored, width));
+        }
+        layout.yAxis = makeLogAxis(layout.yFloor > 0.0 ? layout.yFloor : minPositiveY, maxY);
+    } else {
+        layout.yAxis = makeLinearAxis(minY, maxY, yTicks);
+    }
+
+    double widestTick = 0.0;
+    for (const std::string& label : layout.yAxis.tickLabels)
+        widestTick = std::max(widestTick, measureText(label, kTextScale).width);
+    layout.left = kMargin + (plot.yLabel.empty() ? 0.0 : rowHeight + kLabelGap) + widestTick + kTickLabelGap +
+                  kTickLength;
+    layout.right = std::max(layout.left + 1.0, width - kMargin - 20.0);  // room for half a tick label
+    const int xTicks = std::clamp(static_cast<int>((layout.right - layout.left) / 120.0), 2, 10);
+    layout.xAxis = makeLinearAxis(minX, maxX, xTicks);
+    return layout;
+}
+
+}  // namespace fx

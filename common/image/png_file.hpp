@@ -1,0 +1,23 @@
+#pragma once
+// PNG files for 8-bit pictures: captures, golden images, plots.
+#include <cstddef>
+#include <filesystem>
+#include <vector>
+
+#include "base/result.hpp"
+#include "image/image.hpp"
+
+namespace fx {
+
+// Writes 1 to 4 channels (grey, grey+alpha, RGB, RGBA) as they are. Rows are flipped to the
+// top-down order PNG uses. The file is written atomically: complete, or not there at all.
+Status writePng(const std::filesystem::path& path, const ByteImage& image);
+
+// The PNG file's bytes without touching the disk (what writePng writes).
+Result<std::vector<std::byte>> encodePng(const ByteImage& image);
+
+// Always returns RGBA (4 channels), rows bottom-up like every image here. 16-bit files are
+// reduced to 8 bits.
+Result<ByteImage> readPng(const std::filesystem::path& path);
+
+}  // namespace fx

@@ -1,0 +1,62 @@
+#include "render/frame_report.hpp"
+
+#include <algorithm>
+
+#include "base/log.hpp"
+
+namespace fx {
+
+const PassRecord* FrameReport::findPass(std::string_view name) const {
+    auto it = std::find_if(passes.begin(), passes.end(), [&](const PassRecord& p) { return p.name == name; });
+    return it == passes.end() ? nullptr : &*it;
+}
+
+const TextureRecord* FrameReport::findTexture(std::string_view name) const {
+    auto it = std::find_if(textures.begin(), textures.end(),
+                           [&](const TextureRecord& t) { return t.name == name; });
+    return it == textures.end() ? nullptr : &*it;
+}
+
+std::string_view toString(PassStatus status) {
+    switch (status) {
+        case PassStatus::Runs:
+            return "runs";
+        case PassStatus::OutputUnused:
+            return "output unused";
+        case PassStatus::Disabled:
+            return "disabled";
+        case PassStatus::NotCalledFor:
+            return "not called for";
+        case PassStatus::MissingInput:
+            return "missing input";
+        case PassStatus::FrameSkipped:
+            return "frame skipped";
+        case PassStatus::ExecutorFailed:
+            return "executor failed";
+    }
+    return "?";
+}
+
+std::string describe(const FrameReport& report) {
+    std::string out = cat("frame at ", toString(report.outputSize), "\n");
+    for (const auto& e : report.errors) out += cat("  error: ", e, "\n");
+    for (const auto& p : report.passes) {
+        out += cat("  ", p.executed ? "ran    " : "skipped", " ", p.name);
+        if (p.timeMs) out += cat(" (", *p.timeMs, " ms, ", p.timingMethod, ")");
+        if (!p.reason.empty()) out += cat(": ", p.reason);
+        out += "\n";
+    }
+    for (const auto& t : report.textures) {
+        out +=
+            cat("  texture ", t.name, " ", toString(t.spec), ", ", t.bytes, " bytes, ", toString(t.origin));
+        if (!t.producer.empty()) out += cat(", from '", t.producer, "'");
+        if (t.origin == TextureOrigin::Transient)
+            out += t.allocated ? ", allocated" : cat(", not allocated: ", t.reason);
+        out += "\n";
+    }
+    out += cat("  pool: ", report.pool.liveBytes, " bytes live, ", report.pool.inUseBytes, " in use, ",
+               report.pool.peakBytes, " peak\n");
+    return out;
+}
+
+}  // namespace fx

@@ -1,0 +1,61 @@
+#include "render/state_diff.hpp"
+
+#include "base/log.hpp"
+
+namespace fx {
+namespace {
+
+std::string onOff(bool value) {
+    return value ? "on" : "off";
+}
+
+std::string describe(const Viewport& v) {
+    return cat(v.x, ", ", v.y, ", ", v.width, "x", v.height);
+}
+
+std::string describe(const BlendFunction& f) {
+    if (f.equationRgb == f.equationAlpha && f.srcRgb == f.srcAlpha && f.dstRgb == f.dstAlpha) {
+        return cat(toString(f.equationRgb), "(", toString(f.srcRgb), ", ", toString(f.dstRgb), ")");
+    }
+    return cat("rgb ", toString(f.equationRgb), "(", toString(f.srcRgb), ", ", toString(f.dstRgb),
+               "), alpha ", toString(f.equationAlpha), "(", toString(f.srcAlpha), ", ", toString(f.dstAlpha),
+               ")");
+}
+
+std::string describe(const ColorMask& m) {
+    return cat(m.r ? 'R' : '-', m.g ? 'G' : '-', m.b ? 'B' : '-', m.a ? 'A' : '-');
+}
+
+std::string describe(const ClearColor& c) {
+    return cat("(", c[0], ", ", c[1], ", ", c[2], ", ", c[3], ")");
+}
+
+}  // namespace
+
+std::string StateDifference::text() const {
+    return cat(field, ": ", value, " (default ", defaultValue, ")");
+}
+
+std::vector<StateDifference> diffState(const GlStateSnapshot& actual, const GlStateSnapshot& defaults) {
+    std::vector<StateDifference> out;
+    auto add = [&](const char* field, const auto& a, const auto& d, auto&& show) {
+        if (!(a == d)) out.push_back({field, show(a), show(d)});
+    };
+    auto text = [](auto v) { return std::string(toString(v)); };
+    add("viewport", actual.viewport, defaults.viewport, [](const Viewport& v) { return describe(v); });
+    add("depth test", actual.depthTest, defaults.depthTest, onOff);
+    add("depth write", actual.depthWrite, defaults.depthWrite, onOff);
+    add("depth function", actual.depthFunction, defaults.depthFunction, text);
+    add("blend", actual.blend, defaults.blend, onOff);
+    add("blend function", actual.blendFunction, defaults.blendFunction,
+        [](const BlendFunction& f) { return describe(f); });
+    add("face culling", actual.faceCulling, defaults.faceCulling, onOff);
+    add("cull face", actual.cullFace, defaults.cullFace, text);
+    add("colour mask", actual.colorMask, defaults.colorMask, [](const ColorMask& m) { return describe(m); });
+    add("clear colour", actual.clearColor, defaults.clearColor,
+        [](const ClearColor& c) { return describe(c); });
+    add("clear depth", actual.clearDepth, defaults.clearDepth, [](float v) { return cat(v); });
+    return out;
+}
+
+}  // namespace fx

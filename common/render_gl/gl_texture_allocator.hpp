@@ -1,0 +1,25 @@
+#pragma once
+// The texture pool's allocator on GL: immutable-storage 2D textures, labelled with the resource's
+// name so debuggers and KHR_debug messages say "bloom.down[3]", not "texture 17".
+#include <map>
+
+#include "gl/texture.hpp"
+#include "render/texture_allocator.hpp"
+#include "render/texture_desc.hpp"
+
+namespace fx {
+
+class GlTextureAllocator final : public TextureAllocator {
+public:
+    NativeTexture create(const TextureSpec& spec, std::string_view label) override;
+    void destroy(NativeTexture texture) override;
+    void relabel(NativeTexture texture, std::string_view label) override;
+
+    // The GL facts of a texture this allocator made (size, levels, internal format, label).
+    const gl::TextureInfo* info(NativeTexture texture) const;
+
+private:
+    std::map<NativeTexture, gl::Texture> textures_;
+};
+
+}  // namespace fx

@@ -1,0 +1,129 @@
+#include "scene/json_document.hpp"
+
+#include <limits>
+#include <vector>
+
+#include "base/log.hpp"
+#include "scene/json_field_reader.hpp"
+
+namespace fx {
+namespace {
+
+using Json = nlohmann::json;
+
+// "... - unexpected number literal; expected ']'"
+bool isUnexpectedLiteral(std::string_view message) {
+    auto start = message.find("- unexpected ");
+    if (start == std::string_view::npos) return false;
+    std::string_view what = message.substr(start);
+    what = what.substr(0, what.find(';'));
+    return what.ends_with(" literal");
+}
+
+// Builds the tree from parser events and knows the JSON path of the value being read, which nlohmann's
+// own builder does not: its overflow error has no position at all.
+class TreeBuilder : public nlohmann::json_sax<Json> {
+public:
+    explicit TreeBuilder(std::string_view text) : text_(text) {}
+
+    Json take() { return std::move(root_); }
+
+    bool null() override { return add(nullptr); }
+    bool boolean(bool value) override { return add(value); }
+    bool number_integer(number_integer_t value) override { return add(value); }
+    bool number_unsigned(number_unsigned_t value) override { return add(value); }
+    bool number_float(number_float_t value, const string_t&) override { return add(value); }
+    bool string(string_t& value) override { return add(std::move(value)); }
+    bool binary(binary_t& value) override { return add(Json::binary(std::move(value))); }
+
+    bool start_object(std::size_t) override { return open(Json::object()); }
+    bool key(string_t& key) override {
+        key_ = std::move(key);
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(Json::array()); }
+    bool end_array() override { return close(); }
+
+    bool parse_error(std::size_t position, const std::string& lastToken,
+                     const nlohmann::detail::exception& error) override {
+        std::string_view message = error.what();
+        // "[json.exception.parse_error.101] parse error at line 1, column 2: <reason>": keep the reason.
+        if (auto colon = message.find(": "); colon != std::string_view::npos)
+            message.remove_prefix(colon + 2);
+        if (error.id == 406) {  // number overflow: a literal such as 1e400 has no finite double
+            failField(nextPath(), cat("the number ", lastToken,
+                                      " is not finite (too large for a double: it "
+                                      "overflowed; JSON has no infinity or NaN)"));
+        }
+        // `position` counts the characters read; the last one read is where the lexer stopped. For an
+        // unexpected literal (a string, number, true, false or null that is whole but out of place), point
+        // at its first character instead; nlohmann's token text is reliable for those.
+        std::size_t offset = position > 0 ? position - 1 : 0;
+        if (isUnexpectedLiteral(message) && lastToken.find("<U+") == std::string::npos &&
+            lastToken.size() <= position)
+            offset = position - lastToken.size();
+        throw JsonSyntaxError{textPositionOf(text_, offset), std::string(message)};
+    }
+
+private:
+    struct Open {
+        Json* container;
+        std::string key;  // its member name, when its parent is an object
+    };
+
+    // Where the next value goes: a member of the innermost object, the next element of the innermost
+    // array, or the root. Built only for a message, so deep nesting costs no long strings while parsing.
+    std::string nextPath() const {
+        if (stack_.empty()) return "(top level)";
+        std::string path;
+        for (std::size_t i = 1; i < stack_.size(); ++i) {
+            const Json& parent = *stack_[i - 1].container;
+            path = parent.is_object() ? fieldPath(path, stack_[i].key) : indexPath(path, parent.size() - 1);
+        }
+        const Json& top = *stack_.back().container;
+        return top.is_object() ? fieldPath(path, key_) : indexPath(path, top.size());
+    }
+
+    Json* place(Json value) {
+        if (stack_.empty()) {
+            root_ = std::move(value);
+            return &root_;
+        }
+        Json& container = *stack_.back().container;
+        if (container.is_object()) return &(container[key_] = std::move(value));
+        container.push_back(std::move(value));
+        return &container.back();
+    }
+
+    bool add(Json value) {
+        place(std::move(value));
+        return true;
+    }
+
+    bool open(Json container) {
+        bool inObject = !stack_.empty() && stack_.back().container->is_object();
+        stack_.push_back({place(std::move(container)), inObject ? key_ : std::string()});
+        return true;
+    }
+
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    std::string_view text_;
+    Json root_;
+    std::vector<Open> stack_;
+    std::string key_;
+};
+
+}  // namespace
+
+Json parseJsonDocument(std::string_view text) {
+    TreeBuilder builder(text);
+    Json::sax_parse(text.begin(), text.end(), &builder);
+    return builder.take();
+}
+
+}  // namespace fx

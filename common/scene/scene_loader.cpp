@@ -1,0 +1,117 @@
+#include "scene/scene_loader.hpp"
+
+#include <cstdlib>
+#include <exception>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "base/file_io.hpp"
+#include "base/log.hpp"
+#include "scene/asset_path.hpp"
+#include "scene/json_document.hpp"
+#include "scene/scene_parse.hpp"
+
+namespace fx {
+namespace {
+
+namespace fs = std::filesystem;
+
+Scene parseSections(const nlohmann::json& root, const fs::path& file, const SceneLoadOptions& options) {
+    Scene scene;
+    scene.file = file;
+    JsonFieldReader reader(root, "", scene.warnings);
+    int version = reader.integer("version", kSceneFormatVersion, NumberRange::closed(0, 1.0e9));
+    if (version != kSceneFormatVersion)
+        reader.fail("version", cat("unsupported format version ", version, "; this build reads version ",
+                                   kSceneFormatVersion));
+    scene.name = reader.requiredText("name");
+    if (scene.name.empty()) reader.fail("name", "the scene name is empty");
+    scene.description = reader.text("description", "");
+    scene.background = reader.vec3("background", scene.background, kHdrColorRange);
+    scene.ambient = reader.vec3("ambient", scene.ambient, kHdrColorRange);
+
+    auto cameraReader = reader.object("camera");
+    scene.camera = parseCamera(cameraReader);
+
+    AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
+    reader.forEachObject(
+        "lights", [&](JsonFieldReader& light, std::size_t) { scene.lights.push_back(parseLight(light)); });
+    std::set<std::string> names;
+    reader.forEachObject("objects", [&](JsonFieldReader& object, std::size_t) {
+        scene.objects.push_back(parseObject(object, assets));
+        const std::string& name = scene.objects.back().name;
+        // Lessons find objects by name; a repeated name would make that ambiguous.
+        if (!name.empty() && !names.insert(name).second)
+            object.warn("name", cat("another object is already called \"", name, "\""));
+    });
+    reader.forEachObject("emitters", [&](JsonFieldReader& emitter, std::size_t) {
+        scene.emitters.push_back(parseEmitter(emitter, assets));
+    });
+    reader.forEachObject("clouds", [&](JsonFieldReader& cloud, std::size_t) {
+        scene.clouds.push_back(parseCloudLayer(cloud, assets));
+    });
+    if (reader.has("postEffects")) {
+        auto postReader = reader.object("postEffects");
+        scene.postEffects = parsePostEffects(postReader, scene.camera);
+    }
+    reader.reportUnknown();
+    return scene;
+}
+
+}  // namespace
+
+fs::path defaultAssetRoot() {
+    const char* root = std::getenv("FXLAB_ROOT");
+    return fs::path(root && *root ? root : FXLAB_SOURCE_ROOT) / "res";
+}
+
+AssetRef AssetPathReader::optional(JsonFieldReader& object, std::string_view key) const {
+    if (!object.has(key)) return {};
+    return required(object, key);
+}
+
+AssetRef AssetPathReader::required(JsonFieldReader& object, std::string_view key) const {
+    AssetRef asset;
+    asset.path = object.requiredText(key);
+    auto resolved = resolveAssetPath(asset.path, sceneFolder_, assetRoot_);
+    if (!resolved) object.fail(key, resolved.error());
+    asset.resolved = std::move(*resolved);
+    if (checkExists_) {
+        std::error_code ec;
+        if (!fs::is_regular_file(asset.resolved, ec))
+            object.fail(
+                key, cat("file not found: ", asset.resolved.string(), " (written as \"", asset.path, "\")"));
+    }
+    return asset;
+}
+
+Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
+                         const SceneLoadOptions& options) {
+    std::error_code ec;
+    fs::path file = fs::absolute(nominalFile, ec).lexically_normal();
+    if (ec) file = nominalFile;
+    const std::string fileName = file.string();
+    try {
+        nlohmann::json root = parseJsonDocument(json);
+        Scene scene = parseSections(root, file, options);
+        for (const auto& warning : scene.warnings) log::warning(fileName, ": ", warning);
+        return scene;
+    } catch (const JsonSyntaxError& error) {
+        return Error{
+            cat(fileName, ":", error.at.line, ":", error.at.column, ": JSON syntax error: ", error.reason)};
+    } catch (const SceneFieldError& error) {
+        return Error{cat(fileName, ": ", error.path, ": ", error.reason)};
+    } catch (const std::exception& error) {
+        // Nothing above should get here; if it does, the caller still gets a message instead of a crash.
+        return Error{cat(fileName, ": cannot read the scene: ", error.what())};
+    }
+}
+
+Result<Scene> loadScene(const fs::path& file, const SceneLoadOptions& options) {
+    auto text = readTextFile(file);
+    if (!text) return Error{text.error()};
+    return parseScene(*text, file, options);
+}
+
+}  // namespace fx

@@ -1,0 +1,81 @@
+// Reads one entry of "lights". Which fields apply depends on the type; the others are warned about.
+#include <algorithm>
+#include <bit>
+
+#include <glm/geometric.hpp>
+
+#include "base/log.hpp"
+#include "scene/scene_parse.hpp"
+
+namespace fx {
+namespace {
+
+glm::vec3 readDirection(JsonFieldReader& reader) {
+    glm::vec3 direction = reader.requiredVec3("direction", NumberRange::closed(-1.0e3, 1.0e3));
+    if (!(glm::length(direction) > 1.0e-6f))
+        reader.fail("direction", "has zero length, so it points nowhere");
+    return direction;
+}
+
+ShadowSettings parseShadow(JsonFieldReader& reader) {
+    ShadowSettings shadow;
+    // Writing a shadow block means the light should cast, unless it says otherwise.
+    shadow.casts = reader.boolean("casts", true);
+    shadow.mapSize = reader.integer("mapSize", shadow.mapSize, NumberRange::closed(128, 8192));
+    if (!std::has_single_bit(static_cast<unsigned>(shadow.mapSize)))
+        reader.fail("mapSize", cat(shadow.mapSize, " is not a power of two (128, 256, ... 8192)"));
+    shadow.bias = reader.number("bias", shadow.bias, NumberRange::closed(0.0, 0.1));
+    shadow.normalOffset = reader.number("normalOffset", shadow.normalOffset, NumberRange::closed(0.0, 10.0));
+    shadow.filterTaps = reader.integer("filterTaps", shadow.filterTaps, NumberRange::closed(1, 64));
+    shadow.extent = reader.number("extent", shadow.extent, kLengthRange);
+    reader.reportUnknown();
+    return shadow;
+}
+
+}  // namespace
+
+Light parseLight(JsonFieldReader& reader) {
+    Light light;
+    light.type = reader.requiredEnumeration<LightType>("type");
+    light.name = reader.text("name", "");
+    light.color = reader.vec3("color", light.color, kHdrColorRange);
+    light.intensity = reader.number("intensity", light.intensity, NumberRange::closed(0.0, 1.0e5));
+    const std::string typeName(enumName(light.type));
+    const std::string notForType = cat("not used by a ", typeName, " light");
+
+    if (light.type == LightType::directional) {
+        light.direction = readDirection(reader);
+        if (reader.has("shadow")) {
+            auto shadowReader = reader.object("shadow");
+            light.shadow = parseShadow(shadowReader);
+        }
+        reader.unused("position", cat(notForType, " (it is infinitely far away)"));
+        reader.unused("radius", notForType);
+    } else {
+        light.position = reader.requiredVec3("position", kCoordinateRange);
+        light.radius = reader.number("radius", light.radius, kLengthRange);
+        reader.unused("shadow", "only directional lights cast shadows in fxlab");
+    }
+
+    if (light.type == LightType::spot) {
+        light.direction = readDirection(reader);
+        light.outerConeDegrees =
+            reader.number("outerCone", light.outerConeDegrees, NumberRange{0.0, 89.0, true, false});
+        light.innerConeDegrees =
+            reader.number("innerCone", std::min(light.innerConeDegrees, light.outerConeDegrees),
+                          NumberRange::closed(0.0, 89.0));
+        if (light.innerConeDegrees > light.outerConeDegrees)
+            reader.fail("innerCone",
+                        cat(light.innerConeDegrees, " is wider than outerCone (", light.outerConeDegrees,
+                            "); the light would brighten toward the edge"));
+    } else {
+        reader.unused("innerCone", notForType);
+        reader.unused("outerCone", notForType);
+        if (light.type == LightType::point)
+            reader.unused("direction", cat(notForType, " (it shines every way)"));
+    }
+    reader.reportUnknown();
+    return light;
+}
+
+}  // namespace fx

@@ -1,0 +1,274 @@
+#include "program_objects_lesson.hpp"
+
+#include <chrono>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <imgui.h>
+
+#include "base/log.hpp"
+#include "effects/camera_matrices.hpp"
+#include "raw_programs.hpp"
+
+namespace lesson01 {
+
+using namespace fx;
+
+namespace {
+
+const char* kDir = "lessons/01_program_objects/";
+std::string shader(const char* name) { return std::string(kDir) + name; }
+
+// The chapter's operation counts per vertex (section 2.2).
+struct ProductCost {
+    int mul, add;
+};
+constexpr ProductCost kGrouped{80, 60};        // (T*J)*p: mat4*mat4, then mat4*vec4
+constexpr ProductCost kParenthesised{32, 24};  // T*(J*p): two mat4*vec4
+
+}  // namespace
+
+LessonInfo ProgramObjectsLesson::info() const {
+    return {1, "program-objects", "Program objects", "scenes/01_program_objects.json"};
+}
+
+std::vector<LessonStep> ProgramObjectsLesson::steps() const {
+    return {
+        {"Copy-pasted programs",
+         "Three programs (lit, unlit, normals) built by the same copy-pasted compile and link lines, with no "
+         "error checks. It works until a shader has a typo: then the object turns black and nothing says why."},
+        {"A program object with error checks",
+         "One owner builds every program: it checks compile and link status and reports the log with the real "
+         "file and line, also inside #include files. Pick a broken shader under Parameters (broken_shader) and "
+         "read its log here instead of staring at a black screen; the last good program keeps drawing."},
+        {"Look uniform locations up once",
+         "A grid of objects, each drawn with its own uniforms. glGetUniformLocation compares strings; asking it "
+         "for every draw costs CPU time every frame. Toggle lookup_every_draw and compare the time below with "
+         "the cached locations the program object found when it was built."},
+        {"Parentheses in the skinning product",
+         "T*J*p is evaluated left to right: (T*J)*p costs a mat4*mat4 (64 mul, 48 add) and a mat4*vec4 "
+         "(16 mul, 12 add) per vertex. T*(J*p) costs two mat4*vec4: 32 mul and 24 add, for the same result. Both "
+         "run on a sphere with many vertices; their pass times are in the pass table."},
+        {"Reload while running",
+         "Edit shaders/lessons/01_program_objects/lit.frag while the lesson runs: it reloads when saved (or on "
+         "F5). Break it and the last good program keeps running while its error shows here."},
+    };
+}
+
+void ProgramObjectsLesson::declareParams(ParamSet& params) {
+    params.addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
+                     "Step 2: build a deliberately broken program and show its log");
+    params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw");
+    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid");
+    Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
+                                    "Step 4: which product the presented sphere uses");
+    order.knob = Knob{{0, 1}, 1, "order"};
+    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512, "Step 4: sphere segments (vertices grow with the square)");
+    detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
+}
+
+Status ProgramObjectsLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    meshes_ = SceneMeshes(scene);
+    gridBox_ = GpuMesh(makeBox({0.3f, 0.3f, 0.3f}), "grid box");
+    emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
+
+    rawLit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("lit.frag"));
+    rawUnlit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("unlit.frag"));
+    rawNormals_ = buildProgramWithoutChecks(shader("lit.vert"), shader("normals.frag"));
+
+    lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
+    unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
+    normals_ = gl::ReloadableProgram({shader("lit.vert"), shader("normals.frag"), {}, {}, "normals"});
+    skinGrouped_ = gl::ReloadableProgram({shader("skinning.vert"), shader("lit.frag"), {}, {}, "skinning (T*J)*p"});
+    skinParenthesised_ = gl::ReloadableProgram(
+        {shader("skinning.vert"), shader("lit.frag"), {}, "#define PARENTHESISED 1", "skinning T*(J*p)"});
+    copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "copy"});
+    for (auto* p : programs()) {
+        if (p != &brokenAttempt_ && !p->usable()) return Error{p->error()};
+    }
+    return Status::success();
+}
+
+void ProgramObjectsLesson::shutdown() { *this = ProgramObjectsLesson(); }
+
+std::vector<gl::ReloadableProgram*> ProgramObjectsLesson::programs() {
+    return {&lit_, &unlit_, &normals_, &skinGrouped_, &skinParenthesised_, &copy_, &brokenAttempt_};
+}
+
+void ProgramObjectsLesson::updateBrokenAttempt() {
+    if (brokenBuilt_ == broken_) return;
+    brokenBuilt_ = broken_;
+    const char* files[] = {nullptr, "broken_syntax.frag", "broken_undeclared.frag", "broken_link.frag"};
+    if (broken_ == NotBroken) {
+        brokenAttempt_ = {};
+        return;
+    }
+    // The checked build fails and says why; the scene keeps drawing with the good programs.
+    brokenAttempt_ = gl::ReloadableProgram({shader("lit.vert"), shader(files[broken_]), {}, {}, files[broken_]});
+}
+
+void ProgramObjectsLesson::drawScene(GLuint lit, GLuint unlit, GLuint normals, const FrameInfo& frame) const {
+    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+    // Object i uses program i mod 3 in step 1, so all three copy-pasted programs are on screen.
+    meshes_.draw(lit, *scene_, frame.seconds);
+    (void)unlit;
+    (void)normals;
+}
+
+void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
+    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+    SceneMeshes::setFrameUniforms(program, *scene_, camera);
+    glUseProgram(program);
+    int n = gridSize_;
+    lookupsLastFrame_ = 0;
+    double lookupSeconds = 0;
+    for (int z = 0; z < n; ++z) {
+        for (int x = 0; x < n; ++x) {
+            GLint modelLocation = uniform_location::model;
+            GLint colorLocation = uniform_location::baseColor;
+            if (lookupEveryDraw_) {
+                // What the chapter warns against: a string comparison per uniform per draw.
+                auto start = std::chrono::steady_clock::now();
+                modelLocation = glGetUniformLocation(program, "modelMatrix");
+                colorLocation = glGetUniformLocation(program, "baseColor");
+                lookupSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                lookupsLastFrame_ += 2;
+            }
+            float fx_ = (float(x) + 0.5f) / float(n) - 0.5f, fz = (float(z) + 0.5f) / float(n) - 0.5f;
+            glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(fx_ * 6.0f, 0.15f, fz * 6.0f));
+            glm::vec3 color(0.3f + 0.7f * (fx_ + 0.5f), 0.4f, 0.3f + 0.7f * (fz + 0.5f));
+            glProgramUniformMatrix4fv(program, modelLocation, 1, GL_FALSE, glm::value_ptr(model));
+            glProgramUniform3fv(program, colorLocation, 1, glm::value_ptr(color));
+            glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
+            gridBox_.draw();
+        }
+    }
+    lookupMsLastFrame_ = lookupSeconds * 1000.0;
+}
+
+void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const FrameInfo& frame) {
+    if (denseSphereDetail_ != meshDetail_) {
+        denseSphere_ = GpuMesh(makeSphere(1.2f, meshDetail_, meshDetail_ / 2), "dense sphere");
+        denseSphereDetail_ = meshDetail_;
+    }
+    TextureDesc colorDesc{TextureSize::output(), TextureFormat::RGBA8, 1};
+    TextureDesc depthDesc{TextureSize::output(), TextureFormat::Depth32F, 1};
+    auto drawSphere = [this, frame](GLuint program) {
+        CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+        SceneMeshes::setFrameUniforms(program, *scene_, camera);
+        // Four joints swaying with time (wrapped, so the angle stays small after hours).
+        float phase = float(std::fmod(frame.seconds, 4.0) / 4.0 * 6.2831853);
+        glm::mat4 joints[4];
+        for (int j = 0; j < 4; ++j) {
+            joints[j] = glm::rotate(glm::mat4(1.0f), 0.3f * std::sin(phase + float(j)), glm::vec3(0, 1, 0.3f * float(j)));
+        }
+        glProgramUniformMatrix4fv(program, 20, 4, GL_FALSE, glm::value_ptr(joints[0]));
+        glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 1.3f, 0));
+        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform3f(program, uniform_location::baseColor, 0.8f, 0.55f, 0.3f);
+        glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
+        glUseProgram(program);
+        denseSphere_.draw();
+    };
+    PassState sceneState{.depthTest = true, .depthWrite = true, .depthFunction = DepthFunction::Less, .blend = false,
+                         .faceCulling = true, .cullFace = CullFace::Back,
+                         .clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f}, .clearDepth = 1.0f};
+    TextureHandle grouped[2], parenthesised[2];
+    auto& a = graph.addPass("skinning (T*J)*p", [this, drawSphere](PassContext&) { drawSphere(skinGrouped_.name()); });
+    grouped[0] = a.create("skinning.grouped.color", colorDesc, TextureUsage::ColorAttachment);
+    grouped[1] = a.create("skinning.grouped.depth", depthDesc, TextureUsage::DepthAttachment);
+    a.setState(sceneState);
+    auto& b = graph.addPass("skinning T*(J*p)", [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); });
+    parenthesised[0] = b.create("skinning.parenthesised.color", colorDesc, TextureUsage::ColorAttachment);
+    parenthesised[1] = b.create("skinning.parenthesised.depth", depthDesc, TextureUsage::DepthAttachment);
+    b.setState(sceneState);
+    // Both products run every frame so their times stand side by side; the knob picks which is shown.
+    graph.inspect("skinning.grouped.color");
+    graph.inspect("skinning.parenthesised.color");
+    TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
+    graph.addPass("present", [this, shown](PassContext& ctx) {
+             glBindTextureUnit(0, ctx.native(shown));
+             glUseProgram(copy_.name());
+             glBindVertexArray(emptyVao_.name());
+             glDrawArrays(GL_TRIANGLES, 0, 3);
+         })
+        .read(shown)
+        .writeColor(graph.output())
+        .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
+    if (frame.previousFrame) {
+        if (auto* p = frame.previousFrame->findPass("skinning (T*J)*p"); p && p->timeMs) grouped_ms_ = *p->timeMs;
+        if (auto* p = frame.previousFrame->findPass("skinning T*(J*p)"); p && p->timeMs) parenthesised_ms_ = *p->timeMs;
+    }
+}
+
+void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    updateBrokenAttempt();
+    if (frame.step == Parentheses) {
+        buildSkinningComparison(graph, frame);
+        return;
+    }
+    PassState sceneState{.depthTest = true, .depthWrite = true, .depthFunction = DepthFunction::Less, .blend = false,
+                         .faceCulling = true, .cullFace = CullFace::Back,
+                         .clearColor = ClearColor{0.0f, 0.0f, 0.0f, 1.0f}, .clearDepth = 1.0f};
+    glm::vec3 sky = scene_->background;
+    sceneState.clearColor = ClearColor{sky.r, sky.g, sky.b, 1.0f};
+    graph.addPass("scene", [this, frame](PassContext&) {
+             switch (frame.step) {
+                 case CopyPasted: {
+                     CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+                     GLuint programs[3] = {rawLit_.name(), rawUnlit_.name(), rawNormals_.name()};
+                     for (GLuint p : programs) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+                     meshes_.draw(rawLit_.name(), *scene_, frame.seconds);
+                     break;
+                 }
+                 case CachedLocations: drawGrid(lit_.name(), frame); break;
+                 default: drawScene(lit_.name(), unlit_.name(), normals_.name(), frame); break;
+             }
+         })
+        .writeColor(graph.output())
+        .setState(sceneState);
+}
+
+void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
+    switch (frame.step) {
+        case CopyPasted: ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)", rawLit_.name(), rawUnlit_.name(), rawNormals_.name()); break;
+        case CheckedPrograms:
+            if (broken_ == NotBroken) {
+                ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
+            } else {
+                ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
+            }
+            break;
+        case CachedLocations:
+            ImGui::Text("draws: %d, uniform look-ups this frame: %d", gridSize_ * gridSize_, lookupsLastFrame_);
+            ImGui::Text("time spent in glGetUniformLocation: %.3f ms", lookupMsLastFrame_);
+            break;
+        case Parentheses: {
+            auto vertices = double(denseSphere_.vertexCount());
+            ImGui::Text("vertices: %.0f", vertices);
+            ImGui::Text("(T*J)*p: %d mul + %d add per vertex = %.1f M ops, %.3f ms", kGrouped.mul, kGrouped.add,
+                        vertices * (kGrouped.mul + kGrouped.add) / 1e6, grouped_ms_);
+            ImGui::Text("T*(J*p): %d mul + %d add per vertex = %.1f M ops, %.3f ms", kParenthesised.mul,
+                        kParenthesised.add, vertices * (kParenthesised.mul + kParenthesised.add) / 1e6, parenthesised_ms_);
+            break;
+        }
+        case LiveReload:
+            ImGui::Text("lit program: build %d", lit_.generation());
+            for (auto& f : lit_.program().sourceFiles()) ImGui::BulletText("%s", f.filename().string().c_str());
+            if (!lit_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", lit_.error().c_str());
+            break;
+    }
+}
+
+void ProgramObjectsLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
+    facts.emplace_back("uniformLookupsLastFrame", std::to_string(lookupsLastFrame_));
+    facts.emplace_back("uniformLookupMs", std::to_string(lookupMsLastFrame_));
+    facts.emplace_back("brokenShaderLog", brokenAttempt_.error());
+    facts.emplace_back("denseSphereVertices", std::to_string(denseSphere_.vertexCount()));
+    facts.emplace_back("opsGroupedPerVertex", std::to_string(kGrouped.mul + kGrouped.add));
+    facts.emplace_back("opsParenthesisedPerVertex", std::to_string(kParenthesised.mul + kParenthesised.add));
+}
+
+}  // namespace lesson01

@@ -1,0 +1,62 @@
+#pragma once
+// Lesson 01: program objects (seed 000, sections 1.x and the learning goals of 0.3).
+#include <memory>
+
+#include "app/lesson.hpp"
+#include "effects/gpu_mesh.hpp"
+#include "effects/scene_meshes.hpp"
+#include "gl/program.hpp"
+
+namespace lesson01 {
+
+class ProgramObjectsLesson final : public fx::Lesson {
+public:
+    fx::LessonInfo info() const override;
+    std::vector<fx::LessonStep> steps() const override;
+    void declareParams(fx::ParamSet& params) override;
+    fx::Status init(const fx::Scene& scene) override;
+    void shutdown() override;
+    void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
+    std::vector<fx::gl::ReloadableProgram*> programs() override;
+    void drawPanel(const fx::FrameInfo& frame) override;
+    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+
+    enum Step { CopyPasted, CheckedPrograms, CachedLocations, Parentheses, LiveReload };
+    enum Broken { NotBroken, SyntaxError, UndeclaredName, LinkError };
+
+private:
+    // Parameters.
+    int broken_ = NotBroken;
+    bool lookupEveryDraw_ = false;
+    int gridSize_ = 20;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int meshDetail_ = 128;  // sphere segments for step 4
+
+    const fx::Scene* scene_ = nullptr;
+    fx::SceneMeshes meshes_;
+    fx::GpuMesh gridBox_;
+    fx::GpuMesh denseSphere_;
+    int denseSphereDetail_ = 0;
+
+    // Step 1: raw names, built without checks.
+    fx::gl::ProgramName rawLit_, rawUnlit_, rawNormals_;
+    // Steps 2 to 5: checked, reloadable program objects.
+    fx::gl::ReloadableProgram lit_, unlit_, normals_;
+    fx::gl::ReloadableProgram brokenAttempt_;
+    int brokenBuilt_ = -1;
+    fx::gl::ReloadableProgram skinGrouped_, skinParenthesised_;
+    fx::gl::ReloadableProgram copy_;
+    fx::gl::VertexArrayName emptyVao_;
+
+    // Step 3's measurements (CPU side, per frame).
+    int lookupsLastFrame_ = 0;
+    double lookupMsLastFrame_ = 0;
+    double grouped_ms_ = 0, parenthesised_ms_ = 0;
+
+    void drawScene(GLuint lit, GLuint unlit, GLuint normals, const fx::FrameInfo& frame) const;
+    void drawGrid(GLuint program, const fx::FrameInfo& frame);
+    void buildSkinningComparison(fx::FrameGraph& graph, const fx::FrameInfo& frame);
+    void updateBrokenAttempt();
+};
+
+}  // namespace lesson01

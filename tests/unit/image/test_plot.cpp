@@ -1,0 +1,162 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "image/image_stats.hpp"
+#include "image/plot.hpp"
+#include "image/png_file.hpp"
+
+namespace fx {
+namespace {
+
+// A bloom quality sweep as the benchmark would report it: time in ms, RMSE against the reference.
+ScatterPlot bloomSweep() {
+    ScatterPlot plot;
+    plot.title = "bloom: error against time";
+    plot.xLabel = "GPU time per frame (ms)";
+    plot.yLabel = "RMSE against reference";
+    plot.logY = true;
+    plot.points = {
+        {"3 levels", 0.42, 0.031},
+        {"4 levels", 0.55, 0.012},
+        {"5 levels", 0.61, 0.0046, false, true},
+        {"5 levels, 13 tap", 0.83, 0.0052},
+        {"6 levels", 0.74, 0.0021},
+        {"6 levels, 13 tap", 1.10, 0.0024},
+        {"8 levels, 25 tap", 1.62, 0.0, true},
+    };
+    return plot;
+}
+
+Rgba pixelAt(const ByteImage& image, double canvasX, double canvasY) {
+    // Layout coordinates grow downwards; the image is stored bottom-up.
+    const int x = static_cast<int>(std::floor(canvasX)),
+              y = image.height - 1 - static_cast<int>(std::floor(canvasY));
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return {};
+    const std::uint8_t* t = &image.texel(x, y, 0);
+    return {t[0], t[1], t[2], t[3]};
+}
+
+bool colourNear(const ByteImage& image, double x, double y, Rgba colour, int radius) {
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx)
+            if (pixelAt(image, x + dx, y + dy) == colour) return true;
+    return false;
+}
+
+int countColour(const ByteImage& image, Rgba colour) {
+    int count = 0;
+    for (std::size_t i = 0; i < image.texels.size(); i += 4)
+        if (Rgba{image.texels[i], image.texels[i + 1], image.texels[i + 2], image.texels[i + 3]} == colour)
+            ++count;
+    return count;
+}
+
+TEST(Plot, ParetoFrontKeepsOnlyUndominatedPointsInXOrder) {
+    const ScatterPlot plot = bloomSweep();
+    const std::vector<std::size_t> front = paretoFront(plot.points);
+    // 3 levels (fastest), 4 levels, 5 levels, 6 levels, reference (zero error). The 13- and 25-tap
+    // variants below the reference are slower and worse than "6 levels".
+    EXPECT_EQ(front, (std::vector<std::size_t>{0, 1, 2, 4, 6}));
+}
+
+TEST(Plot, ParetoFrontSkipsNanAndDuplicates) {
+    std::vector<PlotPoint> points = {{"a", 1, 1}, {"b", 1, 1}, {"nan", std::nan(""), 0.0}, {"c", 2, 0.5}};
+    EXPECT_EQ(paretoFront(points), (std::vector<std::size_t>{0, 3}));
+    EXPECT_TRUE(paretoFront({}).empty());
+}
+
+TEST(Plot, SampleSweepDrawsFrontMarkersAndText) {
+    const ScatterPlot plot = bloomSweep();
+    const ByteImage image = renderScatterPlot(plot, 960, 600);
+    ASSERT_EQ(image.width, 960);
+    ASSERT_EQ(image.height, 600);
+    ASSERT_EQ(image.channels, 4);
+    EXPECT_FALSE(isFlat(image, 10));
+    // Written for a person to look at; not needed by the test itself.
+    EXPECT_TRUE(writePng("/tmp/fx_plot_sample.png", image).ok());
+
+    const PlotLayout layout = layoutScatterPlot(plot, 960, 600);
+    const std::vector<std::size_t> front = paretoFront(plot.points);
+    for (std::size_t k = 0; k + 1 < front.size(); ++k) {
+        const PlotPoint& a = plot.points[front[k]];
+        const PlotPoint& b = plot.points[front[k + 1]];
+        const double mx = (layout.pixelX(a.x) + layout.pixelX(b.x)) / 2.0;
+        const double my = (layout.pixelY(a.y) + layout.pixelY(b.y)) / 2.0;
+        EXPECT_TRUE(colourNear(image, mx, my, plot_colours::kParetoFront, 1)) << "segment " << k;
+    }
+    // Each ordinary point's centre is blue, the current one red.
+    EXPECT_EQ(pixelAt(image, layout.pixelX(0.83), layout.pixelY(0.0052)), plot_colours::kPoint);
+    EXPECT_EQ(pixelAt(image, layout.pixelX(0.61), layout.pixelY(0.0046)), plot_colours::kCurrent);
+    // The reference (error 0) sits on the log floor, inside the frame, with the floor noted.
+    const double referenceY = layout.pixelY(0.0);
+    EXPECT_GT(referenceY, layout.top);
+    EXPECT_LT(referenceY, layout.bottom);
+    EXPECT_EQ(pixelAt(image, layout.pixelX(1.62), referenceY), plot_colours::kInk);  // the centre dot
+    ASSERT_EQ(layout.notes.size(), 1u);
+    EXPECT_NE(layout.notes[0].find("y <= 0"), std::string::npos);
+    // There is a good deal of ink: text, ticks, the frame.
+    EXPECT_GT(countColour(image, plot_colours::kInk), 3000);
+}
+
+TEST(Plot, LinearAxesPlaceValuesProportionally) {
+    ScatterPlot plot;
+    plot.points = {{"a", 0.0, 0.0}, {"b", 10.0, 5.0}};
+    const PlotLayout layout = layoutScatterPlot(plot, 640, 480);
+    EXPECT_LT(layout.pixelX(0.0), layout.pixelX(10.0));
+    EXPECT_GT(layout.pixelY(0.0), layout.pixelY(5.0));  // y grows upwards on the page
+    EXPECT_NEAR(layout.pixelX(5.0), (layout.pixelX(0.0) + layout.pixelX(10.0)) / 2.0, 1e-9);
+    EXPECT_GT(layout.pixelX(0.0), layout.left);
+    EXPECT_LT(layout.pixelX(10.0), layout.right);
+}
+
+TEST(Plot, DegenerateInputsStillGiveAPictureAndANote) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    ScatterPlot empty;
+    empty.title = "nothing yet";
+    const ByteImage emptyImage = renderScatterPlot(empty);
+    EXPECT_FALSE(isFlat(emptyImage, 0));
+    EXPECT_FALSE(layoutScatterPlot(empty, 960, 600).notes.empty());
+
+    ScatterPlot one;
+    one.points = {{"only", 2.0, 0.5}};
+    const PlotLayout oneLayout = layoutScatterPlot(one, 960, 600);
+    EXPECT_GT(oneLayout.pixelX(2.0), oneLayout.left);
+    EXPECT_LT(oneLayout.pixelX(2.0), oneLayout.right);
+    EXPECT_FALSE(isFlat(renderScatterPlot(one), 0));
+
+    ScatterPlot sameX;
+    sameX.logY = true;
+    sameX.points = {{"a", 1.0, 0.1}, {"b", 1.0, 0.01}, {"c", 1.0, 0.001}};
+    EXPECT_FALSE(isFlat(renderScatterPlot(sameX), 0));
+
+    ScatterPlot allZero;
+    allZero.logY = true;
+    allZero.points = {{"a", 1.0, 0.0}, {"b", 2.0, 0.0}};
+    const PlotLayout zeroLayout = layoutScatterPlot(allZero, 960, 600);
+    EXPECT_FALSE(zeroLayout.yAxis.logarithmic);
+    EXPECT_FALSE(zeroLayout.notes.empty());
+
+    ScatterPlot withNan;
+    withNan.points = {
+        {"good", 1.0, 1.0}, {"broken", nan, 1.0}, {"inf", 2.0, std::numeric_limits<double>::infinity()}};
+    const PlotLayout nanLayout = layoutScatterPlot(withNan, 960, 600);
+    ASSERT_EQ(nanLayout.notes.size(), 1u);
+    EXPECT_NE(nanLayout.notes[0].find("broken"), std::string::npos);
+    EXPECT_NE(nanLayout.notes[0].find("inf"), std::string::npos);
+    EXPECT_FALSE(isFlat(renderScatterPlot(withNan), 0));
+}
+
+TEST(Plot, TinyAndZeroSizesDoNotCrash) {
+    const ScatterPlot plot = bloomSweep();
+    for (auto [w, h] : {std::pair{0, 0}, {1, 1}, {40, 30}, {200, 120}}) {
+        const ByteImage image = renderScatterPlot(plot, w, h);
+        EXPECT_EQ(image.width, w);
+        EXPECT_EQ(image.height, h);
+        EXPECT_EQ(image.texels.size(), static_cast<std::size_t>(w) * h * 4);
+    }
+}
+
+}  // namespace
+}  // namespace fx

@@ -1,0 +1,60 @@
+#include <gtest/gtest.h>
+
+#include "render/texture_format.hpp"
+
+namespace fx {
+namespace {
+
+TEST(TextureFormat, NamesFollowTheEnumOrder) {
+    EXPECT_EQ(toString(TextureFormat::RGBA8), "RGBA8");
+    EXPECT_EQ(toString(TextureFormat::SRGB8_ALPHA8), "SRGB8_ALPHA8");
+    EXPECT_EQ(toString(TextureFormat::RGBA16F), "RGBA16F");
+    EXPECT_EQ(toString(TextureFormat::R11F_G11F_B10F), "R11F_G11F_B10F");
+    EXPECT_EQ(toString(TextureFormat::RGB32F), "RGB32F");
+    EXPECT_EQ(toString(TextureFormat::Depth24Stencil8), "Depth24Stencil8");
+}
+
+TEST(TextureFormat, BytesAndChannels) {
+    EXPECT_EQ(bytesPerTexel(TextureFormat::RGBA8), 4);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::RGBA16F), 8);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::RGBA32F), 16);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::R11F_G11F_B10F), 4);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::RG16F), 4);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::R16F), 2);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::R8), 1);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::RGB32F), 12);
+    EXPECT_EQ(bytesPerTexel(TextureFormat::Depth32F), 4);
+    EXPECT_EQ(channelCount(TextureFormat::R11F_G11F_B10F), 3);
+    EXPECT_EQ(channelCount(TextureFormat::RG16F), 2);
+    EXPECT_EQ(channelCount(TextureFormat::Depth24Stencil8), 2);
+}
+
+TEST(TextureFormat, RenderabilityDecidesWhatAPassMayWrite) {
+    EXPECT_TRUE(isColorRenderable(TextureFormat::RGBA16F));
+    EXPECT_TRUE(isColorRenderable(TextureFormat::SRGB8_ALPHA8));
+    EXPECT_FALSE(isColorRenderable(TextureFormat::RGB32F));
+    EXPECT_FALSE(isColorRenderable(TextureFormat::Depth32F));
+    EXPECT_TRUE(isDepth(TextureFormat::Depth24));
+    EXPECT_TRUE(isDepth(TextureFormat::Depth24Stencil8));
+    EXPECT_TRUE(hasStencil(TextureFormat::Depth24Stencil8));
+    EXPECT_FALSE(isDepth(TextureFormat::R32F));
+    EXPECT_TRUE(isFloat(TextureFormat::Depth32F));
+    EXPECT_FALSE(isFloat(TextureFormat::Depth24));
+    EXPECT_FALSE(isFloat(TextureFormat::RGBA8));
+    EXPECT_TRUE(isFloat(TextureFormat::R11F_G11F_B10F));
+    EXPECT_FALSE(isStorageCompatible(TextureFormat::SRGB8_ALPHA8));
+    EXPECT_TRUE(isStorageCompatible(TextureFormat::RGBA16F));
+}
+
+TEST(TextureFormat, EveryFormatIsEitherColourOrDepthRenderableExceptRGB32F) {
+    for (int i = 0; i < kTextureFormatCount; ++i) {
+        auto format = static_cast<TextureFormat>(i);
+        bool renderable = isColorRenderable(format) || isDepth(format);
+        EXPECT_EQ(renderable, format != TextureFormat::RGB32F) << toString(format);
+        EXPECT_FALSE(isColorRenderable(format) && isDepth(format)) << toString(format);
+        EXPECT_GT(bytesPerTexel(format), 0) << toString(format);
+    }
+}
+
+}  // namespace
+}  // namespace fx

@@ -1,0 +1,230 @@
+// The scenes in res/scenes: each loads, calls for what its lesson teaches, and refers only to files that
+// exist or that the asset generator (tools/assetgen) is expected to write. The lists below are the one
+// place that says which generated files the shipped scenes need.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "scene/scene_features.hpp"
+#include "scene/scene_loader.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene_test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using fx::SceneFeature;
+using scene_test::contains;
+
+// Files under res/ that tools/assetgen generates; a shipped scene may refer to them before they exist.
+const std::set<std::string> kGeneratedAssets = {
+    "models/character.gltf",        // skinned, with an animation clip named "walk"
+    "textures/ground_checker.png",  // ground texture
+};
+
+struct ShippedScene {
+    const char* file;
+    std::vector<std::string> referencedFiles;  // relative to res/
+};
+
+const ShippedScene kShippedScenes[] = {
+    {"01_program_objects.json", {}},
+    {"02_skinned_shadows.json", {"models/character.gltf", "textures/ground_checker.png"}},
+    {"03_fbo_pipeline.json", {"models/character.gltf", "textures/ground_checker.png"}},
+    {"04_colour_matrix.json", {}},
+    {"05_radial_blur.json", {}},
+    {"06_bloom.json", {}},
+};
+
+fs::path scenesDir() {
+    return scene_test::resDir() / "scenes";
+}
+
+fx::SceneLoadOptions resOptions(bool checkFiles) {
+    fx::SceneLoadOptions options;
+    options.assetRoot = scene_test::resDir();
+    options.checkFilesExist = checkFiles;
+    return options;
+}
+
+bool needsGeneratedAssets(const ShippedScene& scene) {
+    return std::any_of(scene.referencedFiles.begin(), scene.referencedFiles.end(),
+                       [](const std::string& file) { return kGeneratedAssets.count(file) > 0; });
+}
+
+fx::Scene loadShipped(const std::string& file) {
+    auto scene = fx::loadScene(scenesDir() / file, resOptions(false));
+    EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error());
+    if (!scene.ok()) return {};
+    EXPECT_TRUE(scene->warnings.empty()) << file << " has warnings, the first: " << scene->warnings.front();
+    return *scene;
+}
+
+TEST(ShippedScenes, TheTableCoversEveryFile) {
+    std::set<std::string> onDisk, listed;
+    for (const auto& entry : fs::directory_iterator(scenesDir()))
+        if (entry.path().extension() == ".json") onDisk.insert(entry.path().filename().string());
+    for (const auto& scene : kShippedScenes) listed.insert(scene.file);
+    EXPECT_EQ(onDisk, listed);
+}
+
+TEST(ShippedScenes, LoadAndReferOnlyToListedFiles) {
+    const fs::path res = fs::weakly_canonical(scene_test::resDir());
+    for (const auto& shipped : kShippedScenes) {
+        SCOPED_TRACE(shipped.file);
+        fx::Scene scene = loadShipped(shipped.file);
+        std::vector<std::string> referenced;
+        for (const auto& file : fx::referencedFiles(scene))
+            referenced.push_back(file.lexically_relative(res).string());
+        std::vector<std::string> expected = shipped.referencedFiles;
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(referenced, expected);
+        // Anything referenced that does not exist yet must be one of the generated files.
+        for (const auto& file : referenced) {
+            if (!fs::exists(res / file)) {
+                EXPECT_TRUE(kGeneratedAssets.count(file)) << file << " is missing";
+            }
+        }
+    }
+}
+
+TEST(ShippedScenes, LoadWithTheExistenceCheckOn) {
+    for (const auto& shipped : kShippedScenes) {
+        SCOPED_TRACE(shipped.file);
+        auto scene = fx::loadScene(scenesDir() / shipped.file, resOptions(true));
+        if (!needsGeneratedAssets(shipped)) {
+            EXPECT_TRUE(scene.ok()) << scene.error();
+            continue;
+        }
+        // Before the generator has run, the refusal names one of the files it will write.
+        if (!scene.ok()) {
+            bool namesGenerated =
+                std::any_of(kGeneratedAssets.begin(), kGeneratedAssets.end(),
+                            [&](const std::string& file) { return contains(scene.error(), file); });
+            EXPECT_TRUE(namesGenerated) << scene.error();
+        }
+    }
+}
+
+TEST(ShippedScenes, SurviveSaveAndLoad) {
+    for (const auto& shipped : kShippedScenes) {
+        SCOPED_TRACE(shipped.file);
+        fx::Scene scene = loadShipped(shipped.file);
+        auto again = fx::parseScene(fx::saveScene(scene), scene.file, resOptions(false));
+        ASSERT_TRUE(again.ok()) << again.error();
+        EXPECT_TRUE(*again == scene);
+    }
+}
+
+TEST(ShippedScenes, ProgramObjectsIsPlain) {
+    fx::SceneFeatures f = fx::features(loadShipped("01_program_objects.json"));
+    EXPECT_FALSE(f.has(SceneFeature::particles));
+    EXPECT_FALSE(f.has(SceneFeature::clouds));
+    EXPECT_EQ(f.missingReason(SceneFeature::particles), "scene has no particle emitter");
+    EXPECT_EQ(f.missingReason(SceneFeature::clouds), "scene has no cloud layer");
+    EXPECT_FALSE(f.has(SceneFeature::skinnedMeshes));
+    EXPECT_FALSE(f.has(SceneFeature::shadows));
+    EXPECT_FALSE(f.has(SceneFeature::hdrEmissive));
+    EXPECT_EQ(f.postEffects, fx::PostEffects{});
+}
+
+TEST(ShippedScenes, SkinnedShadowsHasASkinnedMeshAndASun) {
+    fx::Scene scene = loadShipped("02_skinned_shadows.json");
+    fx::SceneFeatures f = fx::features(scene);
+    EXPECT_EQ(f.skinnedMeshes, 1);
+    EXPECT_EQ(f.shadowCastingLights, 1);
+    auto character = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                  [](const fx::SceneObject& o) { return o.skinned; });
+    ASSERT_NE(character, scene.objects.end());
+    EXPECT_EQ(character->gltf.path, "../models/character.gltf");
+    EXPECT_EQ(character->animation.clip, "walk");
+    // A low sun: less than 30 degrees above the horizon, for long shadows.
+    glm::vec3 d = glm::normalize(scene.lights.at(0).direction);
+    EXPECT_LT(std::asin(-d.y), glm::radians(30.0f));
+    int props = 0;
+    for (const auto& object : scene.objects)
+        if (object.primitive && object.primitive->shape != fx::PrimitiveShape::plane && object.castsShadows)
+            ++props;
+    EXPECT_GE(props, 3);
+    EXPECT_EQ(f.missingReason(SceneFeature::particles), "scene has no particle emitter");
+}
+
+TEST(ShippedScenes, FboPipelineHasShadowsAndALens) {
+    fx::SceneFeatures f = fx::features(loadShipped("03_fbo_pipeline.json"));
+    EXPECT_TRUE(f.has(SceneFeature::skinnedMeshes));
+    EXPECT_TRUE(f.has(SceneFeature::shadows));
+    EXPECT_TRUE(f.has(SceneFeature::physicalLens));
+    EXPECT_TRUE(f.has(SceneFeature::depthOfField));
+}
+
+TEST(ShippedScenes, ColourMatrixHasSaturatedPrimariesAndWhite) {
+    fx::Scene scene = loadShipped("04_colour_matrix.json");
+    EXPECT_TRUE(fx::features(scene).has(SceneFeature::colorMatrix));
+    // Each object's colour: white, yellow (red and green), or one primary well above the other two.
+    std::set<std::string> kinds;
+    for (const auto& object : scene.objects) {
+        glm::vec3 c = object.material.baseColor;
+        if (std::min({c.r, c.g, c.b}) > 0.9f)
+            kinds.insert("white");
+        else if (c.r > 0.8f && c.g > 0.8f && c.b < 0.1f)
+            kinds.insert("yellow");
+        else if (c.r > 0.8f && c.g < 0.1f && c.b < 0.1f)
+            kinds.insert("red");
+        else if (c.g > 0.7f && c.r < 0.1f && c.b < 0.1f)
+            kinds.insert("green");
+        else if (c.b > 0.8f && c.r < 0.1f && c.g < 0.15f)
+            kinds.insert("blue");
+    }
+    EXPECT_EQ(kinds, (std::set<std::string>{"red", "green", "blue", "yellow", "white"}));
+}
+
+TEST(ShippedScenes, RadialBlurHasRowsReceding) {
+    fx::Scene scene = loadShipped("05_radial_blur.json");
+    EXPECT_TRUE(fx::features(scene).has(SceneFeature::radialBlur));
+    int pillars = 0;
+    float nearest = 1e9f, farthest = -1e9f;
+    for (const auto& object : scene.objects) {
+        if (!object.primitive || object.primitive->shape != fx::PrimitiveShape::cylinder) continue;
+        ++pillars;
+        float distance = glm::length(object.transform.position - scene.camera.position);
+        nearest = std::min(nearest, distance);
+        farthest = std::max(farthest, distance);
+    }
+    EXPECT_GE(pillars, 12);
+    EXPECT_GT(farthest, 4.0f * nearest);
+}
+
+TEST(ShippedScenes, BloomHasHdrEmissiveAndOneMovingGlow) {
+    fx::Scene scene = loadShipped("06_bloom.json");
+    fx::SceneFeatures f = fx::features(scene);
+    EXPECT_TRUE(f.has(SceneFeature::bloom));
+    EXPECT_GE(f.hdrEmissiveObjects, 2);
+    EXPECT_EQ(f.movingObjects, 1);
+    for (const auto& object : scene.objects) {
+        if (!object.moves()) continue;
+        glm::vec3 emitted = object.material.emitted();
+        EXPECT_GT(std::max({emitted.r, emitted.g, emitted.b}), 1.0f) << "the moving object should glow";
+    }
+    // A dim scene: no light brighter than the fill except the spotlight on the white ball.
+    EXPECT_LT(scene.ambient.r, 0.05f);
+    EXPECT_FALSE(f.has(SceneFeature::particles));
+}
+
+TEST(ShippedScenes, DefaultAssetRootIsRes) {
+    const char* overrideRoot = std::getenv("FXLAB_ROOT");
+    if (overrideRoot && *overrideRoot) GTEST_SKIP() << "FXLAB_ROOT is set";
+    EXPECT_EQ(fx::defaultAssetRoot(), scene_test::resDir());
+    auto scene = fx::loadScene(scenesDir() / "01_program_objects.json");
+    EXPECT_TRUE(scene.ok()) << scene.error();
+}
+
+}  // namespace
