@@ -94,7 +94,7 @@ public:
     JsonFieldReader child(const nlohmann::json& value, std::string path) {
         return JsonFieldReader(value, std::move(path), warnings_);
     }
-    // Calls visit(JsonFieldReader&, index) for each element of an optional array of objects.
+    // Calls visit(JsonFieldReader&) for each element of an optional array of objects.
     template <class Visit>
     void forEachObject(std::string_view key, Visit visit) {
         if (!has(key)) return;
@@ -103,7 +103,7 @@ public:
             failField(pathOf(key), cat("expected an array, got ", describeJsonType(array)));
         for (std::size_t i = 0; i < array.size(); ++i) {
             JsonFieldReader element(array[i], indexPath(pathOf(key), i), warnings_);
-            visit(element, i);
+            visit(element);
         }
     }
 

@@ -35,22 +35,21 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     scene.camera = parseCamera(cameraReader);
 
     AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
-    reader.forEachObject(
-        "lights", [&](JsonFieldReader& light, std::size_t) { scene.lights.push_back(parseLight(light)); });
+    reader.forEachObject("lights",
+                         [&](JsonFieldReader& light) { scene.lights.push_back(parseLight(light)); });
     std::set<std::string> names;
-    reader.forEachObject("objects", [&](JsonFieldReader& object, std::size_t) {
+    reader.forEachObject("objects", [&](JsonFieldReader& object) {
         scene.objects.push_back(parseObject(object, assets));
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)
             object.warn("name", cat("another object is already called \"", name, "\""));
     });
-    reader.forEachObject("emitters", [&](JsonFieldReader& emitter, std::size_t) {
+    reader.forEachObject("emitters", [&](JsonFieldReader& emitter) {
         scene.emitters.push_back(parseEmitter(emitter, assets));
     });
-    reader.forEachObject("clouds", [&](JsonFieldReader& cloud, std::size_t) {
-        scene.clouds.push_back(parseCloudLayer(cloud, assets));
-    });
+    reader.forEachObject(
+        "clouds", [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
     if (reader.has("postEffects")) {
         auto postReader = reader.object("postEffects");
         scene.postEffects = parsePostEffects(postReader, scene.camera);

@@ -3,6 +3,7 @@
 // SceneFieldError, which parseScene turns into an Error.
 #include <filesystem>
 #include <string_view>
+#include <utility>
 
 #include "scene/json_field_reader.hpp"
 #include "scene/scene.hpp"

@@ -35,7 +35,7 @@ LessonInfo ProgramObjectsLesson::info() const {
 std::vector<LessonStep> ProgramObjectsLesson::steps() const {
     return {
         {"Copy-pasted programs",
-         "Three programs (lit, unlit, normals) built by the same copy-pasted compile and link lines, with no "
+         "Programs (lit, unlit, normals) built by the same copy-pasted compile and link lines, with no "
          "error checks. It works until a shader has a typo: then the object turns black and nothing says why."},
         {"A program object with error checks",
          "One owner builds every program: it checks compile and link status and reports the log with the real "
@@ -70,7 +70,7 @@ void ProgramObjectsLesson::declareParams(ParamSet& params) {
 Status ProgramObjectsLesson::init(const Scene& scene) {
     scene_ = &scene;
     meshes_ = SceneMeshes(scene);
-    gridBox_ = GpuMesh(makeBox({0.3f, 0.3f, 0.3f}), "grid box");
+    gridBox_ = GpuMesh(makeBox({0.18f, 0.18f, 0.18f}), "grid box");
     emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
 
     rawLit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("lit.frag"));

@@ -36,7 +36,9 @@ TEST(SceneDocs, ExamplesMatchTheFixturesAndLoad) {
         auto scene =
             fx::parseScene(block, scene_test::dataDir() / "from_docs.json", scene_test::testOptions());
         EXPECT_TRUE(scene.ok()) << scene.error();
-        if (scene.ok()) EXPECT_TRUE(scene->warnings.empty());
+        if (scene.ok()) {
+            EXPECT_TRUE(scene->warnings.empty());
+        }
     }
 }
 
