@@ -195,16 +195,19 @@ int run(Session& s, const std::string& exe) {
             if (lastFrame) {
                 for (std::uint32_t t = 1; t < graph.textureCount(); ++t) graph.capture(TextureHandle{t});
             }
+            bool drawOverlay = overlay && overlayVisible;
+            // What the inspector shows stays alive, with the passes that make it.
+            if (drawOverlay) {
+                for (auto& name : overlay->wantedTextures()) graph.inspect(name);
+            }
             if (auto status = graph.execute(pool, executor); !status) log::error("frame graph: ", status.error());
             lastReport = graph.report();
             if (lastFrame) lastTextures = readFrameTextures(graph);
-            graph.releaseTextures();
-            pool.endFrame();
 
             double passMs = 0;
             for (auto& p : lastReport.passes) passMs += p.timeMs.value_or(0.0);
 
-            if (overlay && overlayVisible) {
+            if (drawOverlay) {
                 glBindFramebuffer(GL_FRAMEBUFFER, context->presentFramebuffer());
                 glViewport(0, 0, extent.width, extent.height);
                 OverlayModel model;
@@ -213,6 +216,9 @@ int run(Session& s, const std::string& exe) {
                 model.step = &s.step;
                 model.params = &s.params;
                 model.frame = &lastReport;
+                model.graph = &graph;
+                model.cameraNear = s.scene.camera.near;
+                model.cameraFar = s.scene.camera.far;
                 model.timing = cat(toString(timer.method()));
                 model.renderer = cat(context->renderer(), " (", context->kind(), ")");
                 model.frameMs = facts.frameCpuMs.empty() ? 0 : facts.frameCpuMs.back();
@@ -246,6 +252,10 @@ int run(Session& s, const std::string& exe) {
                     log::info(s.status);
                 }
             }
+            // Inspected and captured textures go back to the pool only now, after the overlay and
+            // the captures are done with them.
+            graph.releaseTextures();
+            pool.endFrame();
             context->present();
             gl::drainErrorFlags();
             facts.frameCpuMs.push_back(

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "base/params.hpp"
+#include "render/frame_graph.hpp"
 #include "render/frame_report.hpp"
+#include "render/quality_sweep.hpp"
 
 struct GLFWwindow;
 
@@ -23,6 +25,8 @@ struct OverlayModel {
     int* step = nullptr;  // 0-based, the overlay may change it
     ParamSet* params = nullptr;
     const FrameReport* frame = nullptr;
+    // The frame's graph while its inspected textures are still held (the inspector reads them).
+    const FrameGraph* graph = nullptr;
     std::string timing;        // method and why
     std::string renderer;
     double frameMs = 0;
@@ -32,6 +36,11 @@ struct OverlayModel {
     std::string status;                     // one line: "saved out/screenshot-3.png", "reloaded shaders"
     std::function<void()> lessonPanel;
     std::function<void()> onSavePreset, onLoadPreset;
+    // The camera's planes, for showing depth textures linearised.
+    float cameraNear = 0.1f, cameraFar = 100.0f;
+    // Runs the quality-knob sweep in the app (as ./fxlab bench does) and returns its points; empty
+    // when the lesson has no knobs.
+    std::function<SweepResult()> measureKnobs;
 };
 
 class Overlay {
@@ -45,6 +54,9 @@ public:
     bool ok() const { return ok_; }
     void draw(const OverlayModel& model, int width, int height, double deltaSeconds);
     bool wantsKeyboard() const;
+    // Names of the textures the overlay wants to show next frame; the runner marks them inspected,
+    // which keeps them (and the passes that make them) alive.
+    std::vector<std::string> wantedTextures() const { return {}; }
     bool wantsMouse() const;
 
 private:
