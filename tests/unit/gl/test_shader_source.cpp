@@ -1,0 +1,106 @@
+// #include expansion and compiler-log mapping, without a GL context.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "gl/shader_source.hpp"
+
+using fx::gl::expandShaderSource;
+using fx::gl::mapCompilerLog;
+namespace fs = std::filesystem;
+
+namespace {
+
+// An in-memory file system for the expander (files must also "exist" for resolution: use real
+// temporary files with the same contents).
+struct Files {
+    fs::path root = fs::temp_directory_path() / "fx_shader_source_test";
+    Files() {
+        fs::remove_all(root);
+        fs::create_directories(root / "common");
+    }
+    ~Files() { fs::remove_all(root); }
+    fs::path add(const std::string& name, const std::string& text) {
+        fs::path p = root / name;
+        fs::create_directories(p.parent_path());
+        FILE* f = std::fopen(p.c_str(), "wb");
+        std::fwrite(text.data(), 1, text.size(), f);
+        std::fclose(f);
+        return p;
+    }
+};
+
+}  // namespace
+
+TEST(ShaderSource, IncludesAreExpandedWithLineDirectives) {
+    Files files;
+    files.add("common/a.glsl", "float a() { return 1.0; }\n");
+    auto main = files.add("main.frag", "#version 450 core\n#include \"common/a.glsl\"\nvoid main() {}\n");
+    auto source = expandShaderSource(main, files.root);
+    ASSERT_TRUE(source.ok()) << source.error();
+    EXPECT_EQ(source->text,
+              "#version 450 core\n#line 2 0\n#line 1 1\nfloat a() { return 1.0; }\n#line 3 0\nvoid main() {}\n");
+    ASSERT_EQ(source->fileNames.size(), 2u);
+    EXPECT_EQ(source->fileNames[0], "main.frag");
+    EXPECT_EQ(source->fileNames[1], "common/a.glsl");
+    EXPECT_EQ(source->files.size(), 2u);
+}
+
+TEST(ShaderSource, DefinesGoRightAfterVersion) {
+    Files files;
+    auto main = files.add("d.frag", "#version 450 core\nvoid main() {}\n");
+    auto source = expandShaderSource(main, files.root, "#define TAPS 16");
+    ASSERT_TRUE(source.ok());
+    EXPECT_EQ(source->text, "#version 450 core\n#define TAPS 16\n#line 2 0\nvoid main() {}\n");
+}
+
+TEST(ShaderSource, AFileIsIncludedOnce) {
+    Files files;
+    files.add("common/once.glsl", "float once;\n");
+    files.add("common/b.glsl", "#include \"once.glsl\"\nfloat b;\n");
+    auto main = files.add("m.frag", "#version 450 core\n#include \"common/once.glsl\"\n#include \"common/b.glsl\"\n");
+    auto source = expandShaderSource(main, files.root);
+    ASSERT_TRUE(source.ok()) << source.error();
+    EXPECT_EQ(source->fileNames.size(), 3u);
+    std::size_t first = source->text.find("float once;");
+    EXPECT_NE(first, std::string::npos);
+    EXPECT_EQ(source->text.find("float once;", first + 1), std::string::npos);
+}
+
+TEST(ShaderSource, ACycleIsAnError) {
+    Files files;
+    files.add("x.glsl", "#include \"y.glsl\"\n");
+    files.add("y.glsl", "#include \"x.glsl\"\n");
+    auto main = files.add("c.frag", "#version 450 core\n#include \"x.glsl\"\n");
+    auto source = expandShaderSource(main, files.root);
+    ASSERT_FALSE(source.ok());
+    EXPECT_NE(source.error().find("#include cycle: c.frag -> x.glsl -> y.glsl -> x.glsl"), std::string::npos)
+        << source.error();
+}
+
+TEST(ShaderSource, AMissingIncludeNamesTheFileAndLineOfTheDirective) {
+    Files files;
+    auto main = files.add("miss.frag", "#version 450 core\n\n#include \"nowhere.glsl\"\n");
+    auto source = expandShaderSource(main, files.root);
+    ASSERT_FALSE(source.ok());
+    EXPECT_NE(source.error().find("miss.frag:3: cannot find included file \"nowhere.glsl\""), std::string::npos)
+        << source.error();
+}
+
+TEST(ShaderSource, MissingVersionIsAnError) {
+    Files files;
+    auto main = files.add("nov.frag", "void main() {}\n");
+    auto source = expandShaderSource(main, files.root);
+    ASSERT_FALSE(source.ok());
+    EXPECT_NE(source.error().find("#version"), std::string::npos);
+}
+
+TEST(ShaderSource, CompilerLogsOfThreeVendorsAreMapped) {
+    std::vector<std::string> names = {"main.frag", "common/a.glsl"};
+    EXPECT_EQ(mapCompilerLog("0:12(5): error: `x' undeclared\n", names), "main.frag:12:5: error: `x' undeclared\n");
+    EXPECT_EQ(mapCompilerLog("1(3) : error C1008: undefined variable \"y\"\n", names),
+              "common/a.glsl:3: error C1008: undefined variable \"y\"\n");
+    EXPECT_EQ(mapCompilerLog("ERROR: 1:7: 'z' : undeclared identifier\n", names),
+              "common/a.glsl:7: ERROR: 'z' : undeclared identifier\n");
+    EXPECT_EQ(mapCompilerLog("7:1(1): error: odd\n", names), "<source 7>:1:1: error: odd\n");
+}
