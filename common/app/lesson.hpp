@@ -36,6 +36,7 @@ struct FrameInfo {
     std::uint32_t seed = 1;
     bool headless = false;
     const FrameReport* previousFrame = nullptr;  // the last frame's passes and times, if any
+    bool benchmark = false;  // a bench frame: leave out side-by-side views that only help people
 };
 
 class Lesson {
@@ -61,6 +62,9 @@ public:
     virtual std::vector<gl::ReloadableProgram*> programs() { return {}; }
     // The lesson's own panel in the overlay (ImGui calls), under its steps and parameters.
     virtual void drawPanel(const FrameInfo& frame) { (void)frame; }
+    // The step (0-based) whose frame the bench measures, where the quality knobs matter; -1: the
+    // step the run starts at.
+    virtual int benchStep() const { return -1; }
     // Extra facts for the report ("uniform look-ups per frame": 1200).
     virtual void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const { (void)facts; }
 };

@@ -46,6 +46,22 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args) {
             o.forceHeadless = true;
         } else if (flag == "--capture-float") {
             o.captureFloat = true;
+        } else if (flag == "--bench") {
+            o.bench = true;
+        } else if (flag == "--knob" || flag == "--bench-out") {
+            status = withValue([&](const std::string& v) -> Status {
+                if (v.empty()) return Error{cat(flag, ": needs a value")};
+                if (flag == "--knob") o.benchKnob = v;
+                else o.benchOut = v;
+                return Status::success();
+            });
+        } else if (flag == "--bench-frames" || flag == "--bench-values") {
+            status = withValue([&](const std::string& v) -> Status {
+                auto n = parseWhole(v, 1, 1000, flag, flag == "--bench-frames" ? "a frame count" : "a value count");
+                if (!n) return Error{n.error()};
+                (flag == "--bench-frames" ? o.benchFrames : o.benchValues) = int(*n);
+                return Status::success();
+            });
         } else if (flag == "--overlay") {
             o.overlayHeadless = true;
         } else if (flag == "--no-overlay") {
@@ -151,6 +167,12 @@ std::string runOptionsHelp(const std::string& program) {
   --inspect NAME        keep a texture (and the passes that make it) alive, as the inspector does
   --overlay             draw the overlay into headless captures too
   --no-overlay          start with the overlay hidden (F1 toggles it)
+  --bench               sweep the quality knobs (headless): time and error against the reference,
+                        written to out/bench/<lesson>/ (bench.csv, bench.json, bench-<knob>.png)
+  --knob NAME           with --bench: only this knob
+  --bench-frames N      with --bench: measured frames per setting (default 5; the median is kept)
+  --bench-values N      with --bench: only the first N values of each knob
+  --bench-out DIR       with --bench: where the results go
   --list-steps          print the lesson's steps and exit
   --list-params         print the lesson's parameters with their ranges and exit
   --help                this text

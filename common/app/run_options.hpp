@@ -31,6 +31,11 @@ struct RunOptions {
     bool overlay = true;                  // --no-overlay; headless draws it only with --overlay
     bool overlayHeadless = false;         // --overlay
     std::vector<std::string> inspect;     // --inspect NAME: keep a texture and its producers alive
+    bool bench = false;                   // --bench: sweep the quality knobs instead of running
+    std::string benchKnob;                // --knob NAME: only this knob
+    int benchFrames = 5;                  // --bench-frames N: measured frames per setting
+    int benchValues = 0;                  // --bench-values N: only the first N values of each knob
+    std::filesystem::path benchOut;       // --bench-out DIR (default out/bench/<NN-name>)
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

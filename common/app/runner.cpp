@@ -9,7 +9,9 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/bench.hpp"
 #include "app/capture.hpp"
+#include "app/frame_renderer.hpp"
 #include "app/run_options.hpp"
 #include "app/run_report.hpp"
 #include "base/file_io.hpp"
@@ -81,7 +83,7 @@ struct Session {
 
 int run(Session& s, const std::string& exe) {
     const RunOptions& o = s.options;
-    bool headless = o.forceHeadless;
+    bool headless = o.forceHeadless || o.bench;  // the bench measures a fixed headless frame
     if (!headless && !displayAvailable()) {
         headless = true;
         log::info("no display found: rendering headless");
@@ -122,10 +124,37 @@ int run(Session& s, const std::string& exe) {
             s.lesson.shutdown();
             return 1;
         }
-        GlTextureAllocator allocator;
-        TexturePool pool(allocator);
-        PassTimer timer(o.timing, context->renderer());
-        GlPassExecutor executor(timer, {context->presentFramebuffer(), true});
+        FrameRenderer renderer(*context, o.timing, !o.bench);
+        PassTimer& timer = renderer.timer();
+        if (o.bench) {
+            if (!o.benchKnob.empty() && (!s.params.find(o.benchKnob) || !s.params.find(o.benchKnob)->knob)) {
+                std::string knobs;
+                for (auto* k : s.params.knobs()) knobs += (knobs.empty() ? "" : ", ") + k->name;
+                log::error(exe, ": --knob: no quality knob named \"", o.benchKnob, "\"; this lesson has: ",
+                           knobs.empty() ? "(none)" : knobs);
+                s.lesson.shutdown();
+                return 2;
+            }
+            char number[8];
+            std::snprintf(number, sizeof number, "%02d", s.lesson.info().number);
+            fs::path dir = o.benchOut.empty() ? fs::path("out") / "bench" / cat(number, "-", s.lesson.info().slug) : o.benchOut;
+            SweepResult result = sweepKnobs(s.lesson, s.params, renderer, *context,
+                                            {o.benchKnob, o.benchFrames, o.benchValues}, exe,
+                                            !o.step && s.lesson.benchStep() >= 0 ? s.lesson.benchStep() : s.step);
+            std::cout << describeSweep(result);
+            if (auto written = writeBenchOutputs(result, dir); !written) {
+                log::error(written.error());
+                exitCode = 1;
+            } else {
+                log::info("bench results written to ", dir.string(), "/");
+            }
+            if (gl::debugCounters().errors > 0) {
+                log::error(gl::debugCounters().errors, " GL error(s) during the bench: ", gl::debugCounters().lastError);
+                exitCode = 1;
+            }
+            s.lesson.shutdown();
+            return exitCode;
+        }
         std::unique_ptr<Overlay> overlay;
         if (!headless || o.overlayHeadless) overlay = std::make_unique<Overlay>(context->window());
         bool overlayVisible = headless ? o.overlayHeadless : o.overlay;
@@ -186,28 +215,18 @@ int run(Session& s, const std::string& exe) {
                 facts.frameGpuMs.push_back(0);
                 continue;
             }
-            executor.setPresentFramebuffer(context->presentFramebuffer());
-
             bool lastFrame = frames != 0 && index + 1 == std::uint64_t(frames);
-            FrameGraph graph(OutputTarget{{extent.width, extent.height}, "output", TextureFormat::RGBA8, 0});
-            s.lesson.buildFrame(graph, frame);
-            for (auto& name : o.inspect) graph.inspect(name);
-            if (lastFrame) {
-                for (std::uint32_t t = 1; t < graph.textureCount(); ++t) graph.capture(TextureHandle{t});
-            }
             bool drawOverlay = overlay && overlayVisible;
+            FrameRequest request;
+            request.inspect = o.inspect;
             // What the inspector shows stays alive, with the passes that make it.
             if (drawOverlay) {
-                for (auto& name : overlay->wantedTextures()) graph.inspect(name);
+                for (auto& name : overlay->wantedTextures()) request.inspect.push_back(name);
             }
-            if (auto status = graph.execute(pool, executor); !status) log::error("frame graph: ", status.error());
-            lastReport = graph.report();
-            if (lastFrame) lastTextures = readFrameTextures(graph);
-
-            double passMs = 0;
-            for (auto& p : lastReport.passes) passMs += p.timeMs.value_or(0.0);
-
-            if (drawOverlay) {
+            request.readTextures = lastFrame;
+            request.readFinal = lastFrame || screenshot;
+            auto drawOverlayOnTop = [&](const FrameGraph& graph, const FrameReport& report) {
+                if (!drawOverlay) return;
                 glBindFramebuffer(GL_FRAMEBUFFER, context->presentFramebuffer());
                 glViewport(0, 0, extent.width, extent.height);
                 OverlayModel model;
@@ -215,7 +234,7 @@ int run(Session& s, const std::string& exe) {
                 for (auto& st : s.lesson.steps()) model.steps.push_back({st.title, st.text});
                 model.step = &s.step;
                 model.params = &s.params;
-                model.frame = &lastReport;
+                model.frame = &report;
                 model.graph = &graph;
                 model.cameraNear = s.scene.camera.near;
                 model.cameraFar = s.scene.camera.far;
@@ -239,11 +258,17 @@ int run(Session& s, const std::string& exe) {
                     Status loaded = text ? s.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
                     s.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
                 };
+                model.measureKnobs = [&] {
+                    return sweepKnobs(s.lesson, s.params, renderer, *context, {{}, 3, 0}, exe, s.step);
+                };
                 overlay->draw(model, extent.width, extent.height, delta);
-            }
-
-            if (lastFrame || screenshot) {
-                lastFinalBytes = gl::readFramebufferRgba8(context->presentFramebuffer(), extent.width, extent.height);
+            };
+            RenderedFrame rendered = renderer.render(s.lesson, frame, request, drawOverlayOnTop);
+            lastReport = std::move(rendered.report);
+            double passMs = rendered.passMs;
+            if (lastFrame) lastTextures = std::move(rendered.textures);
+            if (request.readFinal) {
+                lastFinalBytes = std::move(rendered.finalImage);
                 lastFinal = toFloatImage(lastFinalBytes);
                 if (screenshot) {
                     fs::path shot = fs::path("out") / cat(exe, "-screenshot-", ++screenshotCount, ".png");
@@ -252,10 +277,6 @@ int run(Session& s, const std::string& exe) {
                     log::info(s.status);
                 }
             }
-            // Inspected and captured textures go back to the pool only now, after the overlay and
-            // the captures are done with them.
-            graph.releaseTextures();
-            pool.endFrame();
             context->present();
             gl::drainErrorFlags();
             facts.frameCpuMs.push_back(

@@ -19,6 +19,7 @@ public:
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
+    int benchStep() const override { return Parentheses; }
     void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
 
     enum Step { CopyPasted, CheckedPrograms, CachedLocations, Parentheses, LiveReload };
@@ -31,6 +32,7 @@ private:
     int gridSize_ = 20;
     int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
     int meshDetail_ = 128;  // sphere segments for step 4
+    int spheres_ = 16;      // instances for step 4
 
     const fx::Scene* scene_ = nullptr;
     fx::SceneMeshes meshes_;

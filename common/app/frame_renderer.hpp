@@ -1,0 +1,52 @@
+#pragma once
+// One frame of a lesson on the GPU: build the lesson's graph, execute it through the GL executor,
+// read back what was asked for. The interactive loop, captures and the bench sweep all render
+// through this one path, so a benchmarked frame is exactly a shown frame.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/capture.hpp"
+#include "app/lesson.hpp"
+#include "base/timing_mode.hpp"
+#include "platform/context.hpp"
+#include "render_gl/gl_pass_executor.hpp"
+#include "render_gl/gl_texture_allocator.hpp"
+
+namespace fx {
+
+struct FrameRequest {
+    std::vector<std::string> inspect;  // keep these textures (and their producers) alive
+    bool readTextures = false;         // read back every texture of the frame (captures, report)
+    std::vector<std::string> readNamed; // read back only these (the bench's effect output)
+    bool readFinal = false;            // read back the presented image (after whileHeld drew on it)
+};
+
+struct RenderedFrame {
+    FrameReport report;
+    std::vector<CapturedTexture> textures;
+    ByteImage finalImage;
+    double passMs = 0;  // sum of the pass times the timer had
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(Context& context, TimingMode timing, bool checkState = true);
+
+    using WhileHeld = std::function<void(const FrameGraph&, const FrameReport&)>;
+    // `whileHeld` runs after execution, while inspected textures are still held (the overlay).
+    RenderedFrame render(Lesson& lesson, const FrameInfo& frame, const FrameRequest& request,
+                         const WhileHeld& whileHeld = {});
+
+    PassTimer& timer() { return timer_; }
+    TexturePool& pool() { return pool_; }
+
+private:
+    Context& context_;
+    GlTextureAllocator allocator_;
+    TexturePool pool_;
+    PassTimer timer_;
+    GlPassExecutor executor_;
+};
+
+}  // namespace fx
