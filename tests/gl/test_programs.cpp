@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
 #include "gl_test.hpp"
@@ -15,7 +17,8 @@ protected:
     fs::path dir;
     void SetUp() override {
         GlTest::SetUp();
-        dir = fs::temp_directory_path() / ("fx_programs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        dir = fs::temp_directory_path() / ("fx_programs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                                           "_" + std::to_string(::getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
     }

@@ -2,12 +2,14 @@
 
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "base/file_io.hpp"
 
 namespace fs = std::filesystem;
 
 TEST(FileIo, WritesAtomicallyAndReadsBack) {
-    fs::path dir = fs::temp_directory_path() / "fx_file_io_test";
+    fs::path dir = fs::temp_directory_path() / ("fx_file_io_test_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::path file = dir / "nested" / "a.txt";
     ASSERT_TRUE(fx::writeFileAtomically(file, std::string_view("hello")).ok());
@@ -22,7 +24,7 @@ TEST(FileIo, WritesAtomicallyAndReadsBack) {
 }
 
 TEST(FileIo, FailedWriteLeavesNothingAndNamesThePath) {
-    fs::path dir = fs::temp_directory_path() / "fx_file_io_test_ro";
+    fs::path dir = fs::temp_directory_path() / ("fx_file_io_test_ro_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     // A folder where the file should go: rename over it fails.

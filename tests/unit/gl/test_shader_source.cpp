@@ -3,6 +3,8 @@
 
 #include <map>
 
+#include <unistd.h>
+
 #include "gl/shader_source.hpp"
 
 using fx::gl::expandShaderSource;
@@ -11,10 +13,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// An in-memory file system for the expander (files must also "exist" for resolution: use real
-// temporary files with the same contents).
+// Real temporary files: the expander resolves includes by looking at the file system.
 struct Files {
-    fs::path root = fs::temp_directory_path() / "fx_shader_source_test";
+    // One folder per test and process: ctest runs these tests in parallel.
+    fs::path root = fs::temp_directory_path() /
+                    ("fx_shader_source_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                     "_" + std::to_string(::getpid()));
     Files() {
         fs::remove_all(root);
         fs::create_directories(root / "common");
