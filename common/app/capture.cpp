@@ -44,7 +44,8 @@ Status writeCaptures(const std::filesystem::path& dir, const ByteImage& finalIma
         if (auto s = writePng(dir / "final.png", finalImage); !s) return s;
     }
     for (const CapturedTexture& t : textures) {
-        bool floatFormat = isFloat(t.spec.format);
+        // Linear light is sRGB-encoded for viewing; depth and UNORM data are shown as stored.
+        bool floatFormat = isFloat(t.spec.format) && !isDepth(t.spec.format);
         std::string stem = captureFileStem(t.name);
         ByteImage shown = toDisplay(t.pixels, floatFormat ? ViewTransform::LinearToSrgb : ViewTransform::Direct);
         if (auto s = writePng(dir / (stem + ".png"), shown); !s) return s;

@@ -113,6 +113,25 @@ std::vector<Candidate> candidateDisplays(std::string& notes) {
     return found;
 }
 
+// When 4.5 core is refused: what the display does offer, for the message (any context at all).
+std::string describeBestContext(EGLDisplay display, EGLConfig config) {
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, nullptr);
+    if (context == EGL_NO_CONTEXT) return "no OpenGL context at all";
+    std::string found = "an OpenGL context of unknown version";
+    if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        auto getString = reinterpret_cast<const GLubyte* (*)(GLenum)>(eglGetProcAddress("glGetString"));
+        if (getString) {
+            const GLubyte* version = getString(GL_VERSION);
+            const GLubyte* renderer = getString(GL_RENDERER);
+            found = cat("OpenGL ", version ? reinterpret_cast<const char*>(version) : "?", " on ",
+                        renderer ? reinterpret_cast<const char*>(renderer) : "?");
+        }
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    }
+    eglDestroyContext(display, context);
+    return found;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& options) {
@@ -148,8 +167,9 @@ Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& opt
                                             EGL_NONE};
         EGLContext context = eglCreateContext(candidate.display, config, EGL_NO_CONTEXT, contextAttributes);
         if (context == EGL_NO_CONTEXT) {
-            failures += cat("\n  ", candidate.kind, " (", vendor, "): no OpenGL 4.5 core context (",
-                            eglErrorName(eglGetError()), ")");
+            std::string why = eglErrorName(eglGetError());
+            failures += cat("\n  ", candidate.kind, " (", vendor, "): no OpenGL 4.5 core context (", why,
+                            "); it offers ", describeBestContext(candidate.display, config));
             eglTerminate(candidate.display);
             continue;
         }
@@ -176,7 +196,7 @@ Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& opt
         }
         return std::unique_ptr<Context>(std::move(result));
     }
-    return Error{cat("no headless OpenGL 4.5 core context could be created:", failures.empty() ? " no EGL display found" : failures,
+    return Error{cat("fxlab needs OpenGL 4.5 core, and no headless context could be created:", failures.empty() ? " no EGL display found" : failures,
                      notes.empty() ? "" : cat("\n  (", notes, " )"))};
 }
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Smoke test of one lesson: every step headless at 320x180, checked by fx_smoke_check against
-# tests/smoke/golden/<lesson>/step-<k>.png; then step 1 again, which must give the same bytes.
+# tests/smoke/golden/<lesson>/step-<k>.png; every step again, which must give the same bytes; and
+# every step at 1x1 and 0x0 (a minimised window), which must run without a GL error.
 #   run_lesson_smoke.sh <lesson exe> <checker exe> <golden dir> <work dir>
 set -uo pipefail
 exe="$1" checker="$2" golden="$3" work="$4"
@@ -21,11 +22,26 @@ for step in $(seq 1 "$steps"); do
     echo "FAIL: $name step $step (log: $dir.log)"; status=1
   fi
 done
-# Fixed time step and seeds: a second run gives byte-identical captures.
-again="$work/again"
-"$exe" --headless --size 320x180 --frames 3 --step 1 --capture "$again" >/dev/null 2>&1
-if ! cmp -s "$work/step-1/final.png" "$again/final.png"; then
-  echo "FAIL: $name step 1 differs between two runs"; status=1
-fi
+# Fixed time step and seeds: a second run of every step gives byte-identical captures.
+for step in $(seq 1 "$steps"); do
+  again="$work/again-$step"
+  "$exe" --headless --size 320x180 --frames 3 --step "$step" --capture "$again" >/dev/null 2>&1
+  if ! cmp -s "$work/step-$step/final.png" "$again/final.png"; then
+    echo "FAIL: $name step $step differs between two runs"; status=1
+  fi
+done
+# Tiny and minimised framebuffers: every step renders at 1x1 and skips 0x0, with no GL error.
+for size in 1x1 0x0; do
+  for step in $(seq 1 "$steps"); do
+    dir="$work/size-$size-step-$step"
+    if ! "$exe" --headless --size "$size" --frames 2 --step "$step" --report "$dir/report.json" --capture "$dir" \
+         >"$dir.log" 2>&1; then
+      echo "FAIL: $name step $step at $size exited with an error:"; cat "$dir.log"; status=1; continue
+    fi
+    if ! grep -q '"glErrors": 0,' "$dir/report.json"; then
+      echo "FAIL: $name step $step at $size reported GL errors:"; grep '"lastGlError"' "$dir/report.json"; status=1
+    fi
+  done
+done
 [ "$status" -eq 0 ] && echo "$name: $steps steps passed"
 exit "$status"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Bench smoke test: a one-value sweep of every knob at a small size writes its CSV, JSON and plots,
+# the reference setting has zero error against itself, and nothing raised a GL error.
+#   run_bench_smoke.sh <lesson exe> <work dir>
+set -uo pipefail
+exe="$1" work="$2"
+rm -rf "$work" && mkdir -p "$work"
+if ! "$exe" --bench --size 160x90 --bench-frames 1 --bench-values 1 --bench-out "$work" >"$work/log" 2>&1; then
+  echo "FAIL: the bench exited with an error:"; cat "$work/log"; exit 1
+fi
+status=0
+for f in bench.csv bench.json; do
+  [ -s "$work/$f" ] || { echo "FAIL: no $f"; status=1; }
+done
+knobs=$("$exe" --list-params | grep -c 'quality knob')
+rows=$(($(wc -l <"$work/bench.csv") - 1))
+plots=$(find "$work" -name 'bench-*.png' | wc -l)
+# One value per knob, plus the reference when the first value is not it.
+[ "$rows" -ge "$knobs" ] || { echo "FAIL: $rows rows for $knobs knobs"; status=1; }
+[ "$plots" -eq "$knobs" ] || { echo "FAIL: $plots plots for $knobs knobs"; status=1; }
+# Column 7 says whether the row is the reference; its RMSE (column 12) must be 0.
+awk -F, 'NR > 1 && $7 == 1 && $12 != 0 { print "FAIL: reference row with RMSE " $12; bad = 1 } END { exit bad }' \
+  "$work/bench.csv" || status=1
+[ "$status" -eq 0 ] && echo "bench: $rows rows, $plots plots" && cat "$work/log" | tail -n +2
+exit "$status"
