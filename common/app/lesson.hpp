@@ -26,6 +26,14 @@ struct LessonStep {
     std::string text;  // a few sentences: what this step shows and what to look at
 };
 
+// The mouse, in framebuffer pixels with the origin at the bottom left (as GL counts them).
+struct Pointer {
+    bool present = false;   // a window with the cursor inside it
+    float x = 0, y = 0;
+    bool leftDown = false;  // held this frame
+    bool overUi = false;    // the overlay owns the mouse: lessons ignore it then
+};
+
 // The clock and the frame, as a lesson sees them. Time is the fixed-step clock when headless.
 struct FrameInfo {
     std::uint64_t index = 0;
@@ -37,6 +45,7 @@ struct FrameInfo {
     bool headless = false;
     const FrameReport* previousFrame = nullptr;  // the last frame's passes and times, if any
     bool benchmark = false;  // a bench frame: leave out side-by-side views that only help people
+    Pointer pointer;
 };
 
 class Lesson {

@@ -72,6 +72,24 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     }
 }
 
+Pointer readPointer(GLFWwindow* window, Extent framebuffer, bool overUi) {
+    Pointer p;
+    if (!window || framebuffer.empty()) return p;
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    if (windowWidth <= 0 || windowHeight <= 0) return p;
+    // Window coordinates (top-left origin, screen units) to framebuffer pixels (bottom-left origin).
+    double sx = double(framebuffer.width) / windowWidth, sy = double(framebuffer.height) / windowHeight;
+    p.x = float(x * sx);
+    p.y = float(framebuffer.height - y * sy);
+    p.present = x >= 0 && y >= 0 && x < windowWidth && y < windowHeight;
+    p.leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    p.overUi = overUi;
+    return p;
+}
+
 struct Session {
     Lesson& lesson;
     RunOptions options;
@@ -207,6 +225,7 @@ int run(Session& s, const std::string& exe) {
             Extent extent = context->framebufferSize();
             FrameInfo frame{index, seconds, delta, {extent.width, extent.height}, s.step, o.seed, headless,
                             index > 0 ? &lastReport : nullptr};
+            frame.pointer = readPointer(context->window(), extent, overlay && overlayVisible && overlay->wantsMouse());
             s.lesson.update(frame);
             if (extent.empty()) {
                 // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
