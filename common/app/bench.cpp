@@ -107,7 +107,15 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     if (size.empty()) return result;
 
     // A fixed frame: same time, same seed, every setting.
-    FrameInfo frame{1, 1.0, 1.0 / 60.0, {size.width, size.height}, step, 1, true, nullptr, true};
+    FrameInfo frame;
+    frame.index = 1;
+    frame.seconds = 1.0;
+    frame.deltaSeconds = 1.0 / 60.0;
+    frame.size = {size.width, size.height};
+    frame.step = step;
+    frame.seed = 1;
+    frame.headless = true;
+    frame.benchmark = true;
     std::string savedParams = params.toJson();
 
     CopyFrame copy;

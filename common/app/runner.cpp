@@ -223,8 +223,15 @@ int run(Session& s, const std::string& exe) {
             }
 
             Extent extent = context->framebufferSize();
-            FrameInfo frame{index, seconds, delta, {extent.width, extent.height}, s.step, o.seed, headless,
-                            index > 0 ? &lastReport : nullptr};
+            FrameInfo frame;
+            frame.index = index;
+            frame.seconds = seconds;
+            frame.deltaSeconds = delta;
+            frame.size = {extent.width, extent.height};
+            frame.step = s.step;
+            frame.seed = o.seed;
+            frame.headless = headless;
+            frame.previousFrame = index > 0 ? &lastReport : nullptr;
             frame.pointer = readPointer(context->window(), extent, overlay && overlayVisible && overlay->wantsMouse());
             s.lesson.update(frame);
             if (extent.empty()) {
