@@ -122,8 +122,11 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     if (copy.init({})) result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
     copy.shutdown();
 
+    result.effectTexture = lesson.benchTexture();
+    std::vector<std::string> effect;
+    if (!result.effectTexture.empty()) effect.push_back(result.effectTexture);
     setKnobsToReference(params);
-    Measured reference = measure(lesson, renderer, frame, options.frames, "", {});
+    Measured reference = measure(lesson, renderer, frame, options.frames, "", effect);
 
     auto current = nlohmann::json::parse(savedParams);
     for (const Param* knob : params.knobs()) {
@@ -136,7 +139,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
         for (double value : values) {
             setKnobsToReference(params);
             knob->set(value);
-            Measured m = measure(lesson, renderer, frame, options.frames, "", {});
+            Measured m = measure(lesson, renderer, frame, options.frames, "", effect);
             SweepPoint point;
             point.knob = knob->name;
             point.value = knob->valueText(value);
@@ -148,6 +151,14 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
                 point.rmse = d->rmse;
                 point.psnr = d->psnr;
                 point.maxAbs = d->maxAbs;
+            }
+            if (!reference.effect.empty() && !m.effect.empty()) {
+                if (auto d = compare(m.effect.front().pixels, reference.effect.front().pixels); d) {
+                    point.hasEffectError = true;
+                    point.effectRmse = d->rmse;
+                    point.effectPsnr = d->psnr;
+                    point.effectMaxAbs = d->maxAbs;
+                }
             }
             result.points.push_back(point);
         }
@@ -182,7 +193,8 @@ nlohmann::ordered_json jsonNumber(double v) {
 
 Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir) {
     std::ostringstream csv;
-    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,rmse,psnr_db,max_abs\n";
+    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,rmse,psnr_db,max_abs,"
+           "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs\n";
     nlohmann::ordered_json json;
     json["lesson"] = r.lesson;
     json["size"] = {r.width, r.height};
@@ -192,10 +204,20 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
     for (const SweepPoint& p : r.points) {
         csv << r.lesson << "," << r.width << "," << r.height << "," << r.timingMethod << "," << p.knob << ",\"" << p.value
             << "\"," << p.reference << "," << p.current << "," << number(p.medianMs) << "," << number(r.copyMs) << ","
-            << number(p.copyMultiple) << "," << number(p.rmse) << "," << number(p.psnr) << "," << number(p.maxAbs) << "\n";
+            << number(p.copyMultiple) << "," << number(p.rmse) << "," << number(p.psnr) << "," << number(p.maxAbs) << ",";
+        if (p.hasEffectError) {
+            csv << r.effectTexture << "," << number(p.effectRmse) << "," << number(p.effectPsnr) << "," << number(p.effectMaxAbs);
+        } else {
+            csv << ",,,";
+        }
+        csv << "\n";
         json["points"].push_back({{"knob", p.knob}, {"value", p.value}, {"reference", p.reference}, {"current", p.current},
                                   {"medianMs", p.medianMs}, {"copyMultiple", p.copyMultiple}, {"rmse", jsonNumber(p.rmse)},
                                   {"psnrDb", jsonNumber(p.psnr)}, {"maxAbs", jsonNumber(p.maxAbs)}});
+        if (p.hasEffectError) {
+            json["points"].back()["effect"] = {{"texture", r.effectTexture}, {"rmse", jsonNumber(p.effectRmse)},
+                                               {"psnrDb", jsonNumber(p.effectPsnr)}, {"maxAbs", jsonNumber(p.effectMaxAbs)}};
+        }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
     if (auto s = writeFileAtomically(dir / "bench.json", json.dump(2) + "\n"); !s) return s;

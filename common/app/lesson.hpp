@@ -74,6 +74,9 @@ public:
     // The step (0-based) whose frame the bench measures, where the quality knobs matter; -1: the
     // step the run starts at.
     virtual int benchStep() const { return -1; }
+    // The texture the lesson's effect writes (e.g. "radial_blur.color"); the bench measures its error
+    // against the reference too, not only the final image's. Empty: the final image only.
+    virtual std::string benchTexture() const { return {}; }
     // Extra facts for the report ("uniform look-ups per frame": 1200).
     virtual void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const { (void)facts; }
 };

@@ -6,6 +6,15 @@
 
 namespace fx {
 
+// Vertex attribute locations (the chapter's location map, seed 000 section 0.4).
+namespace attribute_location {
+inline constexpr GLuint position = 0;  // vec3
+inline constexpr GLuint texcoord = 1;  // vec2
+inline constexpr GLuint normal = 2;    // vec3
+inline constexpr GLuint joints = 3;    // uvec4, skinned meshes
+inline constexpr GLuint weights = 4;   // vec4, skinned meshes
+}  // namespace attribute_location
+
 class GpuMesh {
 public:
     GpuMesh() = default;

@@ -4,31 +4,76 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "scene/gltf_loader.hpp"
 
 namespace fx {
 namespace {
 
 MeshData meshFor(const Primitive& p) {
     switch (p.shape) {
-        case PrimitiveShape::plane: return makePlane(p.planeSize.x, p.planeSize.y);
-        case PrimitiveShape::box: return makeBox(p.boxSize);
-        case PrimitiveShape::sphere: return makeSphere(p.radius, 48, 24);
-        case PrimitiveShape::cylinder: return makeCylinder(p.radius, p.height, 48);
-        case PrimitiveShape::capsule: return makeCapsule(p.radius, p.height, 48, 12);
+        case PrimitiveShape::plane:
+            return makePlane(p.planeSize.x, p.planeSize.y);
+        case PrimitiveShape::box:
+            return makeBox(p.boxSize);
+        case PrimitiveShape::sphere:
+            return makeSphere(p.radius, 48, 24);
+        case PrimitiveShape::cylinder:
+            return makeCylinder(p.radius, p.height, 48);
+        case PrimitiveShape::capsule:
+            return makeCapsule(p.radius, p.height, 48, 12);
     }
     return {};
 }
 
 }  // namespace
 
-SceneMeshes::SceneMeshes(const Scene& scene) {
+SceneMeshes::SceneMeshes()
+    : textures_(std::make_unique<MaterialTextures>()), skinning_(std::make_unique<GpuSkinning>()) {}
+SceneMeshes::~SceneMeshes() = default;
+SceneMeshes::SceneMeshes(SceneMeshes&&) noexcept = default;
+SceneMeshes& SceneMeshes::operator=(SceneMeshes&&) noexcept = default;
+
+SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
+    bool needsSkinning = false;
     for (const SceneObject& object : scene.objects) {
+        ObjectMeshes meshes;
+        std::string label = object.name.empty() ? "object" : object.name;
         if (object.primitive) {
-            meshes_.emplace_back(meshFor(*object.primitive), object.name.empty() ? "object" : object.name);
-        } else {
-            meshes_.emplace_back();
-            notDrawn_.push_back(object.name + " (glTF, drawn by the skinned-mesh path)");
+            meshes.primitive = GpuMesh(meshFor(*object.primitive), label);
+            if (!object.material.baseColorTexture.empty())
+                meshes.baseColorTexture = textures_->file(object.material.baseColorTexture.resolved);
+            objects_.push_back(std::move(meshes));
+            continue;
         }
+        // A glTF object: the file is read once however many objects use it.
+        std::string key = object.gltf.resolved.string();
+        auto cached = files_.find(key);
+        if (cached == files_.end()) {
+            auto loaded = loadGltf(object.gltf.resolved);
+            if (!loaded) {
+                log::error(loaded.error());
+                notDrawn_.push_back(cat(label, " (", loaded.error(), ")"));
+                objects_.push_back(std::move(meshes));
+                continue;
+            }
+            cached = files_.emplace(key, std::make_shared<const GltfModel>(std::move(*loaded))).first;
+        }
+        meshes.model = std::make_unique<GpuModel>(cached->second, *textures_, label);
+        if (!object.animation.clip.empty()) {
+            meshes.clip = cached->second->findClip(object.animation.clip);
+            meshes.speed = object.animation.speed;
+            if (!meshes.clip)
+                log::warning(label, ": ", object.gltf.path, " has no clip '", object.animation.clip,
+                             "'; drawn in its rest pose");
+        }
+        needsSkinning = needsSkinning || meshes.model->skinnedMeshes() > 0;
+        objects_.push_back(std::move(meshes));
+    }
+    // The skinning program exists only when the scene has something to skin.
+    if (needsSkinning) {
+        *skinning_ = GpuSkinning::create();
+        if (!skinning_->usable())
+            log::error("skinned objects are drawn in their bind pose: ", skinning_->error());
     }
 }
 
@@ -49,31 +94,94 @@ void SceneMeshes::setFrameUniforms(GLuint program, const Scene& scene, const Cam
             break;
         }
     }
-    glProgramUniformMatrix4fv(program, uniform_location::viewProjection, 1, GL_FALSE, glm::value_ptr(camera.viewProjection));
+    glProgramUniformMatrix4fv(program, uniform_location::viewProjection, 1, GL_FALSE,
+                              glm::value_ptr(camera.viewProjection));
     glProgramUniform3fv(program, uniform_location::lightDirection, 1, glm::value_ptr(toLight));
     glProgramUniform3fv(program, uniform_location::lightColor, 1, glm::value_ptr(lightColor));
     glProgramUniform3fv(program, uniform_location::ambient, 1, glm::value_ptr(scene.ambient));
     glProgramUniform3fv(program, uniform_location::cameraPosition, 1, glm::value_ptr(camera.position));
 }
 
+void SceneMeshes::pose(double seconds) const {
+    bool any = false;
+    clipTimes_.resize(objects_.size(), 0.0f);
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+        const ObjectMeshes& o = objects_[i];
+        if (!o.model || !o.clip) continue;
+        // Wrapped in double precision first: hours of play give the same pose as the first loop.
+        clipTimes_[i] = fx::clipTime(seconds * double(o.speed), o.clip->duration);
+        o.model->animate(o.clip, clipTimes_[i], skinning_.get());
+        if (o.model->skinnedMeshes() > 0) any = true;
+    }
+    if (any) ++skinningUpdates_;
+    posedAt_ = seconds;
+    posed_ = true;
+}
+
+void SceneMeshes::update(double seconds) {
+    pose(seconds);
+}
+
 void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds) const {
+    draw(program, scene, seconds, MeshDrawOptions{});
+}
+
+void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds,
+                       const MeshDrawOptions& options) const {
+    if (!posed_ || posedAt_ != seconds) pose(seconds);
     glUseProgram(program);
-    for (std::size_t i = 0; i < meshes_.size() && i < scene.objects.size(); ++i) {
-        if (meshes_[i].indexCount() == 0) continue;
+    GLuint white = textures_->white();
+    for (std::size_t i = 0; i < objects_.size() && i < scene.objects.size(); ++i) {
+        const ObjectMeshes& meshes = objects_[i];
         const SceneObject& object = scene.objects[i];
+        if (options.shadowCastersOnly && !object.castsShadows) continue;
         glm::mat4 model = modelAt(object, seconds);
-        glm::vec3 emitted = object.material.emitted();
+        if (meshes.model) {
+            if (!options.models) continue;
+            ModelDrawStyle style;
+            style.tint = object.material.baseColor;
+            style.addedEmissive = object.material.emitted();
+            style.setMaterial = options.setMaterial;
+            style.bindTextures = options.bindTextures;
+            style.skinned = options.skinned;
+            meshes.model->draw(program, model, style);
+            continue;
+        }
+        if (!options.primitives || meshes.primitive.indexCount() == 0) continue;
         glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-        glProgramUniform3fv(program, uniform_location::baseColor, 1, glm::value_ptr(object.material.baseColor));
-        glProgramUniform3fv(program, uniform_location::emissive, 1, glm::value_ptr(emitted));
-        meshes_[i].draw();
+        if (options.setMaterial) {
+            glm::vec3 emitted = object.material.emitted();
+            glProgramUniform3fv(program, uniform_location::baseColor, 1,
+                                glm::value_ptr(object.material.baseColor));
+            glProgramUniform3fv(program, uniform_location::emissive, 1, glm::value_ptr(emitted));
+        }
+        if (options.bindTextures) {
+            glBindTextureUnit(texture_unit::baseColor,
+                              meshes.baseColorTexture ? meshes.baseColorTexture : white);
+            glBindTextureUnit(texture_unit::emissive, white);
+        }
+        meshes.primitive.draw();
     }
 }
 
 std::size_t SceneMeshes::drawnObjects() const {
     std::size_t n = 0;
-    for (auto& m : meshes_) n += m.indexCount() > 0 ? 1 : 0;
+    for (const auto& o : objects_) n += (o.primitive.indexCount() > 0 || o.model) ? 1 : 0;
     return n;
+}
+
+std::size_t SceneMeshes::skinnedObjects() const {
+    std::size_t n = 0;
+    for (const auto& o : objects_) n += (o.model && o.model->skinnedMeshes() > 0) ? 1 : 0;
+    return n;
+}
+
+const GpuModel* SceneMeshes::model(std::size_t index) const {
+    return index < objects_.size() ? objects_[index].model.get() : nullptr;
+}
+
+float SceneMeshes::clipTime(std::size_t index) const {
+    return index < clipTimes_.size() ? clipTimes_[index] : 0.0f;
 }
 
 }  // namespace fx

@@ -1,8 +1,21 @@
 #pragma once
-// The GPU side of a scene's objects: one mesh per built-in primitive, and a draw call per object
-// with its model matrix and material in the uniforms every lit shader declares (shaders/common/
-// scene_uniforms.glsl). Objects that come from glTF files are drawn by the skinning code once it
-// exists; here they are counted and listed as not drawn.
+// The GPU side of a scene's objects: a mesh per built-in primitive, a GpuModel per glTF object, and a
+// draw call per mesh with its model matrix and material in the uniforms every lit shader declares
+// (shaders/common/scene_uniforms.glsl). Material textures are bound on units 0 (base colour) and 1
+// (emissive); untextured materials get plain white, so a shader may always multiply by them.
+//
+// Skinned glTF objects are posed on the GPU (GpuSkinning, transform feedback) at the time of the
+// frame, then drawn like static meshes: any program draws them in the current pose, including one
+// without skinning in it (lesson 01's lit program). A lesson that skins in its own vertex shader draws
+// with MeshDrawOptions::skinned = SkinnedDraw::source instead (shaders/effects/skinning/
+// skinned_scene.vert is such a shader).
+//
+//   SceneMeshes meshes(scene);
+//   meshes.update(frame.seconds);                      // animation + GPU skinning, once per frame
+//   SceneMeshes::setFrameUniforms(program, scene, camera);
+//   meshes.draw(program, scene, frame.seconds);        // poses first if update() was not called
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +23,9 @@
 
 #include "effects/camera_matrices.hpp"
 #include "effects/gpu_mesh.hpp"
+#include "effects/gpu_model.hpp"
+#include "effects/gpu_skinning.hpp"
+#include "effects/material_textures.hpp"
 #include "scene/scene.hpp"
 
 namespace fx {
@@ -26,25 +42,70 @@ inline constexpr GLint ambient = 12;
 inline constexpr GLint cameraPosition = 13;
 }  // namespace uniform_location
 
+// Which objects a draw covers and what it sets. The defaults draw everything with its material.
+struct MeshDrawOptions {
+    bool primitives = true;          // built-in shapes
+    bool models = true;              // glTF objects
+    bool shadowCastersOnly = false;  // skip objects with castsShadows = false
+    bool setMaterial = true;         // upload base colour and emissive (a depth-only program has neither)
+    bool bindTextures = true;
+    SkinnedDraw skinned = SkinnedDraw::posed;
+};
+
 class SceneMeshes {
 public:
-    SceneMeshes() = default;
+    SceneMeshes();
     explicit SceneMeshes(const Scene& scene);
+    ~SceneMeshes();
+    SceneMeshes(SceneMeshes&&) noexcept;
+    SceneMeshes& operator=(SceneMeshes&&) noexcept;
 
     // Model matrix of an object at a time (its transform plus its simple motion).
     static glm::mat4 modelAt(const SceneObject& object, double seconds);
 
     // Sets the camera and the first directional light (or a default one) on `program`.
     static void setFrameUniforms(GLuint program, const Scene& scene, const CameraMatrices& camera);
-    // Draws every primitive object with its material.
+
+    // Poses every animated glTF object at `seconds` of scene time (each clip loops; the time is wrapped
+    // by the clip's length before it reaches a float) and skins the skinned ones on the GPU.
+    void update(double seconds);
+    // Draws the objects with their materials. Poses first if the last update() was for another time.
     void draw(GLuint program, const Scene& scene, double seconds) const;
+    void draw(GLuint program, const Scene& scene, double seconds, const MeshDrawOptions& options) const;
 
     std::size_t drawnObjects() const;
+    // Objects that cannot be drawn, with the reason ("robot (models/robot.gltf: no such file)").
     const std::vector<std::string>& notDrawn() const { return notDrawn_; }
+    // glTF objects with a skinned mesh, and how many GPU skinning updates have run.
+    std::size_t skinnedObjects() const;
+    std::uint64_t skinningUpdates() const { return skinningUpdates_; }
+    // The GPU model of object `index` (nullptr for primitives and models that failed to load).
+    const GpuModel* model(std::size_t index) const;
+    // The clip time object `index` was last posed at.
+    float clipTime(std::size_t index) const;
+    const GpuSkinning& skinning() const { return *skinning_; }
+    const MaterialTextures& textures() const { return *textures_; }
 
 private:
-    std::vector<GpuMesh> meshes_;      // per object; empty mesh for objects not drawn here
+    struct ObjectMeshes {
+        GpuMesh primitive;
+        GLuint baseColorTexture = 0;
+        std::unique_ptr<GpuModel> model;
+        const AnimationClip* clip = nullptr;
+        float speed = 1.0f;
+    };
+    std::vector<ObjectMeshes> objects_;
     std::vector<std::string> notDrawn_;
+    std::map<std::string, std::shared_ptr<const GltfModel>> files_;
+    std::unique_ptr<MaterialTextures> textures_;
+    std::unique_ptr<GpuSkinning> skinning_;
+    // draw() is const but poses on demand: the pose is a cache of the time it was computed for.
+    mutable std::vector<float> clipTimes_;  // per object
+    mutable double posedAt_ = 0.0;
+    mutable bool posed_ = false;
+    mutable std::uint64_t skinningUpdates_ = 0;
+
+    void pose(double seconds) const;
 };
 
 }  // namespace fx

@@ -1,0 +1,93 @@
+#include "effects/material_textures.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cstring>
+
+// stb_image is compiled once in Debian's libstb (linked through fx_image); only its declarations are
+// included here, never the implementation macro.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wall"
+#pragma GCC diagnostic ignored "-Wextra"
+#pragma GCC diagnostic ignored "-Wpedantic"
+#pragma GCC diagnostic ignored "-Wshadow"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+#include "base/log.hpp"
+#include "image/png_file.hpp"
+
+namespace fx {
+
+GLuint MaterialTextures::upload(const std::string& key, const std::string& label, int width, int height,
+                                const unsigned char* rgba) {
+    int levels = 1;
+    while ((std::max(width, height) >> levels) > 0) ++levels;
+    gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height, levels, label);
+    glTextureSubImage2D(texture.name(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glGenerateTextureMipmap(texture.name());
+    glTextureParameteri(texture.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.name(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    GLuint name = texture.name();
+    textures_.emplace(key, std::move(texture));
+    return name;
+}
+
+GLuint MaterialTextures::white() {
+    if (!white_) {
+        white_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, 1, 1, 1, "material.white");
+        const unsigned char texel[4] = {255, 255, 255, 255};
+        glTextureSubImage2D(white_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    }
+    return white_.name();
+}
+
+GLuint MaterialTextures::file(const std::filesystem::path& path) {
+    std::string key = path.lexically_normal().string();
+    if (auto it = textures_.find(key); it != textures_.end()) return it->second.name();
+    if (std::find(failures_.begin(), failures_.end(), key) != failures_.end()) return white();
+    auto image = readPng(path);
+    if (!image) {
+        log::error(image.error(), "; drawn without the texture");
+        failures_.push_back(key);
+        return white();
+    }
+    // ByteImage rows run bottom-up, which is the order GL's first row (t = 0) expects.
+    return upload(key, path.filename().string(), image->width, image->height, image->texels.data());
+}
+
+GLuint MaterialTextures::encoded(const std::string& key, const std::vector<unsigned char>& bytes) {
+    if (auto it = textures_.find(key); it != textures_.end()) return it->second.name();
+    if (std::find(failures_.begin(), failures_.end(), key) != failures_.end()) return white();
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = bytes.size() <= static_cast<std::size_t>(INT_MAX)
+                                ? stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
+                                                        &height, &channels, 4)
+                                : nullptr;
+    if (!pixels) {
+        log::error(key, ": embedded image is not readable; drawn without the texture");
+        failures_.push_back(key);
+        return white();
+    }
+    // stb gives rows top-down; GL's first row is the bottom one.
+    std::vector<unsigned char> flipped(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                                       4);
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(flipped.data() + static_cast<std::size_t>(height - 1 - y) * row,
+                    pixels + static_cast<std::size_t>(y) * row, row);
+    stbi_image_free(pixels);
+    return upload(key, key, width, height, flipped.data());
+}
+
+std::uint64_t MaterialTextures::bytes() const {
+    std::uint64_t total = 0;
+    for (const auto& [key, texture] : textures_) {
+        for (int level = 0; level < texture.info().levels; ++level)
+            total += std::uint64_t(gl::mipSize(texture.width(), level)) *
+                     std::uint64_t(gl::mipSize(texture.height(), level)) * 4u;
+    }
+    return total;
+}
+
+}  // namespace fx
