@@ -228,11 +228,11 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
     }
     for (const std::string& knob : knobs) {
         ScatterPlot plot;
-        plot.title = cat(r.lesson, ": ", knob);
+        // The title says what was measured and how; the lesson is the folder the plot sits in.
+        plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
         bool byCopy = r.copyMs > 0;
-        std::string conditions = cat(r.width, "x", r.height, ", ", r.timingMethod);
-        plot.xLabel = byCopy ? cat("frame cost in full-screen copies (1 copy = ", shortNumber(r.copyMs), " ms; ", conditions, ")")
-                             : cat("frame time in ms (", conditions, ")");
+        plot.xLabel = byCopy ? cat("frame cost in full-screen copies (1 copy = ", shortNumber(r.copyMs), " ms)")
+                             : "frame time (ms)";
         plot.yLabel = "RMSE of the final image against the reference";
         for (auto& p : r.points) {
             if (p.knob != knob) continue;
