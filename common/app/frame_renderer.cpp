@@ -43,6 +43,11 @@ RenderedFrame FrameRenderer::render(Lesson& lesson, const FrameInfo& frame, cons
     // Inspected and captured textures go back to the pool only now.
     graph.releaseTextures();
     pool_.endFrame();
+    // Evicted textures free their names for reuse: framebuffers that refer to them must go too.
+    if (allocator_.destroyedCount() != destroyedSeen_) {
+        destroyedSeen_ = allocator_.destroyedCount();
+        executor_.forgetFramebuffers();
+    }
     return out;
 }
 

@@ -47,6 +47,7 @@ private:
     TexturePool pool_;
     PassTimer timer_;
     GlPassExecutor executor_;
+    std::uint64_t destroyedSeen_ = 0;
 };
 
 }  // namespace fx

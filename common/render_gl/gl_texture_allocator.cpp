@@ -13,7 +13,7 @@ NativeTexture GlTextureAllocator::create(const TextureSpec& spec, std::string_vi
     return name;
 }
 
-void GlTextureAllocator::destroy(NativeTexture texture) { textures_.erase(texture); }
+void GlTextureAllocator::destroy(NativeTexture texture) { destroyed_ += textures_.erase(texture); }
 
 void GlTextureAllocator::relabel(NativeTexture texture, std::string_view label) {
     auto it = textures_.find(texture);

@@ -18,8 +18,13 @@ public:
     // The GL facts of a texture this allocator made (size, levels, internal format, label).
     const gl::TextureInfo* info(NativeTexture texture) const;
 
+    // How many textures were deleted so far. GL may give a deleted texture's name to a new one, so
+    // whoever caches objects by texture name (framebuffers) drops them when this changes.
+    std::uint64_t destroyedCount() const { return destroyed_; }
+
 private:
     std::map<NativeTexture, gl::Texture> textures_;
+    std::uint64_t destroyed_ = 0;
 };
 
 }  // namespace fx

@@ -212,6 +212,12 @@ TEST_F(Skinning, PosedAndInShaderSkinningDrawTheSamePicture) {
         EXPECT_TRUE(fbo.checkComplete().ok());
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
         glViewport(0, 0, size, size);
+        // The GL tests share one context: set every state this draw depends on.
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
         glEnable(GL_DEPTH_TEST);
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -1,0 +1,241 @@
+#include "colour_matrix_lesson.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "base/log.hpp"
+#include "scene/scene_features.hpp"
+
+namespace lesson04 {
+
+using namespace fx;
+
+namespace {
+
+// The `channel_order` choices: output (r, g, b) takes these input channels.
+const std::array<std::array<int, 3>, 6> kChannelOrders{
+    {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+
+std::string vec3Text(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.4f, %.4f, %.4f)", double(v.x), double(v.y), double(v.z));
+    return text;
+}
+
+// The transform as text, one equation per output channel: "r' = 0.2126 r + 0.7152 g + 0.0722 b + 0".
+std::string equations(const ColourTransform& t) {
+    std::string out;
+    const char* names[] = {"r'", "g'", "b'"};
+    for (int c = 0; c < 3; ++c) {
+        glm::vec3 row = t.row(c);
+        char line[160];
+        std::snprintf(line, sizeof line, "%s = %.4f r + %.4f g + %.4f b + %.4f", names[c], double(row.x),
+                      double(row.y), double(row.z), double(t.offset[c]));
+        out += (c ? "; " : "") + std::string(line);
+    }
+    return out;
+}
+
+}  // namespace
+
+LessonInfo ColourMatrixLesson::info() const {
+    return {4, "colour-matrix", "Colour matrix", "scenes/04_colour_matrix.json"};
+}
+
+std::vector<LessonStep> ColourMatrixLesson::steps() const {
+    return {
+        {"Render into a float target; one output transform",
+         "The scene is drawn in linear light into scene.color (RGBA16F, values above 1 kept), a full-screen "
+         "pass multiplies every pixel by the identity matrix into colour.graded, and one output transform "
+         "encodes for the display at the very end. The scene shader applies no gamma: encoding there as well "
+         "would give the chapter's washed-out double gamma. Left of the divider (drag it) is the picture "
+         "before the matrix, right of it after: here they are the same."},
+        {"Grayscale: Rec.709 luma",
+         "Every output channel becomes 0.2126 r + 0.7152 g + 0.0722 b. The weights add up to 1, so white "
+         "stays white; green comes out the brightest grey and blue the darkest. Pure red gives 0.2126 in "
+         "every channel (127 on screen with the sRGB curve; 126 with the chapter's 1/2.2 power). If red came "
+         "out (0.2126, 0.7152, 0.0722), the matrix was uploaded transposed."},
+        {"Sepia: the chapter's matrix",
+         "Rows (0.346, 0.678, 0.151), (0.278, 0.546, 0.124), (0.196, 0.385, 0.089): a luma-like weighting "
+         "times a warm tint. The rows add up to 1.175, 0.948 and 0.670, so white becomes (1.175, 0.948, "
+         "0.670) and shows as (255, 249, 214): red clips."},
+        {"Beyond a 3x3: an affine transform",
+         "A matrix maps black to black (M * 0 = 0), so no 3x3 can make a negative, which must map black to "
+         "white. Adding an offset does it: rgb' = M rgb + o, with invert = (-I, 1). Pick `preset`: "
+         "invert_3x3 (-I alone) turns everything black, invert works; saturation, hue rotation and channel "
+         "swap are plain matrices, brightness needs the offset. Edit the matrix in the panel below; negative "
+         "results are clamped to 0."},
+    };
+}
+
+void ColourMatrixLesson::declareParams(ParamSet& params) {
+    params.addChoice("preset", &preset_,
+                     {"none", "grayscale", "sepia", "saturation", "hue_rotation", "channel_swap",
+                      "brightness_contrast", "invert", "invert_3x3", "custom"},
+                     "Step 4: the transform (custom: the matrix edited in the panel)");
+    params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)");
+    params.addFloat("saturation", &saturation_, -1.0f, 3.0f,
+                    "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours");
+    params.addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f,
+                    "Preset hue_rotation: degrees around the grey axis");
+    params.addChoice("channel_order", &channelOrder_, {"rgb", "rbg", "grb", "gbr", "brg", "bgr"},
+                     "Preset channel_swap: which input channels become r, g and b");
+    params.addFloat("brightness", &brightness_, -1.0f, 1.0f,
+                    "Preset brightness_contrast: added to every channel");
+    params.addFloat("contrast", &contrast_, 0.0f, 4.0f,
+                    "Preset brightness_contrast: scales the distance from mid grey (linear 0.18)");
+    params.addBool("split_view", &splitView_, "Show the picture before the matrix left of the divider");
+    params.addFloat("divider", &divider_, 0.0f, 1.0f,
+                    "Where the split view's divider is (drag it with the mouse)");
+}
+
+Status ColourMatrixLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    meshes_ = SceneMeshes(scene);
+    scenePass_ = HdrScenePass::create();
+    grading_ = ColourMatrixPass::create();
+    present_ = OutputTransformPass::create();
+    SceneFeatures sceneFeatures = features(scene);
+    calledFor_ = sceneFeatures.has(SceneFeature::colorMatrix);
+    notCalledReason_ = sceneFeatures.missingReason(SceneFeature::colorMatrix);
+    for (auto* p : programs()) {
+        if (!p->usable()) return Error{p->error()};
+    }
+    return Status::success();
+}
+
+void ColourMatrixLesson::shutdown() {
+    *this = ColourMatrixLesson();
+}
+
+std::vector<gl::ReloadableProgram*> ColourMatrixLesson::programs() {
+    return {scenePass_.reloadable(), grading_.reloadable(), present_.reloadable()};
+}
+
+ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
+    switch (preset) {
+        case GrayscalePreset:
+            return ColourTransform::grayscale();
+        case SepiaPreset:
+            return ColourTransform::sepia();
+        case Saturation:
+            return ColourTransform::saturation(saturation_);
+        case HueRotation:
+            return ColourTransform::hueRotation(hueDegrees_);
+        case ChannelSwap:
+            return ColourTransform::channelSwap(kChannelOrders[std::size_t(std::clamp(channelOrder_, 0, 5))]);
+        case BrightnessContrast:
+            return ColourTransform::brightnessContrast(brightness_, contrast_);
+        case Invert:
+            return ColourTransform::invert();
+        case Invert3x3:
+            return ColourTransform::negate();
+        case Custom:
+            return custom_;
+        default:
+            return ColourTransform::identity();
+    }
+}
+
+ColourTransform ColourMatrixLesson::selected(int step) const {
+    switch (step) {
+        case Identity:
+            return ColourTransform::identity();
+        case Grayscale:
+            return ColourTransform::grayscale();
+        case Sepia:
+            return ColourTransform::sepia();
+        default:
+            return presetTransform(preset_);
+    }
+}
+
+void ColourMatrixLesson::update(const FrameInfo& frame) {
+    // Dragging moves the divider: a press that starts on the picture (not on the overlay) and holds.
+    const Pointer& p = frame.pointer;
+    bool down = p.present && p.leftDown;
+    if (down && !wasDown_ && !p.overUi) dragging_ = true;
+    if (!down) dragging_ = false;
+    wasDown_ = down;
+    if (dragging_ && splitView_ && frame.size.width > 0) {
+        divider_ = std::clamp(p.x / float(frame.size.width), 0.0f, 1.0f);
+    }
+}
+
+void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    lastStep_ = frame.step;
+    // Exercise 02: the lesson chooses a transform value and hands it to the one setter.
+    grading_.setTransform(blendFromIdentity(selected(frame.step), amount_));
+
+    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    DeclaredPass graded = grading_.declare(graph, hdr.color);
+    TextureHandle shown = graded.output;
+    if (!calledFor_) {
+        graded.pass.notCalledFor(notCalledReason_);
+        shown = hdr.color;
+    }
+    // The split view is for people; a bench frame measures the effect alone.
+    std::optional<SplitView> split;
+    if (splitView_ && calledFor_ && !frame.benchmark) split = SplitView{hdr.color, divider_};
+    present_.declare(graph, shown, split);
+}
+
+void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
+    ColourTransform t = selected(frame.step);
+    bool editable = frame.step == Affine;
+    bool changed = false;
+    if (ImGui::BeginTable("matrix", 4, ImGuiTableFlags_SizingStretchSame)) {
+        const char* rows[] = {"r'", "g'", "b'"};
+        for (int r = 0; r < 3; ++r) {
+            ImGui::TableNextRow();
+            for (int c = 0; c < 4; ++c) {
+                ImGui::TableNextColumn();
+                ImGui::PushID(r * 4 + c);
+                float value = c < 3 ? t.matrix[c][r] : t.offset[r];
+                ImGui::SetNextItemWidth(-1.0f);
+                if (!editable) ImGui::BeginDisabled();
+                if (ImGui::DragFloat("##cell", &value, 0.005f, -4.0f, 4.0f, c < 3 ? "%.4f" : "+%.4f")) {
+                    if (c < 3) {
+                        t.matrix[c][r] = value;
+                    } else {
+                        t.offset[r] = value;
+                    }
+                    changed = true;
+                }
+                if (!editable) ImGui::EndDisabled();
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s: %s", rows[r], c < 3 ? "weight of r, g, b" : "offset");
+                ImGui::PopID();
+            }
+        }
+        ImGui::EndTable();
+    }
+    if (changed) {
+        custom_ = t;
+        preset_ = Custom;
+    }
+    ImGui::TextWrapped("rgb' = M rgb + o: M in the first three columns, o in the last (%s)",
+                       editable ? "edit any cell: the preset becomes custom" : "editable in step 4");
+    ImGui::TextUnformatted(t.linear() ? "no offset: a 3x3 matrix can do this"
+                                      : "has an offset: a 3x3 matrix cannot do this");
+    ColourTransform used = grading_.transform();
+    ImGui::Text("white -> %s", vec3Text(used.apply(glm::vec3(1.0f))).c_str());
+    ImGui::Text("red   -> %s", vec3Text(used.apply(glm::vec3(1, 0, 0))).c_str());
+    ImGui::Text("black -> %s", vec3Text(used.apply(glm::vec3(0.0f))).c_str());
+    if (!calledFor_) ImGui::TextWrapped("colour matrix not run: %s", notCalledReason_.c_str());
+}
+
+void ColourMatrixLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
+    ColourTransform used = grading_.transform();
+    facts.emplace_back("transform", equations(used));
+    facts.emplace_back("needsOffset", used.linear() ? "false" : "true");
+    facts.emplace_back("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))));
+    facts.emplace_back("redMapsTo", vec3Text(used.apply(glm::vec3(1, 0, 0))));
+    facts.emplace_back("blackMapsTo", vec3Text(used.apply(glm::vec3(0.0f))));
+    facts.emplace_back("step", std::to_string(lastStep_ + 1));
+}
+
+}  // namespace lesson04

@@ -1,0 +1,68 @@
+#pragma once
+// Lesson 04: colour matrix (seed 000, sections 3.4 and 3.5, hard cases 5 to 8, Exercise 02).
+#include "app/lesson.hpp"
+#include "effects/colour_matrix.hpp"
+#include "effects/hdr_scene_pass.hpp"
+#include "effects/output_transform_pass.hpp"
+#include "effects/scene_meshes.hpp"
+
+namespace lesson04 {
+
+class ColourMatrixLesson final : public fx::Lesson {
+public:
+    fx::LessonInfo info() const override;
+    std::vector<fx::LessonStep> steps() const override;
+    void declareParams(fx::ParamSet& params) override;
+    fx::Status init(const fx::Scene& scene) override;
+    void shutdown() override;
+    void update(const fx::FrameInfo& frame) override;
+    void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
+    std::vector<fx::gl::ReloadableProgram*> programs() override;
+    void drawPanel(const fx::FrameInfo& frame) override;
+    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+
+    enum Step { Identity, Grayscale, Sepia, Affine };
+    // The presets of step 4 (the `preset` parameter), in the order of its choices.
+    enum Preset {
+        None,
+        GrayscalePreset,
+        SepiaPreset,
+        Saturation,
+        HueRotation,
+        ChannelSwap,
+        BrightnessContrast,
+        Invert,
+        Invert3x3,
+        Custom,
+    };
+
+private:
+    // Parameters.
+    int preset_ = Invert;
+    float amount_ = 1.0f;
+    float saturation_ = 1.8f;
+    float hueDegrees_ = 120.0f;
+    int channelOrder_ = 3;  // "gbr"
+    float brightness_ = 0.1f;
+    float contrast_ = 1.4f;
+    bool splitView_ = true;
+    float divider_ = 0.5f;
+
+    const fx::Scene* scene_ = nullptr;
+    fx::SceneMeshes meshes_;
+    fx::HdrScenePass scenePass_;
+    fx::ColourMatrixPass grading_;
+    fx::OutputTransformPass present_;
+    fx::ColourTransform custom_;  // the matrix edited in the overlay (preset "custom")
+    bool calledFor_ = true;       // the scene asks for a colour matrix
+    std::string notCalledReason_;
+    int lastStep_ = 0;
+    bool dragging_ = false;
+    bool wasDown_ = false;
+
+    // The transform the step (and, in step 4, the preset) selects, before `amount`.
+    fx::ColourTransform selected(int step) const;
+    fx::ColourTransform presetTransform(int preset) const;
+};
+
+}  // namespace lesson04
