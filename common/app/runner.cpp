@@ -176,6 +176,11 @@ int run(Session& s, const std::string& exe) {
         std::unique_ptr<Overlay> overlay;
         if (!headless || o.overlayHeadless) overlay = std::make_unique<Overlay>(context->window());
         bool overlayVisible = headless ? o.overlayHeadless : o.overlay;
+        if (overlay && !o.inspect.empty()) {
+            // --inspect NAME with the overlay shows that texture in the inspector from the start.
+            overlay->inspector().setOpen(true);
+            overlay->inspector().select(o.inspect.front());
+        }
 
         RunFacts facts;
         facts.lesson = exe;
@@ -289,6 +294,11 @@ int run(Session& s, const std::string& exe) {
                 };
                 overlay->draw(model, extent.width, extent.height, delta);
             };
+            // A sweep asked for by the cost panel runs here, between frames, never inside one.
+            if (drawOverlay && overlay->costPanel().measurePending()) {
+                overlay->costPanel().runPending(
+                    [&] { return sweepKnobs(s.lesson, s.params, renderer, *context, {{}, 3, 0}, exe, s.step); });
+            }
             RenderedFrame rendered = renderer.render(s.lesson, frame, request, drawOverlayOnTop);
             lastReport = std::move(rendered.report);
             double passMs = rendered.passMs;

@@ -1,94 +1,80 @@
 #include "ui/overlay.hpp"
 
+#include <algorithm>
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
 #include "base/log.hpp"
+#include "gl/gl.hpp"
+#include "ui/gl_state_scope.hpp"
+#include "ui/lesson_panel.hpp"
+#include "ui/pass_table.hpp"
 
 namespace fx {
-
-Overlay::Overlay(GLFWwindow* window) : window_(window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // no imgui.ini beside the user's files
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 4.0f;
-    if (window_ && !ImGui_ImplGlfw_InitForOpenGL(window_, true)) {
-        log::error("the overlay could not attach to the window");
-        return;
-    }
-    ok_ = ImGui_ImplOpenGL3_Init("#version 450 core");
-    if (!ok_) log::error("the overlay's OpenGL renderer could not start");
-}
-
-Overlay::~Overlay() {
-    if (ok_) ImGui_ImplOpenGL3_Shutdown();
-    if (window_) ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-}
-
-bool Overlay::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
-bool Overlay::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
-
 namespace {
 
-void drawParams(ParamSet& params) {
-    for (const Param& p : params.all()) {
-        ImGui::PushID(p.name.c_str());
-        switch (p.type) {
-            case ParamType::Float: ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.min), float(p.max)); break;
-            case ParamType::Int: ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.min), int(p.max)); break;
-            case ParamType::Bool: ImGui::Checkbox(p.name.c_str(), p.boolValue); break;
-            case ParamType::Choice: {
-                const char* current = p.choices.empty() ? "" : p.choices[std::size_t(*p.intValue)].c_str();
-                if (ImGui::BeginCombo(p.name.c_str(), current)) {
-                    for (std::size_t i = 0; i < p.choices.size(); ++i) {
-                        if (ImGui::Selectable(p.choices[i].c_str(), int(i) == *p.intValue)) *p.intValue = int(i);
-                    }
-                    ImGui::EndCombo();
-                }
-                break;
-            }
-        }
-        if (ImGui::IsItemHovered() && !p.description.empty()) {
-            ImGui::SetTooltip("%s\n(%s%s)", p.description.c_str(), p.rangeText().c_str(),
-                              p.knob ? "; a quality knob" : "");
-        }
-        ImGui::PopID();
-    }
-}
+// Where the windows start (the user moves them after): the lesson top left, the frame under it,
+// the inspector on the right.
+struct Layout {
+    ImVec2 lessonPos, lessonSize, framePos, frameSize, inspectorPos, inspectorSize;
+};
 
-void drawPasses(const FrameReport& frame) {
-    if (!ImGui::BeginTable("passes", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
-    ImGui::TableSetupColumn("pass");
-    ImGui::TableSetupColumn("ms");
-    ImGui::TableSetupColumn("status");
-    ImGui::TableSetupColumn("left behind");
-    ImGui::TableHeadersRow();
-    for (const PassRecord& p : frame.passes) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        if (!p.executed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.55f, 0.55f, 1.0f));
-        ImGui::TextUnformatted(p.name.c_str());
-        ImGui::TableNextColumn();
-        if (p.timeMs) ImGui::Text("%.3f", *p.timeMs);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(p.executed ? "ran" : p.reason.c_str());
-        ImGui::TableNextColumn();
-        std::string left;
-        for (auto& s : p.stateLeft) left += (left.empty() ? "" : "; ") + s;
-        ImGui::TextUnformatted(left.c_str());
-        if (!p.executed) ImGui::PopStyleColor();
-    }
-    ImGui::EndTable();
+Layout layoutFor(int width, int height) {
+    const float w = float(width), h = float(height), m = 8.0f;
+    Layout l;
+    l.lessonPos = {m, m};
+    l.lessonSize = {std::min(370.0f, w - 2 * m),
+                    std::clamp(h * 0.56f, std::min(200.0f, h - 2 * m), h - 2 * m)};
+    const float frameTop = l.lessonPos.y + l.lessonSize.y + m;
+    l.framePos = {m, frameTop};
+    l.frameSize = {std::clamp(w * 0.5f, std::min(360.0f, w - 2 * m), 640.0f),
+                   std::max(h - frameTop - m, 120.0f)};
+    // Right of the frame window when there is room; never over the lesson window.
+    const float lessonRight = l.lessonPos.x + l.lessonSize.x + m;
+    const float inspectorLeft = std::min(
+        std::max(lessonRight, std::min(l.framePos.x + l.frameSize.x + m, w - m - 600.0f)), w - m - 200.0f);
+    l.inspectorPos = {std::max(inspectorLeft, m), m};
+    l.inspectorSize = {std::min(w - l.inspectorPos.x - m, 1100.0f), h - 2 * m};
+    return l;
 }
 
 }  // namespace
 
+Overlay::Overlay(GLFWwindow* window) : window_(window), started_(startImGui(window)) {
+    if (started_.renderer) inspector_ = std::make_unique<Inspector>();
+}
+
+Overlay::~Overlay() {
+    inspector_.reset();  // its GL objects go while the context is current
+    stopImGui(started_);
+}
+
+bool Overlay::wantsKeyboard() const {
+    return ImGui::GetIO().WantCaptureKeyboard;
+}
+bool Overlay::wantsMouse() const {
+    return ImGui::GetIO().WantCaptureMouse;
+}
+
+std::vector<std::string> Overlay::wantedTextures() const {
+    return inspector_ ? inspector_->wantedTextures() : std::vector<std::string>{};
+}
+
+void Overlay::showFramePanel(bool open, bool costTab) {
+    requestFrameOpen_ = open;
+    requestCostTab_ = costTab;
+}
+
 void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSeconds) {
-    if (!ok_ || width <= 0 || height <= 0) return;
+    if (!ok() || width <= 0 || height <= 0) return;
+    // A sweep renders frames of its own: it runs before this frame's ImGui frame starts, with the
+    // runner's framebuffer and viewport put back afterwards.
+    if (cost_.measurePending()) {
+        GlStateScope keep;
+        cost_.runPending(m.measureKnobs);
+    }
     ImGuiIO& io = ImGui::GetIO();
     ImGui_ImplOpenGL3_NewFrame();
     if (window_) {
@@ -98,58 +84,43 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;
     }
     ImGui::NewFrame();
+    const Layout layout = layoutFor(width, height);
+    {
+        // The inspector draws its pictures into its own targets while the windows are laid out.
+        GlStateScope keep;
 
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin(m.title.c_str());
-    if (m.step && !m.steps.empty()) {
-        int& step = *m.step;
-        ImGui::Text("Step %d of %d", step + 1, int(m.steps.size()));
-        ImGui::SameLine();
-        if (ImGui::ArrowButton("prev", ImGuiDir_Left) && step > 0) --step;
-        ImGui::SameLine();
-        if (ImGui::ArrowButton("next", ImGuiDir_Right) && step + 1 < int(m.steps.size())) ++step;
-        const OverlayStep& s = m.steps[std::size_t(step)];
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1.0f), "%s", s.title.c_str());
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(s.text.c_str());
-        ImGui::PopTextWrapPos();
-    }
-    if (!m.shaderErrors.empty()) {
-        ImGui::Separator();
-        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "Shader errors (the last good program keeps running):");
-        for (auto& e : m.shaderErrors) ImGui::TextWrapped("%s", e.c_str());
-    }
-    if (m.params && !m.params->all().empty() && ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-        drawParams(*m.params);
-        if (ImGui::Button("Reset")) m.params->resetAll();
-        if (m.onSavePreset) {
-            ImGui::SameLine();
-            if (ImGui::Button("Save preset")) m.onSavePreset();
-        }
-        if (m.onLoadPreset) {
-            ImGui::SameLine();
-            if (ImGui::Button("Load preset")) m.onLoadPreset();
-        }
-    }
-    if (m.lessonPanel && ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) m.lessonPanel();
-    if (m.frame && ImGui::CollapsingHeader("Passes", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Text("frame %.2f ms, timing: %s", m.frameMs, m.timing.c_str());
-        drawPasses(*m.frame);
-        ImGui::Text("textures: %.2f MiB live, %.2f MiB peak", double(m.frame->pool.liveBytes) / 1048576.0,
-                    double(m.frame->pool.peakBytes) / 1048576.0);
-    }
-    ImGui::Separator();
-    ImGui::TextDisabled("%s", m.renderer.c_str());
-    if (m.glErrors > 0) ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "GL errors: %lld", static_cast<long long>(m.glErrors));
-    if (m.glExpectedErrors > 0) {
-        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "GL errors this step shows on purpose: %lld",
-                           static_cast<long long>(m.glExpectedErrors));
-    }
-    if (!m.status.empty()) ImGui::TextDisabled("%s", m.status.c_str());
-    ImGui::TextDisabled("F1 overlay  F5 reload  F12 screenshot  arrows: steps");
-    ImGui::End();
+        ImGui::SetNextWindowPos(layout.lessonPos, ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(layout.lessonSize, ImGuiCond_FirstUseEver);
+        ImGui::Begin(m.title.empty() ? "fxlab" : m.title.c_str());
+        drawLessonWindowContents(m);
+        ImGui::End();
 
+        ImGui::SetNextWindowPos(layout.framePos, ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(layout.frameSize, ImGuiCond_FirstUseEver);
+        if (requestFrameOpen_) ImGui::SetNextWindowCollapsed(!*requestFrameOpen_, ImGuiCond_Always);
+        if (ImGui::Begin("Frame: passes and cost") && ImGui::BeginTabBar("frame tabs")) {
+            const bool selectCost = requestFrameOpen_ && requestCostTab_;
+            if (ImGui::BeginTabItem("Passes")) {
+                if (m.frame) {
+                    drawPassTable(*m.frame);
+                } else {
+                    ImGui::TextDisabled("no frame yet");
+                }
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Cost of quality", nullptr,
+                                    selectCost ? ImGuiTabItemFlags_SetSelected : 0)) {
+                cost_.draw(m.measureKnobs);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        requestFrameOpen_.reset();
+        ImGui::End();
+
+        InspectorFrame frame{m.graph, m.frame, m.cameraNear, m.cameraFar, deltaSeconds};
+        inspector_->draw(frame, layout.inspectorPos, layout.inspectorSize);
+    }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

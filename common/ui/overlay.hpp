@@ -1,47 +1,25 @@
 #pragma once
-// The Dear ImGui overlay: the lesson's steps (left/right arrows move between them), its
-// parameters, the frame's passes with their times and reasons, shader errors, and the lesson's own
-// panel. In a window it follows GLFW input; headless (--overlay) it draws at the capture's size.
-#include <functional>
+// The Dear ImGui overlay, in three windows:
+//   - the lesson: its steps (left/right arrows move between them), parameters, shader errors and the
+//     lesson's own panel (lesson_panel);
+//   - the frame: every pass with its time, share, reason and leaked state (pass_table), and the cost
+//     of the quality knobs (cost_panel);
+//   - the inspector: every texture of the frame, one of them large with its chain and a pixel probe
+//     (inspector).
+// In a window it follows GLFW input; headless (--overlay) it draws at the capture's size. See
+// docs/overlay.md.
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "base/params.hpp"
-#include "render/frame_graph.hpp"
-#include "render/frame_report.hpp"
-#include "render/quality_sweep.hpp"
+#include "ui/cost_panel.hpp"
+#include "ui/imgui_backend.hpp"
+#include "ui/inspector.hpp"
+#include "ui/overlay_model.hpp"
 
 struct GLFWwindow;
 
 namespace fx {
-
-struct OverlayStep {
-    std::string title, text;
-};
-
-struct OverlayModel {
-    std::string title;
-    std::vector<OverlayStep> steps;
-    int* step = nullptr;  // 0-based, the overlay may change it
-    ParamSet* params = nullptr;
-    const FrameReport* frame = nullptr;
-    // The frame's graph while its inspected textures are still held (the inspector reads them).
-    const FrameGraph* graph = nullptr;
-    std::string timing;        // method and why
-    std::string renderer;
-    double frameMs = 0;
-    std::int64_t glErrors = 0;
-    std::int64_t glExpectedErrors = 0;
-    std::vector<std::string> shaderErrors;  // shown until fixed (the last good program keeps running)
-    std::string status;                     // one line: "saved out/screenshot-3.png", "reloaded shaders"
-    std::function<void()> lessonPanel;
-    std::function<void()> onSavePreset, onLoadPreset;
-    // The camera's planes, for showing depth textures linearised.
-    float cameraNear = 0.1f, cameraFar = 100.0f;
-    // Runs the quality-knob sweep in the app (as ./fxlab bench does) and returns its points; empty
-    // when the lesson has no knobs.
-    std::function<SweepResult()> measureKnobs;
-};
 
 class Overlay {
 public:
@@ -51,17 +29,28 @@ public:
     Overlay(const Overlay&) = delete;
     Overlay& operator=(const Overlay&) = delete;
 
-    bool ok() const { return ok_; }
+    bool ok() const { return started_.renderer; }
+    // Draws into the framebuffer bound now, at width x height. GL state is left as it was found.
     void draw(const OverlayModel& model, int width, int height, double deltaSeconds);
     bool wantsKeyboard() const;
     // Names of the textures the overlay wants to show next frame; the runner marks them inspected,
     // which keeps them (and the passes that make them) alive.
-    std::vector<std::string> wantedTextures() const { return {}; }
+    std::vector<std::string> wantedTextures() const;
     bool wantsMouse() const;
+
+    // The panels, for tests, tools and documentation pictures (what a user does with the mouse).
+    Inspector& inspector() { return *inspector_; }
+    CostPanel& costPanel() { return cost_; }
+    // Opens or collapses the frame window (passes and cost) and picks its tab.
+    void showFramePanel(bool open, bool costTab = false);
 
 private:
     GLFWwindow* window_;
-    bool ok_ = false;
+    ImGuiBackends started_;
+    std::unique_ptr<Inspector> inspector_;
+    CostPanel cost_;
+    std::optional<bool> requestFrameOpen_;
+    bool requestCostTab_ = false;
 };
 
 }  // namespace fx

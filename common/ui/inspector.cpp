@@ -1,0 +1,330 @@
+#include "ui/inspector.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "base/log.hpp"
+#include "ui/texture_saver.hpp"
+#include "ui/ui_style.hpp"
+#include "ui/view_controls.hpp"
+
+namespace fx {
+namespace {
+
+constexpr std::size_t kThumbnailsPerFrame = 2;  // textures kept alive in turn to refresh thumbnails
+constexpr float kListWidth = 250.0f;
+constexpr float kStripTileHeight = 64.0f;
+
+}  // namespace
+
+Inspector::Inspector() = default;
+
+void Inspector::setOpen(bool open) {
+    requestOpen_ = open;
+    visible_ = open;
+}
+
+void Inspector::select(const std::string& name) {
+    if (name == selected_) return;
+    selected_ = name;
+    probe_.unpin();
+    hovered_.reset();
+    analyser_.invalidate();
+    view_.fit();
+}
+
+ViewSettings& Inspector::settingsFor(const std::string& name, const gl::TextureInfo& info) {
+    auto it = settings_.find(name);
+    if (it == settings_.end() || it->second.format != info.internalFormat) {
+        it = settings_.insert_or_assign(name, Kept{info.internalFormat, defaultViewSettings(info)}).first;
+    }
+    ViewSettings& s = it->second.settings;
+    s.level = std::clamp(s.level, 0, std::max(info.levels, 1) - 1);
+    return s;
+}
+
+TextureSource Inspector::lookup(const std::string& name) const {
+    if (!graph_) return {};
+    auto handle = graph_->findTexture(name);
+    if (!handle) return {};
+    return textureSource(graph_->texture(*handle));
+}
+
+std::vector<std::string> Inspector::wantedTextures() const {
+    std::vector<std::string> names;
+    if (!visible_) {
+        asked_.clear();
+        return names;
+    }
+    auto add = [&](const std::string& name) {
+        if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+    };
+    add(selected_);
+    if (chain_.kind == TextureChain::Kind::Named) {
+        for (const ChainMember& m : chain_.members) add(m.texture);
+    }
+    for (std::size_t i = 0; i < std::min(kThumbnailsPerFrame, candidates_.size()); ++i) {
+        add(candidates_[nextThumbnail_++ % candidates_.size()]);
+    }
+    asked_ = std::set<std::string>(names.begin(), names.end());
+    return names;
+}
+
+void Inspector::refreshThumbnails(const InspectorFrame& frame) {
+    std::set<std::string> names;
+    candidates_.clear();
+    bool fittedOne = false;
+    for (const TextureListEntry& e : listTextures(*frame.report)) {
+        const TextureRecord& t = *e.texture;
+        names.insert(t.name);
+        if (e.presented) continue;
+        if (t.origin == TextureOrigin::Transient && t.allocated && !asked_.contains(t.name)) {
+            candidates_.push_back(t.name);
+        }
+        TextureSource source = lookup(t.name);
+        if (!source.alive()) continue;
+        ViewSettings& s = settingsFor(t.name, source.info);
+        s.cameraNear = frame.cameraNear;
+        s.cameraFar = frame.cameraFar;
+        // Depth needs its range before a thumbnail says anything; one texture a frame is read back
+        // for that (once per texture: the fitted range is kept).
+        if (s.autoFitPending && !fittedOne && t.name != selected_) {
+            TextureAnalysis a = analyseImage(gl::readTexture(source.native, source.info, 0),
+                                             showsLinearDepth(s, source.info), s.cameraNear, s.cameraFar, 8);
+            if (autoFitRange(s, a)) s.autoFitPending = false;
+            fittedOne = true;
+        }
+        thumbnails_.refresh(display_, source, s, TextureList::kThumbnailWidth, TextureList::kThumbnailHeight,
+                            frameIndex_);
+    }
+    thumbnails_.keepOnly(names);
+}
+
+void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) {
+    graph_ = frame.graph;
+    ImGui::SetNextWindowPos(position, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+    if (requestOpen_) {
+        ImGui::SetNextWindowCollapsed(!*requestOpen_, ImGuiCond_Always);
+        requestOpen_.reset();
+    } else {
+        ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    }
+    visible_ = ImGui::Begin("Inspector");
+    if (!visible_) {
+        ImGui::End();
+        graph_ = nullptr;
+        return;
+    }
+    ++frameIndex_;
+    if (!frame.report) {
+        ImGui::TextDisabled("no frame yet");
+        ImGui::End();
+        graph_ = nullptr;
+        return;
+    }
+    refreshThumbnails(frame);
+
+    const float listWidth = std::min(kListWidth, std::max(160.0f, ImGui::GetContentRegionAvail().x * 0.36f));
+    ImGui::BeginChild("list", ImVec2(listWidth, 0), false);
+    if (auto clicked = list_.draw(*frame.report, thumbnails_, selected_, frameIndex_)) select(*clicked);
+    ImGui::EndChild();
+    ImGui::SameLine();
+    ImGui::BeginChild("detail", ImVec2(0, 0), false,
+                      ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar);
+    drawDetail(frame);
+    ImGui::EndChild();
+    ImGui::End();
+    graph_ = nullptr;
+}
+
+Result<std::filesystem::path> Inspector::saveSelected(bool exactFloats) {
+    TextureSource source = lookup(selected_);
+    if (selected_.empty()) return Error{"no texture selected"};
+    ViewSettings& s = settingsFor(selected_, source.info);
+    auto path = inspectorFilePath(saveFolder_, selected_, s.level, exactFloats ? ".pfm" : ".png");
+    Status saved = exactFloats ? saveExactPfm(source, s.level, path) : saveViewPng(display_, source, s, path);
+    if (!saved) return Error{saved.error()};
+    return path;
+}
+
+void Inspector::drawDetail(const InspectorFrame& frame) {
+    if (!display_.ok()) {
+        ImGui::TextColored(ui_style::kError, "The view shader did not build:");
+        ImGui::TextWrapped("%s", display_.error().c_str());
+        return;
+    }
+    const TextureRecord* record = selected_.empty() ? nullptr : frame.report->findTexture(selected_);
+    if (!record) {
+        chain_ = {};
+        ImGui::TextDisabled(
+            selected_.empty() ? "Select a texture in the list." : "'%s' is not in this frame.",
+            selected_.c_str());
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled(
+            "Selecting a texture keeps it, and the passes that make it, alive from the next frame on. "
+            "Wheel: zoom, drag: pan, double-click: fit, right click: pin the probe.");
+        ImGui::PopTextWrapPos();
+        return;
+    }
+    chain_ = findChain(*frame.report, selected_);
+    TextureSource source = lookup(selected_);
+
+    // Header: name and facts.
+    ImGui::TextColored(ui_style::kHeading, "%s", selected_.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", describeTexture(*record).c_str());
+    if (!source.alive()) {
+        ImGui::PushTextWrapPos(0.0f);
+        if (record->origin == TextureOrigin::PresentedOutput) {
+            ImGui::TextDisabled(
+                "The presented output is the window's framebuffer: it is the picture behind "
+                "this overlay and cannot be sampled.");
+        } else if (!record->reason.empty()) {
+            ImGui::TextColored(ui_style::kWarning, "Not made this frame: %s", record->reason.c_str());
+        } else {
+            ImGui::TextDisabled("Not alive yet: it is kept from the next frame on.");
+        }
+        ImGui::PopTextWrapPos();
+        return;
+    }
+
+    ViewSettings& s = settingsFor(selected_, source.info);
+    s.cameraNear = frame.cameraNear;
+    s.cameraFar = frame.cameraFar;
+    if (analyser_.update(source, s, frame.deltaSeconds) && s.autoFitPending) {
+        autoFitRange(s, analyser_.analysis());
+        s.autoFitPending = false;
+    }
+    drawViewControls(s, source, analysis());
+    ui_style::continueRow(170.0f, 16.0f);
+    drawSaveButtons();
+    if (const TextureAnalysis* a = analysis())
+        drawHistogram(*a, s, ImVec2(ImGui::GetContentRegionAvail().x, 44.0f));
+
+    // The rest of the height: the view, the probe, the strip.
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const bool hasStrip = chain_.kind != TextureChain::Kind::None;
+    const std::size_t chainRows = hasStrip ? std::min<std::size_t>(chain_.members.size(), 4) : 0;
+    const float stripHeight = hasStrip ? kStripTileHeight + 3.0f * line + 18.0f : 0.0f;
+    const float probeHeight = 2.0f * line + (hasStrip ? float(chainRows + 1) * line + 10.0f : 0.0f);
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    ImVec2 viewSize(avail.x, std::max(avail.y - stripHeight - probeHeight, 64.0f));
+
+    std::optional<PixelProbe::Target> target = probe_.target(hovered_);
+    auto inView = [&](const PixelProbe::Target& t) { return t.texture.empty() || t.texture == selected_; };
+    std::optional<PixelProbe::Target> mark;
+    if (target && inView(*target)) mark = target;
+    ZoomableView::Interaction viewed = view_.draw(display_, source, s, viewSize, mark);
+    hovered_ = viewed.hovered;
+    if (viewed.pinRequested) {
+        if (probe_.pinned()) {
+            probe_.unpin();
+        } else {
+            probe_.pin(*viewed.hovered);
+        }
+    }
+
+    // The probe: exact values read back from the texture (not from the picture above).
+    target = probe_.target(hovered_);
+    probeSample_ = {};
+    chainSamples_.clear();
+    TextureSource anchor = source;
+    if (target) {
+        if (!inView(*target)) anchor = lookup(target->texture);
+        probeSample_ = probeTexel(anchor, target->level, target->x, target->y);
+        probeSample_.label = inView(*target) ? selected_ : target->texture;
+        if (hasStrip) {
+            chainSamples_ = probeChain(
+                chain_, [this](const std::string& n) { return lookup(n); }, target->x, target->y,
+                anchor.levelSize(target->level));
+        }
+    }
+    PixelProbe::draw(probeSample_, anchor, showsLinearDepth(s, anchor.info), s.cameraNear, s.cameraFar,
+                     probe_.pinned());
+    if (target && !inView(*target)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("in %s", target->texture.c_str());
+    }
+    if (hasStrip) drawChainProbe(float(chainRows + 1) * line + 4.0f);
+
+    if (hasStrip) {
+        ImGui::TextDisabled("%s: click one to view it", chain_.title.c_str());
+        ImGui::BeginChild("strip", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+        std::optional<std::size_t> current;
+        for (std::size_t i = 0; i < chain_.members.size(); ++i) {
+            const ChainMember& m = chain_.members[i];
+            if (m.texture == selected_ && (chain_.kind == TextureChain::Kind::Named || m.level == s.level))
+                current = i;
+        }
+        ChainStrip::Interaction stripped = strip_.draw(
+            display_, chain_, [this](const std::string& n) { return lookup(n); }, s, chainSamples_, current,
+            kStripTileHeight);
+        if (stripped.hovered) hovered_ = stripped.hovered;
+        if (stripped.clicked) {
+            const ChainMember& m = chain_.members[*stripped.clicked];
+            if (chain_.kind == TextureChain::Kind::MipLevels) {
+                s.level = m.level;
+            } else {
+                select(m.texture);
+            }
+        }
+        ImGui::EndChild();
+    }
+}
+
+void Inspector::drawSaveButtons() {
+    for (bool exact : {false, true}) {
+        if (exact) ImGui::SameLine();
+        if (ImGui::Button(exact ? "save PFM" : "save PNG")) {
+            auto saved = saveSelected(exact);
+            status_ = saved ? cat("saved ", saved->string()) : saved.error();
+            log::info(status_);
+        }
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip(exact
+                                  ? "the level's exact stored floats (PFM; alpha in a second file)\ninto %s/"
+                                  : "the level as shown, one pixel per texel (PNG)\ninto %s/",
+                              saveFolder_.string().c_str());
+        }
+    }
+    if (!status_.empty()) {
+        ui_style::continueRow(ImGui::CalcTextSize(status_.c_str()).x);
+        ImGui::TextDisabled("%s", status_.c_str());
+    }
+}
+
+void Inspector::drawChainProbe(float height) {
+    // The same place in every member of the chain, exactly as stored.
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
+    if (!ImGui::BeginTable("chain probe", 6, flags, ImVec2(0, height))) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("same place in", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    ImGui::TableSetupColumn("texel", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+    for (const char* c : {"R", "G", "B", "A"})
+        ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < chain_.members.size(); ++i) {
+        const ChainMember& m = chain_.members[i];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(m.label.c_str());
+        const ProbeSample* sample =
+            i < chainSamples_.size() && chainSamples_[i].channels > 0 ? &chainSamples_[i] : nullptr;
+        ImGui::TableNextColumn();
+        if (!sample) {
+            ImGui::TextDisabled("-");
+            continue;
+        }
+        ImGui::Text("%d, %d", sample->x, sample->y);
+        for (int c = 0; c < 4; ++c) {
+            ImGui::TableNextColumn();
+            if (c < sample->channels) ImGui::TextUnformatted(exactFloatText(sample->texel.value[c]).c_str());
+        }
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace fx

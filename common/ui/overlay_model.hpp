@@ -1,0 +1,44 @@
+#pragma once
+// What the runner hands the overlay every frame: the lesson's steps and parameters, the frame's
+// graph and report, the camera's planes, and the actions only the runner can perform.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "base/params.hpp"
+#include "render/frame_graph.hpp"
+#include "render/frame_report.hpp"
+#include "render/quality_sweep.hpp"
+
+namespace fx {
+
+struct OverlayStep {
+    std::string title, text;
+};
+
+struct OverlayModel {
+    std::string title;
+    std::vector<OverlayStep> steps;
+    int* step = nullptr;  // 0-based, the overlay may change it
+    ParamSet* params = nullptr;
+    const FrameReport* frame = nullptr;
+    // The frame's graph while its inspected textures are still held (the inspector reads them).
+    const FrameGraph* graph = nullptr;
+    std::string timing;  // method and why
+    std::string renderer;
+    double frameMs = 0;
+    std::int64_t glErrors = 0;
+    std::int64_t glExpectedErrors = 0;
+    std::vector<std::string> shaderErrors;  // shown until fixed (the last good program keeps running)
+    std::string status;                     // one line: "saved out/screenshot-3.png", "reloaded shaders"
+    std::function<void()> lessonPanel;
+    std::function<void()> onSavePreset, onLoadPreset;
+    // The camera's planes, for showing depth textures linearised.
+    float cameraNear = 0.1f, cameraFar = 100.0f;
+    // Runs the quality-knob sweep in the app (as ./fxlab bench does) and returns its points; empty
+    // when the lesson has no knobs.
+    std::function<SweepResult()> measureKnobs;
+};
+
+}  // namespace fx

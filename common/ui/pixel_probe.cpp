@@ -1,0 +1,90 @@
+#include "ui/pixel_probe.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include <imgui.h>
+
+#include "base/log.hpp"
+#include "ui/texture_analysis.hpp"
+#include "ui/ui_style.hpp"
+
+namespace fx {
+
+ProbeSample probeTexel(const TextureSource& source, int level, int x, int y) {
+    ProbeSample s;
+    s.level = level;
+    s.x = x;
+    s.y = y;
+    s.size = source.levelSize(level);
+    if (!source.alive() || level < 0 || level >= source.levels()) return s;
+    if (x < 0 || y < 0 || x >= s.size.width || y >= s.size.height) return s;
+    s.texel = gl::readTexel(source.native, source.info, level, x, y);
+    s.channels = gl::channelCount(source.info.internalFormat);
+    return s;
+}
+
+std::vector<ProbeSample> probeChain(const TextureChain& chain, const SourceLookup& lookup, int x, int y,
+                                    Size2D from) {
+    std::vector<ProbeSample> samples;
+    for (const ChainMember& m : chain.members) {
+        int mx = mapTexelCoordinate(x, from.width, m.size.width);
+        int my = mapTexelCoordinate(y, from.height, m.size.height);
+        ProbeSample s = probeTexel(lookup(m.texture), m.level, mx, my);
+        s.label = m.label;
+        s.size = m.size;
+        samples.push_back(std::move(s));
+    }
+    return samples;
+}
+
+std::string exactFloatText(float value) {
+    if (std::isnan(value)) return std::signbit(value) ? "-nan" : "nan";
+    if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
+    char text[48];
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+        if (std::strtof(text, nullptr) == value) break;
+    }
+    return text;
+}
+
+std::string storedValueText(float value, GLenum internalFormat) {
+    std::string text = exactFloatText(value);
+    bool unorm8 = internalFormat == GL_RGBA8 || internalFormat == GL_R8 || internalFormat == GL_RG8 ||
+                  internalFormat == GL_RGB8 || internalFormat == GL_SRGB8_ALPHA8;
+    if (unorm8 && internalFormat != GL_SRGB8_ALPHA8 && std::isfinite(value)) {
+        text += cat(" (", static_cast<int>(std::lround(value * 255.0f)), "/255)");
+    }
+    return text;
+}
+
+void PixelProbe::draw(const ProbeSample& sample, const TextureSource& source, bool linearDepth,
+                      float cameraNear, float cameraFar, bool pinned) {
+    if (sample.channels == 0) {
+        ImGui::TextDisabled("probe: hover the view (right click pins a texel)");
+        return;
+    }
+    ImGui::Text("texel (%d, %d) of mip %d, %dx%d%s", sample.x, sample.y, sample.level, sample.size.width,
+                sample.size.height, pinned ? "  [pinned: right click to release]" : "");
+    static const char* names[4] = {"R", "G", "B", "A"};
+    const bool depth = gl::isDepthFormat(source.info.internalFormat);
+    for (int c = 0; c < sample.channels; ++c) {
+        if (c > 0) ImGui::SameLine(0.0f, 14.0f);
+        ImGui::TextColored(depth ? ui_style::kMuted : ui_style::channelColour(c), "%s",
+                           depth ? "depth" : names[c]);
+        ImGui::SameLine();
+        float v = sample.texel.value[c];
+        ImGui::TextUnformatted(storedValueText(v, source.info.internalFormat).c_str());
+    }
+    if (depth && linearDepth && std::isfinite(sample.texel.value[0])) {
+        ImGui::SameLine(0.0f, 14.0f);
+        ImGui::TextDisabled(
+            "= %s from the camera (near %g, far %g)",
+            exactFloatText(linearizeDepth(sample.texel.value[0], cameraNear, cameraFar)).c_str(),
+            double(cameraNear), double(cameraFar));
+    }
+}
+
+}  // namespace fx

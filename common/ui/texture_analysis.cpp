@@ -1,0 +1,149 @@
+#include "ui/texture_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gl/readback.hpp"
+
+namespace fx {
+
+float linearizeDepth(float depth, float cameraNear, float cameraFar) {
+    float z = depth * 2.0f - 1.0f;
+    return 2.0f * cameraNear * cameraFar /
+           std::max(cameraFar + cameraNear - z * (cameraFar - cameraNear), 1e-30f);
+}
+
+double ValueHistogram::fraction(double value) const {
+    if (logarithmic) {
+        if (!(value > low)) return 0.0;
+        return std::log(value / low) / std::log(double(high) / low);
+    }
+    return high > low ? (value - low) / (double(high) - low) : 0.0;
+}
+
+bool TextureAnalysis::rangeOf(const std::array<bool, 4>& on, float& low, float& high) const {
+    bool any = false;
+    bool noneOn = true;
+    for (int c = 0; c < channels && c < 4; ++c) noneOn = noneOn && !on[std::size_t(c)];
+    for (int c = 0; c < channels && c < int(stats.size()); ++c) {
+        if (!noneOn && !on[std::size_t(c)]) continue;
+        const ChannelStats& s = stats[std::size_t(c)];
+        if (s.finiteCount == 0) continue;
+        low = any ? std::min(low, s.min) : s.min;
+        high = any ? std::max(high, s.max) : s.max;
+        any = true;
+    }
+    return any;
+}
+
+TextureAnalysis analyseImage(const FloatImage& image, bool linearDepth, float cameraNear, float cameraFar,
+                             int bins) {
+    TextureAnalysis a;
+    a.size = {image.width, image.height};
+    a.channels = image.channels;
+    a.linearDepth = linearDepth;
+    if (image.empty()) return a;
+
+    const std::size_t texels = image.texelCount();
+    const auto channels = static_cast<std::size_t>(image.channels);
+    for (std::size_t t = 0; t < texels; ++t) {
+        bool nan = false, inf = false, negative = false;
+        for (std::size_t c = 0; c < channels; ++c) {
+            float v = image.texels[t * channels + c];
+            nan = nan || std::isnan(v);
+            inf = inf || std::isinf(v);
+            negative = negative || (v < 0.0f && !std::isinf(v));
+        }
+        if (nan) {
+            ++a.nanTexels;
+        } else if (inf) {
+            ++a.infTexels;
+        } else if (negative) {
+            ++a.negativeTexels;
+        }
+    }
+
+    // The values as the view shows them.
+    const FloatImage* shown = &image;
+    FloatImage distances;
+    if (linearDepth) {
+        distances = image;
+        for (std::size_t t = 0; t < texels; ++t) {
+            float& d = distances.texels[t * channels];
+            if (d >= 1.0f) {
+                // The sky: counted apart; +Inf keeps it out of the finite range and the bins.
+                ++a.farPlaneTexels;
+                d = std::numeric_limits<float>::infinity();
+            } else if (std::isfinite(d)) {
+                d = linearizeDepth(d, cameraNear, cameraFar);
+            }
+        }
+        shown = &distances;
+    }
+    a.stats = computeStats(*shown);
+
+    ValueHistogram& h = a.histogram;
+    h.channels = image.channels;
+    bool any = false;
+    double sum = 0.0;
+    std::int64_t count = 0;
+    float smallestPositive = std::numeric_limits<float>::infinity();
+    for (std::size_t c = 0; c < a.stats.size(); ++c) {
+        const ChannelStats& s = a.stats[c];
+        if (s.finiteCount == 0) continue;
+        h.low = any ? std::min(h.low, s.min) : s.min;
+        h.high = any ? std::max(h.high, s.max) : s.max;
+        sum += s.mean * double(s.finiteCount);
+        count += s.finiteCount;
+        any = true;
+    }
+    if (!any) {
+        h.low = 0.0f;
+        h.high = 1.0f;
+    }
+    for (float v : shown->texels) {
+        if (v > 0.0f && std::isfinite(v)) smallestPositive = std::min(smallestPositive, v);
+    }
+    // Light with a long bright tail: bins in equal ratios, from a floor 5 decades below the top.
+    const double mean = count > 0 ? sum / double(count) : 0.0;
+    if (!linearDepth && h.low >= 0.0f && h.high > 1.0f && mean > 0.0 && h.high > 16.0 * mean &&
+        std::isfinite(smallestPositive)) {
+        h.logarithmic = true;
+        h.low = std::max(smallestPositive, h.high * 1e-5f);
+    }
+    bins = std::max(bins, 1);
+    for (std::size_t c = 0; c < channels && c < 4; ++c) h.counts[c].assign(std::size_t(bins), 0);
+    for (std::size_t t = 0; t < texels; ++t) {
+        for (std::size_t c = 0; c < channels && c < 4; ++c) {
+            float v = shown->texels[t * channels + c];
+            if (!std::isfinite(v)) continue;
+            int bin = static_cast<int>(h.fraction(v) * bins);
+            std::uint32_t& n = h.counts[c][std::size_t(std::clamp(bin, 0, bins - 1))];
+            h.peak = std::max(h.peak, ++n);
+        }
+    }
+    return a;
+}
+
+bool TextureAnalyser::update(const TextureSource& source, const ViewSettings& settings, double deltaSeconds) {
+    if (!source.alive()) return false;
+    age_ += std::max(deltaSeconds, 0.0);
+    const int level = std::clamp(settings.level, 0, source.levels() - 1);
+    const bool linear = showsLinearDepth(settings, source.info);
+    const bool same = valid_ && analysis_.name == source.info.label && analysis_.level == level &&
+                      analysis_.linearDepth == linear &&
+                      (!linear || (near_ == settings.cameraNear && far_ == settings.cameraFar));
+    if (same && age_ < interval_) return false;
+    FloatImage image = gl::readTexture(source.native, source.info, level);
+    analysis_ = analyseImage(image, linear, settings.cameraNear, settings.cameraFar);
+    analysis_.name = source.info.label;
+    analysis_.level = level;
+    near_ = settings.cameraNear;
+    far_ = settings.cameraFar;
+    valid_ = true;
+    age_ = 0.0;
+    return true;
+}
+
+}  // namespace fx

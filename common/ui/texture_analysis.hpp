@@ -1,0 +1,81 @@
+#pragma once
+// What is in one level of a texture, read back exactly (gl::readTexture) and counted on the CPU
+// with image_stats: the range the auto-fit uses, the histogram under the view, and the numbers of
+// NaN, infinite and negative texels the highlight marks. Reading a large float texture back stalls
+// the GPU, so the inspector does it when the selection or level changes and a few times a second
+// at most (TextureAnalyser), not every frame.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image/image.hpp"
+#include "image/image_stats.hpp"
+#include "ui/texture_source.hpp"
+#include "ui/view_settings.hpp"
+
+namespace fx {
+
+struct ValueHistogram {
+    // Bins cover [low, high] in equal steps, or in equal ratios when logarithmic: HDR light, where a
+    // sun 30 times brighter than the sky would squeeze everything else into the first bin. On a
+    // logarithmic histogram the first bin also holds everything below low (zero included).
+    float low = 0.0f, high = 1.0f;
+    bool logarithmic = false;
+    int channels = 0;
+    std::array<std::vector<std::uint32_t>, 4> counts;  // per channel, equal-width bins over [low, high]
+    std::uint32_t peak = 0;                            // the fullest bin of any channel
+
+    // Where a value falls along the histogram: 0 at low, 1 at high.
+    double fraction(double value) const;
+};
+
+struct TextureAnalysis {
+    std::string name;
+    int level = 0;
+    Size2D size{};
+    int channels = 0;
+    bool linearDepth = false;  // the values below are distances, not stored depth
+    // Depth texels at the far plane (stored 1): the sky, not a surface. With linearDepth they are
+    // left out of the statistics and the histogram, so auto-fit spreads the range over the surfaces.
+    std::int64_t farPlaneTexels = 0;
+    // Per channel, of the values as shown (depth linearised): min and max of the finite ones.
+    std::vector<ChannelStats> stats;
+    // Texels (not values): a texel counts once, as NaN if any channel is NaN, else as infinite if any
+    // channel is, else as negative if any channel is below zero. The view colours them the same way.
+    std::int64_t nanTexels = 0, infTexels = 0, negativeTexels = 0;
+    ValueHistogram histogram;
+
+    // The finite range of the channels that are switched on (all of them if none is).
+    bool rangeOf(const std::array<bool, 4>& channels, float& low, float& high) const;
+};
+
+// The analysis of an image read back from a texture. With linearDepth, channel 0 holds depth
+// values and is turned into distances with the camera's planes before anything is counted.
+TextureAnalysis analyseImage(const FloatImage& image, bool linearDepth, float cameraNear, float cameraFar,
+                             int bins = 128);
+
+// The same linearisation the view shader does (shaders/ui/view_common.glsl).
+float linearizeDepth(float depth, float cameraNear, float cameraFar);
+
+// Keeps the analysis of the texture the inspector shows and refreshes it when what is shown changes,
+// or when it is older than `interval` seconds.
+class TextureAnalyser {
+public:
+    explicit TextureAnalyser(double interval = 0.5) : interval_(interval) {}
+
+    // Returns true when it read the texture back this call.
+    bool update(const TextureSource& source, const ViewSettings& settings, double deltaSeconds);
+    void invalidate() { valid_ = false; }
+    bool valid() const { return valid_; }
+    const TextureAnalysis& analysis() const { return analysis_; }
+
+private:
+    double interval_;
+    double age_ = 0.0;
+    bool valid_ = false;
+    float near_ = 0.0f, far_ = 0.0f;
+    TextureAnalysis analysis_;
+};
+
+}  // namespace fx

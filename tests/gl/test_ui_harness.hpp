@@ -1,0 +1,110 @@
+#pragma once
+// Frames with the overlay for the UI tests: a real frame graph executed on GL into an offscreen
+// "screen", the overlay drawn on top headless (as --overlay does), and the picture read back.
+#include <functional>
+#include <string>
+
+#include "gl/framebuffer.hpp"
+#include "gl/program.hpp"
+#include "gl/readback.hpp"
+#include "gl/texture.hpp"
+#include "gl_test.hpp"
+#include "render/frame_graph.hpp"
+#include "render_gl/gl_pass_executor.hpp"
+#include "render_gl/gl_texture_allocator.hpp"
+#include "ui/overlay.hpp"
+
+namespace fx::test {
+
+struct UiHarness {
+    int width, height;
+    GlTextureAllocator allocator;
+    TexturePool pool{allocator};
+    PassTimer timer{TimingMode::Fenced, reinterpret_cast<const char*>(glGetString(GL_RENDERER))};
+    GlPassExecutor executor{timer, {0, true}};
+    gl::Texture screen;
+    gl::Framebuffer screenFbo{"test.screen"};
+    Overlay overlay{nullptr};
+    FrameReport lastReport;
+
+    UiHarness(int w, int h) : width(w), height(h) {
+        screen = gl::Texture::create2D(GL_RGBA8, w, h, 1, "test.screen");
+        screenFbo.attachColor(0, screen);
+        screenFbo.setDrawBuffers(1);
+        executor.setPresentFramebuffer(screenFbo.name());
+    }
+
+    // One frame as the runner makes it: build, inspect what the overlay wants, execute, draw the
+    // overlay while the textures are held (`model` gets the graph and report), read the screen back.
+    ByteImage frame(const std::function<void(FrameGraph&)>& build, OverlayModel model = {},
+                    bool withOverlay = true, const std::function<void(const FrameGraph&)>& whileHeld = {}) {
+        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
+        build(graph);
+        if (withOverlay) {
+            for (auto& name : overlay.wantedTextures()) graph.inspect(name);
+        }
+        EXPECT_TRUE(graph.execute(pool, executor).ok());
+        lastReport = graph.report();
+        if (whileHeld) whileHeld(graph);
+        if (withOverlay) {
+            glBindFramebuffer(GL_FRAMEBUFFER, screenFbo.name());
+            glViewport(0, 0, width, height);
+            model.frame = &lastReport;
+            model.graph = &graph;
+            overlay.draw(model, width, height, 1.0 / 60.0);
+        }
+        ByteImage image = gl::readFramebufferRgba8(screenFbo.name(), width, height);
+        graph.releaseTextures();
+        pool.endFrame();
+        return image;
+    }
+};
+
+// The test picture (shaders/ui/test_scene.frag) and a pass that presents a texture with it.
+struct TestScene {
+    gl::Program program;
+    gl::VertexArrayName vao = gl::createVertexArray("test.scene vao");
+
+    TestScene() {
+        auto built =
+            gl::Program::build({"common/fullscreen.vert", "ui/test_scene.frag", {}, {}, "test.scene"});
+        EXPECT_TRUE(built.ok()) << (built ? "" : built.error());
+        if (built) program = std::move(*built);
+    }
+
+    void drawPattern(Size2D size) const {
+        glProgramUniform1i(program.name(), 0, 0);
+        glProgramUniform2f(program.name(), 1, float(size.width), float(size.height));
+        glUseProgram(program.name());
+        glBindVertexArray(vao.name());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    void present(GLuint texture) const {
+        glProgramUniform1i(program.name(), 0, 1);
+        glBindTextureUnit(0, texture);
+        glUseProgram(program.name());
+        glBindVertexArray(vao.name());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    // scene.hdr (RGBA16F, the output's size, every mip level), its mips built by a pass of their
+    // own, and presented on the output.
+    TextureHandle declare(FrameGraph& graph) const {
+        auto& draw =
+            graph.addPass("sky and rings", [this](PassContext& ctx) { drawPattern(ctx.targetSize()); });
+        TextureHandle hdr =
+            draw.create("scene.hdr", {TextureSize::output(), TextureFormat::RGBA16F, kFullMipChain},
+                        TextureUsage::ColorAttachment);
+        draw.setState({.depthTest = false, .blend = false, .faceCulling = false});
+        graph.addPass("build mips", [hdr](PassContext& ctx) { glGenerateTextureMipmap(ctx.native(hdr)); })
+            .modify(hdr, TextureUsage::Storage);
+        graph.addPass("present", [this, hdr](PassContext& ctx) { present(ctx.native(hdr)); })
+            .read(hdr)
+            .writeColor(graph.output())
+            .setState({.depthTest = false, .blend = false, .faceCulling = false});
+        return hdr;
+    }
+};
+
+}  // namespace fx::test
