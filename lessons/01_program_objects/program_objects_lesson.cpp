@@ -110,13 +110,10 @@ void ProgramObjectsLesson::updateBrokenAttempt() {
     brokenAttempt_ = gl::ReloadableProgram({shader("lit.vert"), shader(files[broken_]), {}, {}, files[broken_]});
 }
 
-void ProgramObjectsLesson::drawScene(GLuint lit, GLuint unlit, GLuint normals, const FrameInfo& frame) const {
+void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
     CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, *scene_, camera);
-    // Object i uses program i mod 3 in step 1, so all three copy-pasted programs are on screen.
-    meshes_.draw(lit, *scene_, frame.seconds);
-    (void)unlit;
-    (void)normals;
+    SceneMeshes::setFrameUniforms(program, *scene_, camera);
+    meshes_.draw(program, *scene_, frame.seconds);
 }
 
 void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
@@ -232,7 +229,7 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
                      break;
                  }
                  case CachedLocations: drawGrid(lit_.name(), frame); break;
-                 default: drawScene(lit_.name(), unlit_.name(), normals_.name(), frame); break;
+                 default: drawScene(lit_.name(), frame); break;
              }
          })
         .writeColor(graph.output())

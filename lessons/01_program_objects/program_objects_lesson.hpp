@@ -55,7 +55,7 @@ private:
     double lookupMsLastFrame_ = 0;
     double grouped_ms_ = 0, parenthesised_ms_ = 0;
 
-    void drawScene(GLuint lit, GLuint unlit, GLuint normals, const fx::FrameInfo& frame) const;
+    void drawScene(GLuint program, const fx::FrameInfo& frame) const;
     void drawGrid(GLuint program, const fx::FrameInfo& frame);
     void buildSkinningComparison(fx::FrameGraph& graph, const fx::FrameInfo& frame);
     void updateBrokenAttempt();
