@@ -4,15 +4,6 @@
 #include <climits>
 #include <cstring>
 
-// stb_image is compiled once in Debian's libstb (linked through fx_image); only its declarations are
-// included here, never the implementation macro.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wall"
-#pragma GCC diagnostic ignored "-Wextra"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wshadow"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 #include "base/log.hpp"
 #include "image/png_file.hpp"
@@ -59,25 +50,13 @@ GLuint MaterialTextures::file(const std::filesystem::path& path) {
 GLuint MaterialTextures::encoded(const std::string& key, const std::vector<unsigned char>& bytes) {
     if (auto it = textures_.find(key); it != textures_.end()) return it->second.name();
     if (std::find(failures_.begin(), failures_.end(), key) != failures_.end()) return white();
-    int width = 0, height = 0, channels = 0;
-    unsigned char* pixels = bytes.size() <= static_cast<std::size_t>(INT_MAX)
-                                ? stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
-                                                        &height, &channels, 4)
-                                : nullptr;
-    if (!pixels) {
-        log::error(key, ": embedded image is not readable; drawn without the texture");
+    auto image = decodeImage(std::as_bytes(std::span(bytes.data(), bytes.size())), key);
+    if (!image) {
+        log::error(image.error(), "; drawn without the texture");
         failures_.push_back(key);
         return white();
     }
-    // stb gives rows top-down; GL's first row is the bottom one.
-    std::vector<unsigned char> flipped(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
-                                       4);
-    const std::size_t row = static_cast<std::size_t>(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(flipped.data() + static_cast<std::size_t>(height - 1 - y) * row,
-                    pixels + static_cast<std::size_t>(y) * row, row);
-    stbi_image_free(pixels);
-    return upload(key, key, width, height, flipped.data());
+    return upload(key, key, image->width, image->height, image->texels.data());
 }
 
 std::uint64_t MaterialTextures::bytes() const {

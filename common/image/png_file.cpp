@@ -54,23 +54,35 @@ Status writePng(const std::filesystem::path& path, const ByteImage& image) {
     return writeFileAtomically(path, std::span<const std::byte>(*bytes));
 }
 
-Result<ByteImage> readPng(const std::filesystem::path& path) {
-    auto bytes = readTextFile(path);
-    if (!bytes) return Error{bytes.error()};
-    if (bytes->size() > static_cast<std::size_t>(INT_MAX))
-        return Error{cat(path.string(), ": file too large")};
+namespace {
+
+// stb_image decodes; `kind` names what was expected in the error ("PNG image").
+Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::string& what, const char* kind) {
+    if (encoded.size() > static_cast<std::size_t>(INT_MAX)) return Error{cat(what, ": file too large")};
     int width = 0, height = 0, channelsInFile = 0;
     std::unique_ptr<unsigned char, StbiFree> pixels(
-        stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes->data()),
-                              static_cast<int>(bytes->size()), &width, &height, &channelsInFile, 4));
+        stbi_load_from_memory(reinterpret_cast<const unsigned char*>(encoded.data()),
+                              static_cast<int>(encoded.size()), &width, &height, &channelsInFile, 4));
     if (!pixels) {
         const char* reason = stbi_failure_reason();
-        return Error{
-            cat(path.string(), ": not a readable PNG image (", reason ? reason : "unknown reason", ")")};
+        return Error{cat(what, ": not a readable ", kind, " (", reason ? reason : "unknown reason", ")")};
     }
+    // stb gives rows top-down; fxlab's images run bottom-up like GL's.
     ByteImage topDown = makeByteImage(width, height, 4);
     std::memcpy(topDown.texels.data(), pixels.get(), topDown.texels.size());
     return flippedVertically(topDown);
+}
+
+}  // namespace
+
+Result<ByteImage> readPng(const std::filesystem::path& path) {
+    auto bytes = readTextFile(path);
+    if (!bytes) return Error{bytes.error()};
+    return decodeEncoded(std::as_bytes(std::span(bytes->data(), bytes->size())), path.string(), "PNG image");
+}
+
+Result<ByteImage> decodeImage(std::span<const std::byte> encoded, const std::string& what) {
+    return decodeEncoded(encoded, what, "image");
 }
 
 }  // namespace fx

@@ -2,6 +2,8 @@
 // PNG files for 8-bit pictures: captures, golden images, plots.
 #include <cstddef>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "base/result.hpp"
@@ -19,5 +21,9 @@ Result<std::vector<std::byte>> encodePng(const ByteImage& image);
 // Always returns RGBA (4 channels), rows bottom-up like every image here. 16-bit files are
 // reduced to 8 bits.
 Result<ByteImage> readPng(const std::filesystem::path& path);
+
+// An encoded image in memory (PNG, or any format stb_image reads: glTF embeds them) as RGBA with
+// rows bottom-up. `what` names it in the error ("character.gltf image 2").
+Result<ByteImage> decodeImage(std::span<const std::byte> encoded, const std::string& what);
 
 }  // namespace fx
