@@ -6,12 +6,12 @@
 #include <iostream>
 #include <thread>
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 
 #include "app/bench.hpp"
 #include "app/capture.hpp"
 #include "app/frame_renderer.hpp"
+#include "app/lesson_listing.hpp"
+#include "app/window_input.hpp"
 #include "app/run_options.hpp"
 #include "app/run_report.hpp"
 #include "base/file_io.hpp"
@@ -31,64 +31,6 @@ namespace fx {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string executableName(const LessonInfo& info) {
-    char number[8];
-    std::snprintf(number, sizeof number, "%02d", info.number);
-    return cat("fxlab-", number, "-", info.slug);
-}
-
-void printSteps(const std::vector<LessonStep>& steps) {
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        std::cout << i + 1 << ". " << steps[i].title << "\n   " << steps[i].text << "\n";
-    }
-}
-
-void printParams(const ParamSet& params) {
-    if (params.all().empty()) std::cout << "(this lesson has no parameters)\n";
-    for (const Param& p : params.all()) {
-        std::cout << p.name << " = " << p.text() << "  (" << p.rangeText() << ")";
-        if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
-        std::cout << "\n    " << p.description << "\n";
-    }
-}
-
-// Keys are read in a GLFW callback (ImGui chains its own after ours).
-struct KeyState {
-    bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
-};
-KeyState* keys = nullptr;
-
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-    if (action != GLFW_PRESS || !keys) return;
-    switch (key) {
-        case GLFW_KEY_RIGHT: keys->next = true; break;
-        case GLFW_KEY_LEFT: keys->previous = true; break;
-        case GLFW_KEY_F1: keys->toggleOverlay = true; break;
-        case GLFW_KEY_F5: keys->reload = true; break;
-        case GLFW_KEY_F12: keys->screenshot = true; break;
-        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-        default: break;
-    }
-}
-
-Pointer readPointer(GLFWwindow* window, Extent framebuffer, bool overUi) {
-    Pointer p;
-    if (!window || framebuffer.empty()) return p;
-    double x = 0, y = 0;
-    glfwGetCursorPos(window, &x, &y);
-    int windowWidth = 0, windowHeight = 0;
-    glfwGetWindowSize(window, &windowWidth, &windowHeight);
-    if (windowWidth <= 0 || windowHeight <= 0) return p;
-    // Window coordinates (top-left origin, screen units) to framebuffer pixels (bottom-left origin).
-    double sx = double(framebuffer.width) / windowWidth, sy = double(framebuffer.height) / windowHeight;
-    p.x = float(x * sx);
-    p.y = float(framebuffer.height - y * sy);
-    p.present = x >= 0 && y >= 0 && x < windowWidth && y < windowHeight;
-    p.leftDown = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    p.overUi = overUi;
-    return p;
-}
 
 struct Session {
     Lesson& lesson;
@@ -131,9 +73,7 @@ int run(Session& s, const std::string& exe) {
     std::unique_ptr<Context> context = std::move(*made);
     if (headless && (co.size.width == 0 || co.size.height == 0)) context->resize({co.size.width, co.size.height});
 
-    KeyState keyState;
-    keys = &keyState;
-    if (context->window()) glfwSetKeyCallback(context->window(), onKey);
+    WindowInput input(context->window());  // before the overlay, which chains its key callback
 
     int exitCode = 0;
     {
@@ -153,9 +93,7 @@ int run(Session& s, const std::string& exe) {
                 s.lesson.shutdown();
                 return 2;
             }
-            char number[8];
-            std::snprintf(number, sizeof number, "%02d", s.lesson.info().number);
-            fs::path dir = o.benchOut.empty() ? fs::path("out") / "bench" / cat(number, "-", s.lesson.info().slug) : o.benchOut;
+            fs::path dir = o.benchOut.empty() ? fs::path("out") / "bench" / lessonFolderName(s.lesson.info()) : o.benchOut;
             SweepResult result = sweepKnobs(s.lesson, s.params, renderer, *context,
                                             {o.benchKnob, o.benchFrames, o.benchValues}, exe,
                                             !o.step && s.lesson.benchStep() >= 0 ? s.lesson.benchStep() : s.step);
@@ -212,12 +150,12 @@ int run(Session& s, const std::string& exe) {
             seconds += delta;
 
             int stepCount = int(s.lesson.steps().size());
-            if (keyState.next && !(overlay && overlay->wantsKeyboard())) s.step = std::min(s.step + 1, stepCount - 1);
-            if (keyState.previous && !(overlay && overlay->wantsKeyboard())) s.step = std::max(s.step - 1, 0);
-            if (keyState.toggleOverlay) overlayVisible = !overlayVisible;
-            bool reloadNow = keyState.reload;
-            bool screenshot = keyState.screenshot;
-            keyState = {};
+            KeyPresses keys = input.takeKeyPresses();
+            if (keys.next && !(overlay && overlay->wantsKeyboard())) s.step = std::min(s.step + 1, stepCount - 1);
+            if (keys.previous && !(overlay && overlay->wantsKeyboard())) s.step = std::max(s.step - 1, 0);
+            if (keys.toggleOverlay) overlayVisible = !overlayVisible;
+            bool reloadNow = keys.reload;
+            bool screenshot = keys.screenshot;
             if (!headless && frameStart - lastReloadCheck > std::chrono::milliseconds(500)) {
                 lastReloadCheck = frameStart;
                 for (auto* p : s.lesson.programs()) p->reloadIfChanged();
@@ -237,7 +175,7 @@ int run(Session& s, const std::string& exe) {
             frame.seed = o.seed;
             frame.headless = headless;
             frame.previousFrame = index > 0 ? &lastReport : nullptr;
-            frame.pointer = readPointer(context->window(), extent, overlay && overlayVisible && overlay->wantsMouse());
+            frame.pointer = input.pointer(extent, overlay && overlayVisible && overlay->wantsMouse());
             s.lesson.update(frame);
             if (extent.empty()) {
                 // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
@@ -356,7 +294,6 @@ int run(Session& s, const std::string& exe) {
         s.lesson.shutdown();
         // overlay, executor, pool and allocator go here, while the context is still current.
     }
-    keys = nullptr;
     return exitCode;
 }
 

@@ -1,0 +1,63 @@
+#include "app/window_input.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace fx {
+namespace {
+
+// GLFW callbacks are plain functions: the presses of the one lesson window go here.
+KeyPresses* pending = nullptr;
+KeyPresses presses;
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    if (action != GLFW_PRESS || !pending) return;
+    switch (key) {
+        case GLFW_KEY_RIGHT: pending->next = true; break;
+        case GLFW_KEY_LEFT: pending->previous = true; break;
+        case GLFW_KEY_F1: pending->toggleOverlay = true; break;
+        case GLFW_KEY_F5: pending->reload = true; break;
+        case GLFW_KEY_F12: pending->screenshot = true; break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+        default: break;
+    }
+}
+
+}  // namespace
+
+WindowInput::WindowInput(GLFWwindow* window) : window_(window) {
+    if (!window_) return;
+    presses = {};
+    pending = &presses;
+    glfwSetKeyCallback(window_, onKey);
+}
+
+WindowInput::~WindowInput() {
+    if (window_) pending = nullptr;
+}
+
+KeyPresses WindowInput::takeKeyPresses() {
+    KeyPresses taken = presses;
+    presses = {};
+    return window_ ? taken : KeyPresses{};
+}
+
+Pointer WindowInput::pointer(Extent framebuffer, bool overUi) const {
+    Pointer p;
+    if (!window_ || framebuffer.empty()) return p;
+    double x = 0, y = 0;
+    glfwGetCursorPos(window_, &x, &y);
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(window_, &windowWidth, &windowHeight);
+    if (windowWidth <= 0 || windowHeight <= 0) return p;
+    // Window coordinates (top-left origin, screen units) to framebuffer pixels (bottom-left origin).
+    double sx = double(framebuffer.width) / windowWidth, sy = double(framebuffer.height) / windowHeight;
+    p.x = float(x * sx);
+    p.y = float(framebuffer.height - y * sy);
+    p.present = x >= 0 && y >= 0 && x < windowWidth && y < windowHeight;
+    p.leftDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    p.overUi = overUi;
+    return p;
+}
+
+}  // namespace fx

@@ -1,0 +1,32 @@
+#pragma once
+// The keys and the mouse of a lesson window. Create it before the overlay: Dear ImGui's GLFW
+// backend chains the key callback that was installed before it, so both see every key.
+#include "app/lesson.hpp"
+#include "platform/context.hpp"
+
+struct GLFWwindow;
+
+namespace fx {
+
+struct KeyPresses {
+    bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
+};
+
+class WindowInput {
+public:
+    // window == nullptr (headless): no keys, no pointer.
+    explicit WindowInput(GLFWwindow* window);
+    ~WindowInput();
+    WindowInput(const WindowInput&) = delete;
+    WindowInput& operator=(const WindowInput&) = delete;
+
+    // The presses since the last call (Esc closes the window directly).
+    KeyPresses takeKeyPresses();
+    // The mouse in framebuffer pixels, bottom-left origin.
+    Pointer pointer(Extent framebuffer, bool overUi) const;
+
+private:
+    GLFWwindow* window_;
+};
+
+}  // namespace fx
