@@ -11,60 +11,46 @@ void labelObject(GLenum identifier, GLuint name, std::string_view label) {
     glObjectLabel(identifier, name, length, label.data());
 }
 
+namespace {
+
+// Every owner is made the same way: a DSA create call for one name, then its label.
+template <class Owner, class Create>
+Owner createLabelled(Create create, std::string_view label) {
+    GLuint name = 0;
+    create(&name);
+    Owner owner(name);
+    owner.label(label);
+    return owner;
+}
+
+}  // namespace
+
 TextureName createTexture(GLenum target, std::string_view label) {
-    GLuint n = 0;
-    glCreateTextures(target, 1, &n);
-    TextureName t(n);
-    t.label(label);
-    return t;
+    return createLabelled<TextureName>([target](GLuint* n) { glCreateTextures(target, 1, n); }, label);
 }
 
 BufferName createBuffer(std::string_view label) {
-    GLuint n = 0;
-    glCreateBuffers(1, &n);
-    BufferName b(n);
-    b.label(label);
-    return b;
+    return createLabelled<BufferName>([](GLuint* n) { glCreateBuffers(1, n); }, label);
 }
 
 FramebufferName createFramebuffer(std::string_view label) {
-    GLuint n = 0;
-    glCreateFramebuffers(1, &n);
-    FramebufferName f(n);
-    f.label(label);
-    return f;
+    return createLabelled<FramebufferName>([](GLuint* n) { glCreateFramebuffers(1, n); }, label);
 }
 
 RenderbufferName createRenderbuffer(std::string_view label) {
-    GLuint n = 0;
-    glCreateRenderbuffers(1, &n);
-    RenderbufferName r(n);
-    r.label(label);
-    return r;
+    return createLabelled<RenderbufferName>([](GLuint* n) { glCreateRenderbuffers(1, n); }, label);
 }
 
 VertexArrayName createVertexArray(std::string_view label) {
-    GLuint n = 0;
-    glCreateVertexArrays(1, &n);
-    VertexArrayName v(n);
-    v.label(label);
-    return v;
+    return createLabelled<VertexArrayName>([](GLuint* n) { glCreateVertexArrays(1, n); }, label);
 }
 
 SamplerName createSampler(std::string_view label) {
-    GLuint n = 0;
-    glCreateSamplers(1, &n);
-    SamplerName s(n);
-    s.label(label);
-    return s;
+    return createLabelled<SamplerName>([](GLuint* n) { glCreateSamplers(1, n); }, label);
 }
 
 QueryName createQuery(GLenum target, std::string_view label) {
-    GLuint n = 0;
-    glCreateQueries(target, 1, &n);
-    QueryName q(n);
-    q.label(label);
-    return q;
+    return createLabelled<QueryName>([target](GLuint* n) { glCreateQueries(target, 1, n); }, label);
 }
 
 }  // namespace fx::gl
