@@ -57,6 +57,7 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
         pj["reads"] = usesJson(p.reads);
         pj["writes"] = usesJson(p.writes);
         pj["stateLeft"] = p.stateLeft;
+        pj["stateInherited"] = p.stateInherited;
         passes.push_back(pj);
     }
     j["passes"] = passes;
@@ -86,7 +87,11 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     j["final"] = {{"size", {finalImage.width, finalImage.height}}, {"stats", statsJson(computeStats(finalImage))}};
     j["shaderErrors"] = f.shaderErrors;
     nlohmann::ordered_json facts = nlohmann::ordered_json::object();
-    for (auto& [k, v] : f.lessonFacts) facts[k] = v;
+    // "true" and "false" become JSON booleans: the smoke script looks for "expectErrorsInStep": true.
+    for (auto& [k, v] : f.lessonFacts) {
+        if (v == "true" || v == "false") facts[k] = (v == "true");
+        else facts[k] = v;
+    }
     j["facts"] = facts;
     return j;
 }

@@ -45,6 +45,9 @@ struct PassRecord {
     std::string timingMethod;
     // Filled by a debug executor: the state this pass left that differs from the defaults.
     std::vector<std::string> stateLeft;
+    // Filled by a debug executor: state the pass depends on but did not declare, with the value it
+    // inherited from the pass before it ("depth test: off (inherited)"). See inheritedDependencies.
+    std::vector<std::string> stateInherited;
 };
 
 struct TextureRecord {

@@ -58,4 +58,34 @@ std::vector<StateDifference> diffState(const GlStateSnapshot& actual, const GlSt
     return out;
 }
 
+std::vector<std::string> inheritedDependencies(const PassState& declared, const GlStateSnapshot& inherited,
+                                               PassWrites writes) {
+    std::vector<std::string> out;
+    auto add = [&](bool isDeclared, const char* field, const std::string& value) {
+        if (!isDeclared) out.push_back(cat(field, ": ", value, " (inherited)"));
+    };
+    auto text = [](auto v) { return std::string(toString(v)); };
+    // The values the pass ends up with: declared fields win, the rest is what it inherited.
+    GlStateSnapshot effective = applyPassState(inherited, declared, Size2D{});
+    if (writes.depth) {
+        add(declared.depthTest.has_value(), "depth test", onOff(inherited.depthTest));
+        if (effective.depthTest) {
+            add(declared.depthWrite.has_value(), "depth write", onOff(inherited.depthWrite));
+            add(declared.depthFunction.has_value(), "depth function", text(inherited.depthFunction));
+        }
+    }
+    if (writes.color) {
+        add(declared.blend.has_value(), "blend", onOff(inherited.blend));
+        if (effective.blend) {
+            add(declared.blendFunction.has_value(), "blend function", describe(inherited.blendFunction));
+        }
+        add(declared.colorMask.has_value(), "colour mask", describe(inherited.colorMask));
+    }
+    if (writes.depth || writes.color) {
+        add(declared.faceCulling.has_value(), "face culling", onOff(inherited.faceCulling));
+        if (effective.faceCulling) add(declared.cullFace.has_value(), "cull face", text(inherited.cullFace));
+    }
+    return out;
+}
+
 }  // namespace fx

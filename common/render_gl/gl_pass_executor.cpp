@@ -55,6 +55,12 @@ bool GlPassExecutor::beginPass(const Pass& pass, PassContext& ctx) {
     failure_.clear();
     glBindFramebuffer(GL_FRAMEBUFFER, *framebuffer);
     Size2D target = ctx.targetSize();
+    if (options_.checkState) {
+        // Before the pass's own state goes on: what it would run with for every field it leaves open.
+        PassWrites writes{pass.depthAttachment().has_value() || pass.writesPresentedOutput(),
+                          !pass.colorAttachments().empty()};
+        inherited_ = inheritedDependencies(pass.state(), snapshotGlState(), writes);
+    }
     applyGlState(pass.state(), target);
 
     const PassState& s = pass.state();
@@ -82,6 +88,8 @@ void GlPassExecutor::endPass(const Pass& pass, PassRecord& record) {
     if (options_.checkState) {
         // What the body changed that the pass did not declare: the next pass inherits it.
         for (auto& d : diffState(snapshotGlState(), stateAtBegin_)) record.stateLeft.push_back(d.text());
+        record.stateInherited = std::move(inherited_);
+        inherited_.clear();
     }
     group_.reset();
 }

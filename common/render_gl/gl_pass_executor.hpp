@@ -1,8 +1,9 @@
 #pragma once
 // Runs the frame graph's passes on GL: for each pass a debug group with its name, the framebuffer
 // built from its attachments (checked for completeness, never drawn into when incomplete), its
-// declared state and clears, a timer around it, and afterwards a snapshot of what its body changed
-// behind the graph's back (the state leak that made the chapter's shadows disappear).
+// declared state and clears, a timer around it, and two state checks: before, the state it depends
+// on but did not declare, with the value it inherited (the chapter's shadow pass running with depth
+// testing off); afterwards, what its body changed behind the graph's back.
 #include <map>
 #include <memory>
 #include <optional>
@@ -50,6 +51,7 @@ private:
     std::map<Attachments, gl::Framebuffer> framebuffers_;
     std::optional<gl::DebugGroup> group_;
     GlStateSnapshot stateAtBegin_;
+    std::vector<std::string> inherited_;  // inheritedDependencies() of the running pass
     std::string failure_;
 
     // The framebuffer for a pass's attachments, or an error naming it.

@@ -61,7 +61,7 @@ void drawPassTable(const FrameReport& frame) {
     ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthFixed, 64.0f);
     if (!oneMethod) ImGui::TableSetupColumn("timed by", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("ran / why not", ImGuiTableColumnFlags_WidthStretch, 1.8f);
-    ImGui::TableSetupColumn("state left", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+    ImGui::TableSetupColumn("state inherited / left", ImGuiTableColumnFlags_WidthStretch, 1.6f);
     ImGui::TableSetupColumn("wrote", ImGuiTableColumnFlags_WidthStretch, 1.4f);
     ImGui::TableHeadersRow();
     int order = 0;
@@ -111,10 +111,12 @@ void drawPassTable(const FrameReport& frame) {
             ImGui::PopTextWrapPos();
         }
         ImGui::TableNextColumn();
-        if (!p.stateLeft.empty()) {
+        if (!p.stateLeft.empty() || !p.stateInherited.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
             ImGui::PushTextWrapPos(0.0f);
-            for (const std::string& s : p.stateLeft) ImGui::TextUnformatted(s.c_str());
+            // Inherited first: it is what the pass ran with without asking for it.
+            for (const std::string& s : p.stateInherited) ImGui::TextUnformatted(s.c_str());
+            for (const std::string& s : p.stateLeft) ImGui::TextUnformatted(cat("left ", s).c_str());
             ImGui::PopTextWrapPos();
             ImGui::PopStyleColor();
         }
