@@ -123,19 +123,22 @@ void SceneMeshes::update(double seconds) {
 }
 
 void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds) const {
-    draw(program, scene, seconds, MeshDrawOptions{});
+    (void)draw(program, scene, seconds, MeshDrawOptions{});
 }
 
-void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds,
-                       const MeshDrawOptions& options) const {
+std::size_t SceneMeshes::draw(GLuint program, const Scene& scene, double seconds,
+                              const MeshDrawOptions& options) const {
     if (!posed_ || posedAt_ != seconds) pose(seconds);
     glUseProgram(program);
     GLuint white = textures_->white();
+    std::size_t drawn = 0;
     for (std::size_t i = 0; i < objects_.size() && i < scene.objects.size(); ++i) {
         const ObjectMeshes& meshes = objects_[i];
         const SceneObject& object = scene.objects[i];
         if (options.shadowCastersOnly && !object.castsShadows) continue;
-        glm::mat4 model = modelAt(object, seconds);
+        if (options.skinFilter == SkinFilter::withoutSkin && isSkinned(i)) continue;
+        if (options.skinFilter == SkinFilter::skinnedOnly && !isSkinned(i)) continue;
+        glm::mat4 model = options.placement * modelAt(object, seconds);
         if (meshes.model) {
             if (!options.models) continue;
             ModelDrawStyle style;
@@ -145,6 +148,7 @@ void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds,
             style.bindTextures = options.bindTextures;
             style.skinned = options.skinned;
             meshes.model->draw(program, model, style);
+            ++drawn;
             continue;
         }
         if (!options.primitives || meshes.primitive.indexCount() == 0) continue;
@@ -161,7 +165,13 @@ void SceneMeshes::draw(GLuint program, const Scene& scene, double seconds,
             glBindTextureUnit(texture_unit::emissive, white);
         }
         meshes.primitive.draw();
+        ++drawn;
     }
+    return drawn;
+}
+
+bool SceneMeshes::isSkinned(std::size_t index) const {
+    return index < objects_.size() && objects_[index].model && objects_[index].model->skinnedMeshes() > 0;
 }
 
 std::size_t SceneMeshes::drawnObjects() const {

@@ -42,6 +42,14 @@ inline constexpr GLint ambient = 12;
 inline constexpr GLint cameraPosition = 13;
 }  // namespace uniform_location
 
+// Which objects a draw covers, by whether they have a skinned mesh. A shadow pass draws the two
+// groups with two programs (seed 000 section 2.4: static meshes first, then skinned, one switch).
+enum class SkinFilter {
+    all,
+    withoutSkin,  // primitives and glTF objects with no skinned mesh
+    skinnedOnly,  // glTF objects with at least one skinned mesh
+};
+
 // Which objects a draw covers and what it sets. The defaults draw everything with its material.
 struct MeshDrawOptions {
     bool primitives = true;          // built-in shapes
@@ -50,6 +58,10 @@ struct MeshDrawOptions {
     bool setMaterial = true;         // upload base colour and emissive (a depth-only program has neither)
     bool bindTextures = true;
     SkinnedDraw skinned = SkinnedDraw::posed;
+    SkinFilter skinFilter = SkinFilter::all;
+    // A world transform applied after each object's own: draws a copy of the scene's objects
+    // elsewhere (lesson 02's crowd is the character drawn at many placements).
+    glm::mat4 placement{1.0f};
 };
 
 class SceneMeshes {
@@ -71,13 +83,18 @@ public:
     void update(double seconds);
     // Draws the objects with their materials. Poses first if the last update() was for another time.
     void draw(GLuint program, const Scene& scene, double seconds) const;
-    void draw(GLuint program, const Scene& scene, double seconds, const MeshDrawOptions& options) const;
+    // Returns how many objects it drew.
+    std::size_t draw(GLuint program, const Scene& scene, double seconds, const MeshDrawOptions& options) const;
 
     std::size_t drawnObjects() const;
+    // One entry per scene object, drawable or not (the indices model() and isSkinned() take).
+    std::size_t objectCount() const { return objects_.size(); }
     // Objects that cannot be drawn, with the reason ("robot (models/robot.gltf: no such file)").
     const std::vector<std::string>& notDrawn() const { return notDrawn_; }
     // glTF objects with a skinned mesh, and how many GPU skinning updates have run.
     std::size_t skinnedObjects() const;
+    // Whether object `index` has a skinned mesh (what SkinFilter sorts by).
+    bool isSkinned(std::size_t index) const;
     std::uint64_t skinningUpdates() const { return skinningUpdates_; }
     // The GPU model of object `index` (nullptr for primitives and models that failed to load).
     const GpuModel* model(std::size_t index) const;

@@ -1,0 +1,16 @@
+#version 450 core
+// Depth-only shadow pass, static meshes (seed 000 section 2: the chapter's shadow.vert). The light's
+// view-projection is at location 2, where the lit shaders have the camera's. Only the uniforms this
+// program really has are declared: a material upload to location 3 or 4 is an error here, which is
+// the chapter's error flood when a draw path does not ask first (section 2.4).
+layout(location = 0) uniform mat4 modelMatrix;
+layout(location = 2) uniform mat4 viewProjectionMatrix;
+
+layout(location = 0) in vec3 position;
+
+void main() {
+    gl_Position = viewProjectionMatrix * (modelMatrix * vec4(position, 1.0));
+    // Pancaking: a caster between the light and the near plane is flattened onto it instead of being
+    // clipped away, so it still throws its shadow (the fit covers receivers, not every caster).
+    gl_Position.z = max(gl_Position.z, -gl_Position.w);
+}

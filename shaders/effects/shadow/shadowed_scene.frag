@@ -1,0 +1,23 @@
+#version 450 core
+// Linear-HDR lighting with the directional light's shadow (shaders/common/shadowed_lighting.glsl).
+// Written clamped and NaN-free like the plain scene pass (effects/hdr_scene_pass.hpp, kSceneHdrMax).
+#include "../../common/scene_uniforms.glsl"
+#include "../../common/shadow_lookup.glsl"
+#include "../../common/shadowed_lighting.glsl"
+
+layout(binding = 0) uniform sampler2D baseColorTexture;
+layout(binding = 1) uniform sampler2D emissiveTexture;
+layout(location = 30) uniform float hdrMax;
+
+layout(location = 1) in vec2 texcoord;
+layout(location = 2) in vec3 worldNormal;
+layout(location = 3) in vec3 worldPosition;
+layout(location = 0) out vec4 color;
+
+void main() {
+    vec3 albedo = baseColor * texture(baseColorTexture, texcoord).rgb;
+    vec3 emitted = emissiveColor * texture(emissiveTexture, texcoord).rgb;
+    vec3 linear = shadowedLighting(worldNormal, worldPosition, albedo) + emitted;
+    linear = mix(clamp(linear, 0.0, hdrMax), vec3(0.0), isnan(linear));
+    color = vec4(linear, 1.0);
+}
