@@ -1,0 +1,59 @@
+#pragma once
+// Lesson 02: skeletal-mesh shadows (seed 000 sections 2.1 to 2.6, hard cases 17, 19 and 20).
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "app/lesson.hpp"
+#include "effects/output_transform_pass.hpp"
+#include "effects/scene_meshes.hpp"
+#include "effects/shadow_lit_pass.hpp"
+#include "effects/shadow_map.hpp"
+
+namespace lesson02 {
+
+class SkinnedShadowsLesson final : public fx::Lesson {
+public:
+    fx::LessonInfo info() const override;
+    std::vector<fx::LessonStep> steps() const override;
+    void declareParams(fx::ParamSet& params) override;
+    fx::Status init(const fx::Scene& scene) override;
+    void shutdown() override;
+    void update(const fx::FrameInfo& frame) override;
+    void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
+    std::vector<fx::gl::ReloadableProgram*> programs() override;
+    void drawPanel(const fx::FrameInfo& frame) override;
+    int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
+    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+
+    enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood };
+
+    // What the shadow pass does in a step (public so tests can build the same frame).
+    fx::ShadowPassOptions shadowOptionsForStep(int step, bool benchmark) const;
+    // The crowd of step 3: where each copy of the character stands (the first is where it is).
+    static std::vector<glm::mat4> crowdPlacements(int count);
+
+private:
+    // Parameters; map size and taps start at the scene's values (res/scenes/02_skinned_shadows.json).
+    int mapSize_ = 2048;
+    int filterTaps_ = 16;
+    float filterRadius_ = 0.03f;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int crowd_ = 16;
+    int materialUpload_ = 0;  // 0: always (the chapter's flood), 1: ask the program
+
+    const fx::Scene* scene_ = nullptr;
+    fx::ShadowSettings sceneShadow_;
+    fx::SceneMeshes meshes_;
+    fx::ShadowMap shadows_;
+    fx::ShadowLitPass lit_;
+    fx::OutputTransformPass present_;
+
+    // Filled while the frame executes (the pass bodies write them), read by the panel and report.
+    mutable fx::ShadowPassStats stats_;
+    fx::ShadowPassStats otherStats_;
+    int lastStep_ = 0;
+    double shadowMs_ = 0, otherMs_ = 0;
+};
+
+}  // namespace lesson02
