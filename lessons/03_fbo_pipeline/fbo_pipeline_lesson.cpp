@@ -1,0 +1,230 @@
+#include "fbo_pipeline_lesson.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include <imgui.h>
+
+#include "base/log.hpp"
+#include "chapter_order.hpp"
+
+namespace lesson03 {
+
+using namespace fx;
+
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+// The chapter's frame state from section 3.2 step 3: depth testing and alpha blending for every 3D
+// draw that follows, set once at the start of the frame.
+PassState chapterDrawState(const Scene& scene) {
+    return {.depthTest = true,
+            .depthWrite = true,
+            .depthFunction = DepthFunction::Less,
+            .blend = true,
+            .blendFunction = BlendFunction::alpha(),
+            .colorMask = ColorMask{},
+            .clearColor = LitScenePass::windowClearColor(scene),
+            .clearDepth = 1.0f};
+}
+
+}  // namespace
+
+LessonInfo FboPipelineLesson::info() const {
+    return {3, "fbo-pipeline", "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json"};
+}
+
+std::vector<LessonStep> FboPipelineLesson::steps() const {
+    return {
+        {"Straight to the window",
+         "The chapter's Render() before section 3.2: clear the window, set the draw state (depth test and "
+         "blending on), then create the shadow map, then draw 3D into the window. The shader ends with the "
+         "display encoding because the window is the last stop. Shadows work, but look at the pass table: "
+         "the shadow pass declares no state of its own and runs with what the frame set before it."},
+        {"Reordered: the shadows vanish",
+         "Section 3.2 moves the shadow map to the top of the frame, where it belongs: it must be finished "
+         "before the scene reads it. Now it runs before the draw state is set, with what the last frame "
+         "left: the UI queue switched the depth test off, and with the test off GL writes no depth at all. "
+         "The map stays at its clear value, every receiver is lit. The pass table names the state the "
+         "shadow pass inherited: depth test off."},
+        {"Each pass sets the state it depends on",
+         "Section 3.3's fix: the shadow pass enables the depth test and disables blending itself, after "
+         "binding its framebuffer and before clearing. The scene pass does the same for its draw. The "
+         "shadows are back, and the state check finds nothing inherited in any pass."},
+        {"Into a float target, one pass to the window",
+         "Section 3.4: the scene goes into fboMain, a 16-bit float colour target with a depth texture "
+         "(scene.color and scene.depth in the inspector), the size of the window. One full-screen pass "
+         "copies it to the window, and the UI queue draws after it, untouched by any image effect. The "
+         "picture is the same as step 3: the scene shader still encodes for the display, so the target "
+         "holds display values, none above 1."},
+        {"Double gamma, and one output transform",
+         "Image processing needs linear light, so the full-screen pass now encodes for the display. Left of "
+         "the divider the scene shader still encodes too: encoded twice, the picture is washed out and grey. "
+         "Right of it, the fix: the scene shader writes linear HDR (values above 1 survive in scene.color) "
+         "and the output transform at the end encodes once. Move the divider with washout_split."},
+    };
+}
+
+void FboPipelineLesson::declareParams(ParamSet& params) {
+    params.addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
+                    "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
+                    "(0: the fix only)");
+}
+
+Status FboPipelineLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    meshes_ = SceneMeshes(scene);
+    shadows_ = ShadowMap::create();
+    litScene_ = LitScenePass::create();
+    copyToWindow_ = FullscreenPass("common/copy.frag", "to the window");
+    outputTransform_ = OutputTransformPass::create();
+    uiQueue_ = UiQueuePass::create();
+    for (auto* p : programs()) {
+        if (!p->usable()) return Error{p->error()};
+    }
+    noShadowReason_ = shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
+    return Status::success();
+}
+
+void FboPipelineLesson::shutdown() {
+    *this = FboPipelineLesson();
+}
+
+std::vector<gl::ReloadableProgram*> FboPipelineLesson::programs() {
+    std::vector<gl::ReloadableProgram*> all = shadows_.programs();
+    for (auto* p : {litScene_.reloadable(), copyToWindow_.reloadable(), outputTransform_.reloadable(),
+                    uiQueue_.reloadable()}) {
+        all.push_back(p);
+    }
+    return all;
+}
+
+void FboPipelineLesson::update(const FrameInfo& frame) {
+    meshes_.update(frame.seconds);
+}
+
+void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    lastStep_ = frame.step;
+    if (frame.previousFrame) {
+        lastExecuted_.clear();
+        for (const PassRecord& p : frame.previousFrame->passes) {
+            if (p.executed) lastExecuted_.push_back(p.name);
+        }
+        if (const PassRecord* shadow = frame.previousFrame->findPass("shadow map")) {
+            shadowInherited_ = shadow->stateInherited;
+        }
+    }
+    ShadowSettings settings;
+    if (const Light* sun = shadowCastingLight(*scene_)) settings = sun->shadow;
+    ShadowPassOptions options;
+    // Until section 3.3 the chapter's CreateShadowMap sets no state: it relies on the frame's.
+    options.setsItsOwnState = frame.step >= EachPassSetsItsState;
+
+    if (frame.step == StraightToWindow) {
+        // The chapter's old order: the draw state is set before the shadow map is created.
+        Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
+        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
+        DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+        declareStraightToWindow(graph, frame, shadow);
+        return;
+    }
+    DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+    if (frame.step == Reordered) {
+        Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
+        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
+        declareStraightToWindow(graph, frame, shadow);
+    } else if (frame.step == EachPassSetsItsState) {
+        declareStraightToWindow(graph, frame, shadow);
+    } else {
+        declareThroughFloatTarget(graph, frame, shadow);
+    }
+}
+
+void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameInfo& frame,
+                                                const DeclaredShadowMap& shadow) {
+    LitSceneOptions scene;
+    scene.encodeForDisplay = true;  // the window is the last stop
+    // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
+    scene.declaresState = frame.step >= EachPassSetsItsState;
+    scene.clears = frame.step >= EachPassSetsItsState;
+    litScene_.declareIntoWindow(graph, *scene_, meshes_, frame.seconds, shadow, scene);
+    uiQueue_.declare(graph, frame.size);
+}
+
+void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
+                                                  const DeclaredShadowMap& shadow) {
+    LitSceneOptions sceneOptions;
+    if (frame.step == FloatTarget) {
+        sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
+        HdrSceneTargets main = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
+                                                            sceneOptions, "scene");
+        const FullscreenPass* copy = &copyToWindow_;
+        TextureHandle color = main.color;
+        graph.addPass("to the window", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
+            .read(color)
+            .writeColor(graph.output())
+            .setState(FullscreenPass::state());
+    } else {
+        HdrSceneTargets linear = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
+                                                              sceneOptions, "scene");
+        std::optional<SplitView> split;
+        if (washoutSplit_ > 0.0f) {
+            // The same scene, its shader still encoding: what the chapter saw before the fix. Only
+            // for the left of the divider; a benchmark frame would not draw it.
+            LitSceneOptions washedOut;
+            washedOut.passName = "scene (shader encodes too)";
+            washedOut.encodeForDisplay = true;
+            HdrSceneTargets encoded = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds,
+                                                                   shadow, washedOut, "scene_encoded");
+            split = SplitView{encoded.color, washoutSplit_};
+        }
+        outputTransform_.declare(graph, linear.color, split);
+    }
+    uiQueue_.declare(graph, frame.size);
+}
+
+void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
+    if (!noShadowReason_.empty()) ImGui::TextWrapped("shadow map not run: %s", noShadowReason_.c_str());
+    if (shadowInherited_.empty()) {
+        ImGui::TextWrapped("shadow pass inherits: nothing (it declares all the state it depends on)");
+    } else {
+        ImGui::TextWrapped("shadow pass inherits: %s", joined(shadowInherited_).c_str());
+    }
+    ImGui::Separator();
+    ImGui::TextUnformatted("Frame order");
+    if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
+    ImGui::TableSetupColumn("the chapter's Render(), by hand");
+    ImGui::TableSetupColumn("the graph's order, derived");
+    ImGui::TableHeadersRow();
+    const std::vector<ChapterLine>& lines = chapterOrder(frame.step);
+    std::size_t rows = std::max(lines.size(), lastExecuted_.size());
+    for (std::size_t i = 0; i < rows; ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        if (i < lines.size()) {
+            ImGui::TextWrapped("%s%s%s%s", lines[i].text.c_str(), lines[i].pass.empty() ? "" : " [",
+                               lines[i].pass.c_str(), lines[i].pass.empty() ? "" : "]");
+        }
+        ImGui::TableNextColumn();
+        if (i < lastExecuted_.size()) ImGui::Text("%d. %s", int(i) + 1, lastExecuted_[i].c_str());
+    }
+    ImGui::EndTable();
+    ImGui::TextWrapped(
+        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow "
+        "pass runs first whatever the order of the code. What it cannot derive is the state a pass "
+        "inherits; the pass table lists it.");
+}
+
+void FboPipelineLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
+    facts.emplace_back("chapterPassOrder", joined(chapterPassOrder(lastStep_)));
+    facts.emplace_back("executedPassOrder", joined(lastExecuted_));
+    facts.emplace_back("shadowPassInherits", joined(shadowInherited_));
+    if (!noShadowReason_.empty()) facts.emplace_back("shadowMapNotRun", noShadowReason_);
+}
+
+}  // namespace lesson03

@@ -1,0 +1,101 @@
+#include "lit_scene_pass.hpp"
+
+#include <algorithm>
+
+#include "effects/camera_matrices.hpp"
+#include "image/view_transform.hpp"
+
+namespace lesson03 {
+
+using namespace fx;
+
+namespace {
+
+constexpr GLint kHdrMaxLocation = 30;     // shaders/lessons/03_fbo_pipeline/scene_lit.frag
+constexpr GLint kEncodeLocation = 31;
+
+// What the 3D draw depends on: depth testing and writing, no blending (the scene is opaque), back
+// faces culled. Declared by the pass itself from step 3 on.
+PassState sceneDrawState() {
+    return {.depthTest = true,
+            .depthWrite = true,
+            .depthFunction = DepthFunction::Less,
+            .blend = false,
+            .faceCulling = true,
+            .cullFace = CullFace::Back,
+            .colorMask = ColorMask{}};
+}
+
+}  // namespace
+
+LitScenePass LitScenePass::create() {
+    LitScenePass pass;
+    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
+                                           "lessons/03_fbo_pipeline/scene_lit.frag", {}, {}, "scene (lit, shadowed)"});
+    return pass;
+}
+
+ClearColor LitScenePass::windowClearColor(const Scene& scene) {
+    auto encode = [](float c) { return float(encodeSrgb(std::clamp(double(c), 0.0, 1.0))); };
+    return {encode(scene.background.r), encode(scene.background.g), encode(scene.background.b), 1.0f};
+}
+
+Pass& LitScenePass::addPass(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                            const DeclaredShadowMap& shadow, const LitSceneOptions& options) const {
+    const gl::ReloadableProgram* program = &program_;
+    // The lookup's uniforms need the map's GL name, which exists only while the frame runs.
+    bool hasMap = shadow.pass != nullptr;
+    TextureHandle map = shadow.map;
+    ShadowLookup lookup = shadow.lookup;
+    bool encode = options.encodeForDisplay;
+    Pass& pass = graph.addPass(options.passName, [=, &scene, &meshes](PassContext& ctx) {
+        Size2D size = ctx.targetSize();
+        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        GLuint name = program->name();
+        SceneMeshes::setFrameUniforms(name, scene, camera);
+        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1i(name, kEncodeLocation, encode ? 1 : 0);
+        ShadowMap::bindForLookup(name, hasMap ? ctx.native(map) : 0u, lookup);
+        meshes.draw(name, scene, seconds);
+    });
+    if (hasMap) pass.read(map);
+    if (options.declaresState) pass.setState(sceneDrawState());
+    if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
+    return pass;
+}
+
+Pass& LitScenePass::declareIntoWindow(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                      double seconds, const DeclaredShadowMap& shadow,
+                                      const LitSceneOptions& options) const {
+    Pass& pass = addPass(graph, scene, meshes, seconds, shadow, options);
+    if (options.clears) {
+        pass.writeColor(graph.output());
+        pass.state().clearColor = windowClearColor(scene);
+        pass.state().clearDepth = 1.0f;
+    } else {
+        pass.modify(graph.output(), TextureUsage::ColorAttachment);
+    }
+    return pass;
+}
+
+HdrSceneTargets LitScenePass::declareIntoTargets(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                                 double seconds, const DeclaredShadowMap& shadow,
+                                                 const LitSceneOptions& options, const std::string& prefix) const {
+    Pass& pass = addPass(graph, scene, meshes, seconds, shadow, options);
+    HdrSceneTargets targets;
+    targets.color = pass.create(prefix + ".color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                                TextureUsage::ColorAttachment);
+    targets.depth = pass.create(prefix + ".depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
+                                TextureUsage::DepthAttachment);
+    // A float target holds linear light: the sky is cleared to its linear value, or to the display
+    // value when the shader encodes (then everything in the target is display-encoded alike).
+    auto sky = [&](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
+    pass.state().clearColor = options.encodeForDisplay
+                                  ? windowClearColor(scene)
+                                  : ClearColor{sky(scene.background.r), sky(scene.background.g),
+                                               sky(scene.background.b), 1.0f};
+    pass.state().clearDepth = 1.0f;
+    return targets;
+}
+
+}  // namespace lesson03

@@ -1,0 +1,56 @@
+#pragma once
+// Lesson 03's 3D draw: the scene lit by the sun with its shadow, either straight into the window (the
+// chapter before section 3.4) or into a float colour target with a depth texture (section 3.4 on).
+// Two choices the chapter's steps turn on and off:
+//  - encodeForDisplay: standard.frag's final gamma (right for the window, the washout once a
+//    full-screen pass encodes again);
+//  - declaresState: whether the pass sets the depth, blend and culling state it draws with, or relies
+//    on the frame's "draw state" set earlier, as the chapter's Render() does until section 3.3.
+#include <string>
+
+#include "effects/hdr_scene_pass.hpp"
+#include "effects/scene_meshes.hpp"
+#include "effects/shadow_map.hpp"
+#include "gl/program.hpp"
+#include "render/frame_graph.hpp"
+
+namespace lesson03 {
+
+struct LitSceneOptions {
+    std::string passName = "scene";
+    bool encodeForDisplay = false;
+    bool declaresState = true;
+    // Clear the target first (the pass creates it). Off when an earlier pass cleared the window.
+    bool clears = true;
+};
+
+class LitScenePass {
+public:
+    LitScenePass() = default;  // empty: no GL yet
+    static LitScenePass create();
+
+    bool usable() const { return program_.usable(); }
+    const std::string& error() const { return program_.error(); }
+    fx::gl::ReloadableProgram* reloadable() { return &program_; }
+
+    // Into the graph's output (the window). `scene`, `meshes` and `shadow` must outlive the frame.
+    fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
+                                double seconds, const fx::DeclaredShadowMap& shadow,
+                                const LitSceneOptions& options) const;
+    // Into `<prefix>.color` (RGBA16F, the output's size) and `<prefix>.depth` (Depth32F), cleared.
+    fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::Scene& scene,
+                                           const fx::SceneMeshes& meshes, double seconds,
+                                           const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options,
+                                           const std::string& prefix) const;
+
+    // The colour the window is cleared to: the scene's (linear) sky as the display shows it.
+    static fx::ClearColor windowClearColor(const fx::Scene& scene);
+
+private:
+    fx::gl::ReloadableProgram program_;
+
+    fx::Pass& addPass(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes, double seconds,
+                      const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options) const;
+};
+
+}  // namespace lesson03

@@ -1,0 +1,51 @@
+#include "ui_queue_pass.hpp"
+
+#include <algorithm>
+
+namespace lesson03 {
+
+using namespace fx;
+
+namespace {
+constexpr GLint kPanelLocation = 0;  // shaders/lessons/03_fbo_pipeline/ui_badge.frag
+}
+
+UiQueuePass UiQueuePass::create() {
+    UiQueuePass ui;
+    ui.pass_ = FullscreenPass("lessons/03_fbo_pipeline/ui_badge.frag", "ui queue");
+    return ui;
+}
+
+Viewport UiQueuePass::panelRect(Size2D size) {
+    constexpr int kMargin = 8;
+    Viewport rect;
+    rect.width = std::clamp(size.width - 2 * kMargin, 0, 160);
+    rect.height = std::clamp(size.height - 2 * kMargin, 0, 32);
+    // Bottom right, where the overlay's windows are not.
+    rect.x = std::max(size.width - kMargin - rect.width, 0);
+    rect.y = std::min(kMargin, size.height);
+    return rect;
+}
+
+Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
+    const FullscreenPass* pass = &pass_;
+    Viewport rect = panelRect(size);
+    Pass& ui = graph.addPass("ui queue", [pass, rect](PassContext&) {
+        glProgramUniform4f(pass->program(), kPanelLocation, float(rect.x), float(rect.y), float(rect.width),
+                           float(rect.height));
+        pass->draw({});
+    });
+    ui.modify(graph.output(), TextureUsage::ColorAttachment);
+    // The chapter's overlay queue: depth test off, blending on. Depth writes are left as they are
+    // (on): the chapter's engine never turns them off, and with the test off nothing is written.
+    ui.setState({.viewport = rect,
+                 .depthTest = false,
+                 .blend = true,
+                 .blendFunction = BlendFunction::alpha(),
+                 .faceCulling = false,
+                 .colorMask = ColorMask{}});
+    if (!pass_.usable()) ui.disable("the ui program did not build: " + pass_.error());
+    return ui;
+}
+
+}  // namespace lesson03

@@ -1,0 +1,33 @@
+#pragma once
+// The engine's own user-interface queue (seed 000 sections 3.3 and 3.4): the last pass of the frame,
+// straight into the window, with the depth test switched off and alpha blending on. It draws a small
+// translucent panel in the bottom-right corner. Two things in the lesson hang on it:
+//  - it leaves the depth test off for the next frame, which is what the reordered shadow pass of
+//    step 2 inherits;
+//  - from step 4 on it runs after the full-screen pass, so no image effect touches the interface.
+#include "effects/fullscreen_pass.hpp"
+#include "render/frame_graph.hpp"
+
+namespace lesson03 {
+
+class UiQueuePass {
+public:
+    UiQueuePass() = default;  // empty: no GL yet
+    static UiQueuePass create();
+
+    bool usable() const { return pass_.usable(); }
+    const std::string& error() const { return pass_.error(); }
+    fx::gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
+
+    // Draws the panel over the graph's output (`size` is the output's size this frame).
+    fx::Pass& declare(fx::FrameGraph& graph, fx::Size2D size) const;
+
+    // The panel's rectangle in window pixels: 8 px from the bottom-right corner, at most 160x32, never larger
+    // than the window (0x0 on a tiny one).
+    static fx::Viewport panelRect(fx::Size2D size);
+
+private:
+    fx::FullscreenPass pass_;
+};
+
+}  // namespace lesson03
