@@ -19,7 +19,7 @@ HdrScenePass HdrScenePass::create() {
 }
 
 HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                      double seconds) const {
+                                      double seconds, TextureFormat colorFormat) const {
     const gl::ReloadableProgram* program = &program_;
     Pass& pass = graph.addPass("scene", [program, &scene, &meshes, seconds](PassContext& ctx) {
         Size2D size = ctx.targetSize();
@@ -30,8 +30,8 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, con
         meshes.draw(name, scene, seconds);
     });
     HdrSceneTargets targets;
-    targets.color = pass.create("scene.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
-                                TextureUsage::ColorAttachment);
+    targets.color =
+        pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
     // The sky is linear HDR like everything else in the scene file; it obeys the same limit.

@@ -36,8 +36,10 @@ public:
     gl::ReloadableProgram* reloadable() { return &program_; }
 
     // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
-    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                            double seconds) const;
+    // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
+    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, seed 001 section 1.1).
+    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                            TextureFormat colorFormat = TextureFormat::RGBA16F) const;
 
 private:
     gl::ReloadableProgram program_;

@@ -5,6 +5,10 @@
 // tone mapping in these lessons, so HDR values clip to white, and negative ones (a colour matrix can
 // make them) to black instead of becoming NaN in the encoding curve.
 //
+// An optional tone curve compresses HDR light into [0, 1] before the encoding, so a lamp and the sun
+// no longer both clip to the same white: Reinhard x / (1 + x), or an ACES-style filmic curve
+// (Narkowicz's fit). Each works on each channel; `clip` (the default) is the chapters' picture.
+//
 // A split view shows two linear images through the same transform: `before` left of the divider,
 // the main input right of it, with a one-pixel line on the divider.
 //
@@ -16,6 +20,15 @@
 #include "render/frame_graph.hpp"
 
 namespace fx {
+
+enum class ToneCurve {
+    clip,      // none, as in the chapters: values above 1 clip per channel
+    reinhard,  // x / (1 + x)
+    filmic,    // ACES-style filmic: x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)
+};
+const char* toString(ToneCurve curve);
+// The curve on one linear channel value (>= 0), as the shader computes it: for tests and panels.
+float applyToneCurve(ToneCurve curve, float linear);
 
 struct SplitView {
     TextureHandle before;  // shown left of the divider
@@ -37,7 +50,8 @@ public:
 
     // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,
-                  const std::optional<SplitView>& split = std::nullopt) const;
+                  const std::optional<SplitView>& split = std::nullopt,
+                  ToneCurve curve = ToneCurve::clip) const;
 
 private:
     FullscreenPass pass_;

@@ -9,6 +9,8 @@ layout(binding = 0) uniform sampler2D after;
 layout(binding = 1) uniform sampler2D before;
 // The first pixel column that shows `after`; -1 without a split view.
 layout(location = 0) uniform int divider;
+// The tone curve before the encoding (effects/output_transform_pass.hpp: ToneCurve); 0: none.
+layout(location = 1) uniform int curve;
 
 layout(location = 0) out vec4 color;
 
@@ -17,7 +19,7 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     bool showBefore = texel.x < divider;
     vec3 linear = showBefore ? texelFetch(before, texel, 0).rgb : texelFetch(after, texel, 0).rgb;
-    vec3 encoded = linearToSrgb(linear);
+    vec3 encoded = linearToSrgb(toneCurve(linear, curve));
     // The divider: a white column with a dark one beside it, visible on light and dark pictures.
     if (divider >= 0 && texel.x == divider) encoded = vec3(1.0);
     if (divider >= 0 && texel.x == divider - 1) encoded = vec3(0.0);

@@ -1,0 +1,35 @@
+// Shared by the bloom passes (effects/bloom_chain.hpp). BLOOM_MAX_VALUE and BLOOM_MAX_BRIGHT come
+// from the C++ side (effects/bloom_settings.hpp) as defines, so the limits live in one place.
+
+// A colour made safe to filter and to store: NaN becomes 0 (GLSL leaves clamp(NaN) undefined, so it
+// is picked out first), and the rest is clamped to [lo, hi], which also turns +-Inf into a limit.
+// One bad texel then stays one bad texel instead of spreading through every level (seed 001, hard
+// cases 1 and 3).
+vec3 finiteClamp(vec3 c, float lo, float hi) {
+    return mix(clamp(c, lo, hi), vec3(0.0), isnan(c));
+}
+
+// The chapters' hue-preserving bright pass: the brightest channel b decides, and the colour is scaled
+// by (b - threshold) / b, so (2, 0.5, 0) keeps its green: (1, 0.25, 0) (seed 001, section 1.5).
+// knee > 0 rounds the corner at the threshold into a parabola (the quadratic soft knee), so a surface
+// that creeps over the threshold fades in instead of switching on; knee 0 is the chapters' hard cut.
+// The input must be >= 0: a negative channel would be scaled too and make a dark halo.
+vec3 brightPart(vec3 c, float threshold, float knee) {
+    float b = max(c.r, max(c.g, c.b));
+    float hard = max(b - threshold, 0.0);
+    float k = max(knee * threshold, 0.0);
+    float s = clamp(b - threshold + k, 0.0, 2.0 * k);
+    float soft = s * s / max(4.0 * k, 1e-5);
+    float amount = k > 0.0 ? max(hard, soft) : hard;
+    return c * (amount / max(b, 1e-5));  // 1e-5: black has b = 0 (seed 001's guard)
+}
+
+float luma(vec3 c) {
+    return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// One source texel in texture coordinates; a zero-sized texture counts as one texel, so nothing
+// divides by zero (the chain never makes one, but a shader must not trust that).
+vec2 texelSize(sampler2D s) {
+    return 1.0 / vec2(max(textureSize(s, 0), ivec2(1)));
+}

@@ -1,0 +1,44 @@
+#version 450 core
+// One step up the chain, and the composite (effects/bloom_chain.hpp, bloom_composite.hpp): the target
+// gets `base` (same size, read texel for texel) plus `scale` times the smaller `source`, blurred while
+// it is enlarged. The chapters add the enlarged level with additive blending onto the level itself;
+// writing the sum into a texture of its own gives the same numbers and keeps the level as it was
+// before, so the inspector can show both chains.
+//   filters 0 (seed 000): centre x3, 4 diagonals at +-offset (1) texels x2, 4 axial at 2 offset x1, / 15;
+//   filters 1 (seed 001): 4 axial taps at 2 offset (2 x 0.5) x1, 4 diagonal at offset x2, / 12;
+//   filters 2 (reference): one tap, source and target the same size.
+// Every sum is clamped below BLOOM_MAX_VALUE: levels that are finite alone cannot overflow a half
+// float once they are added up (seed 001, hard case 2).
+#include "bloom_common.glsl"
+
+layout(binding = 0) uniform sampler2D base;
+layout(binding = 1) uniform sampler2D source;
+layout(location = 0) uniform int filters;
+layout(location = 4) uniform float offset;
+layout(location = 6) uniform float scale;
+
+layout(location = 1) in vec2 uv;
+layout(location = 0) out vec4 color;
+
+vec3 tap(vec2 at) {
+    return texture(source, at).rgb;
+}
+
+void main() {
+    vec3 up;
+    if (filters == 2) {
+        up = tap(uv);
+    } else {
+        vec2 o = offset * texelSize(source);
+        vec3 diagonals = tap(uv + vec2(-o.x, o.y)) + tap(uv + vec2(o.x, o.y)) + tap(uv + vec2(-o.x, -o.y)) +
+                         tap(uv + vec2(o.x, -o.y));
+        vec3 axial = tap(uv + vec2(-2.0 * o.x, 0.0)) + tap(uv + vec2(2.0 * o.x, 0.0)) +
+                     tap(uv + vec2(0.0, -2.0 * o.y)) + tap(uv + vec2(0.0, 2.0 * o.y));
+        up = filters == 0 ? (3.0 * tap(uv) + 2.0 * diagonals + axial) / 15.0 : (2.0 * diagonals + axial) / 12.0;
+    }
+    // The scene under the glow keeps its sign (a negative texel stays as the scene made it); the glow
+    // itself is never negative.
+    vec3 under = finiteClamp(texelFetch(base, ivec2(gl_FragCoord.xy), 0).rgb, -BLOOM_MAX_VALUE, BLOOM_MAX_VALUE);
+    vec3 glow = finiteClamp(up, 0.0, BLOOM_MAX_VALUE);
+    color = vec4(finiteClamp(under + scale * glow, -BLOOM_MAX_VALUE, BLOOM_MAX_VALUE), 1.0);
+}
