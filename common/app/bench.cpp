@@ -126,7 +126,12 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     std::vector<std::string> effect;
     if (!result.effectTexture.empty()) effect.push_back(result.effectTexture);
     setKnobsToReference(params);
+    // A separate reference algorithm is rendered with every knob at its reference value too.
+    const std::string referenceName = lesson.benchReferenceName();
+    const bool separateReference = !referenceName.empty();
+    lesson.setBenchReference(separateReference);
     Measured reference = measure(lesson, renderer, frame, options.frames, "", effect);
+    lesson.setBenchReference(false);
 
     auto current = nlohmann::json::parse(savedParams);
     for (const Param* knob : params.knobs()) {
@@ -143,7 +148,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
             SweepPoint point;
             point.knob = knob->name;
             point.value = knob->valueText(value);
-            point.reference = value == knob->knob->reference;
+            point.reference = !separateReference && value == knob->knob->reference;
             point.current = current.contains(knob->name) && current[knob->name] == point.value;
             point.medianMs = m.medianMs;
             point.copyMultiple = result.copyMs > 0 ? m.medianMs / result.copyMs : 0;
@@ -154,6 +159,29 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
             }
             if (!reference.effect.empty() && !m.effect.empty()) {
                 if (auto d = compare(m.effect.front().pixels, reference.effect.front().pixels); d) {
+                    point.hasEffectError = true;
+                    point.effectRmse = d->rmse;
+                    point.effectPsnr = d->psnr;
+                    point.effectMaxAbs = d->maxAbs;
+                }
+            }
+            result.points.push_back(point);
+        }
+        if (separateReference) {
+            SweepPoint point;
+            point.knob = knob->name;
+            point.value = referenceName;
+            point.reference = true;
+            point.medianMs = reference.medianMs;
+            point.copyMultiple = result.copyMs > 0 ? reference.medianMs / result.copyMs : 0;
+            // Zero error by definition; compare() says how that is written (PSNR included).
+            if (auto d = compare(reference.image, reference.image); d) {
+                point.rmse = d->rmse;
+                point.psnr = d->psnr;
+                point.maxAbs = d->maxAbs;
+            }
+            if (!reference.effect.empty()) {
+                if (auto d = compare(reference.effect.front().pixels, reference.effect.front().pixels); d) {
                     point.hasEffectError = true;
                     point.effectRmse = d->rmse;
                     point.effectPsnr = d->psnr;
@@ -247,10 +275,10 @@ std::string describeSweep(const SweepResult& r) {
     std::ostringstream out;
     out << r.lesson << " at " << r.width << "x" << r.height << ", timing: " << r.timingMethod
         << ", one full-screen copy: " << number(r.copyMs) << " ms\n";
-    out << std::left << std::setw(18) << "knob" << std::setw(12) << "value" << std::setw(12) << "ms" << std::setw(10)
+    out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms" << std::setw(10)
         << "x copy" << std::setw(12) << "rmse" << "psnr dB\n";
     for (auto& p : r.points) {
-        out << std::left << std::setw(18) << p.knob << std::setw(12) << (p.value + (p.reference ? "*" : ""))
+        out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
             << std::setw(12) << number(p.medianMs) << std::setw(10) << number(p.copyMultiple) << std::setw(12)
             << number(p.rmse) << number(p.psnr) << "\n";
     }

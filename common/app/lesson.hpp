@@ -77,6 +77,13 @@ public:
     // The texture the lesson's effect writes (e.g. "radial_blur.color"); the bench measures its error
     // against the reference too, not only the final image's. Empty: the final image only.
     virtual std::string benchTexture() const { return {}; }
+    // A lesson whose right answer is another algorithm than any setting of its knobs (bloom: a direct
+    // full-resolution Gaussian instead of the chain) names it here and renders it while the bench
+    // has setBenchReference(true). The bench then measures every knob value with the lesson's own
+    // algorithm, the knobs' reference value included, and adds the reference algorithm as one more
+    // row per knob. Empty (the default): the reference is the knobs' reference setting.
+    virtual std::string benchReferenceName() const { return {}; }
+    virtual void setBenchReference(bool on) { (void)on; }
     // Extra facts for the report ("uniform look-ups per frame": 1200).
     virtual void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const { (void)facts; }
 };
