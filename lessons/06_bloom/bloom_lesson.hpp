@@ -1,0 +1,74 @@
+#pragma once
+// Lesson 06: bloom, with the whole chain live (seed 000 section 3.7, seed 001, reference/effects.md
+// section 1). Float targets first, then the two chapters' chains, then what the chapters leave out.
+#include <string>
+#include <vector>
+
+#include "app/lesson.hpp"
+#include "effects/bloom_chain.hpp"
+#include "effects/bloom_composite.hpp"
+#include "effects/bloom_reference.hpp"
+#include "effects/hdr_scene_pass.hpp"
+#include "effects/output_transform_pass.hpp"
+#include "effects/scene_meshes.hpp"
+
+namespace lesson06 {
+
+class BloomLesson final : public fx::Lesson {
+public:
+    fx::LessonInfo info() const override;
+    std::vector<fx::LessonStep> steps() const override;
+    void declareParams(fx::ParamSet& params) override;
+    fx::Status init(const fx::Scene& scene) override;
+    void shutdown() override;
+    void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
+    std::vector<fx::gl::ReloadableProgram*> programs() override;
+    void drawPanel(const fx::FrameInfo& frame) override;
+    int benchStep() const override { return Beyond; }
+    std::string benchTexture() const override { return "bloom.result"; }
+    std::string benchReferenceName() const override { return "Gaussian"; }
+    void setBenchReference(bool on) override { benchReference_ = on; }
+    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+
+    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond };
+
+    // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
+    fx::BloomChainSettings chainFor(int step) const;
+    // The composite's scale for a chain of `levels` levels in `step`.
+    float compositeScale(int step, int levels) const;
+    // What a large uniform area of grey value v comes out as in `step` (the chapters' invariant):
+    // v + gain * max(v - threshold, 0), with the gain for the levels that exist at `size`.
+    float uniformGain(int step, fx::Size2D size) const;
+
+private:
+    bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
+
+    // Parameters (the chapters' values).
+    float threshold_ = 1.0f;
+    float knee_ = 0.5f;
+    float intensity_ = 2.0f;   // seed 000's intensity; step 5's glow strength
+    float bloomScale_ = 2.0f;  // seed 001 (Exercise 01: 1.0)
+    int levels_ = 6;
+    float downOffset_ = 0.75f;
+    float upOffset_ = 0.5f;
+    int format_ = 0;  // index into kChainFormats
+    bool karis_ = true;
+    int toneCurve_ = 2;  // fx::ToneCurve::filmic
+    bool reference_ = false;
+    bool benchReference_ = false;
+
+    const fx::Scene* scene_ = nullptr;
+    fx::SceneMeshes meshes_;
+    fx::HdrScenePass scenePass_;
+    fx::BloomChain chain_;
+    fx::BloomComposite composite_;
+    fx::BloomReference reference_glow_;
+    fx::OutputTransformPass present_;
+    bool calledFor_ = true;
+    std::string notCalledReason_;
+    int lastStep_ = 0;
+    fx::Size2D lastSize_;
+    double bloomMs_ = 0, frameMs_ = 0;
+};
+
+}  // namespace lesson06
