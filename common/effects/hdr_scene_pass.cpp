@@ -11,6 +11,20 @@ constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene_hdr.frag
 
 }  // namespace
 
+PassState hdrSceneState(const Scene& scene) {
+    // The sky is linear HDR like everything else in the scene file; it obeys the same limit.
+    auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
+    return {.depthTest = true,
+            .depthWrite = true,
+            .depthFunction = DepthFunction::Less,
+            .blend = false,
+            .faceCulling = true,
+            .cullFace = CullFace::Back,
+            .colorMask = ColorMask{},
+            .clearColor = ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
+            .clearDepth = 1.0f};
+}
+
 HdrScenePass HdrScenePass::create() {
     HdrScenePass pass;
     pass.program_ = gl::ReloadableProgram(
@@ -34,18 +48,7 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, con
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    // The sky is linear HDR like everything else in the scene file; it obeys the same limit.
-    auto sky = [&](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-    pass.setState({.depthTest = true,
-                   .depthWrite = true,
-                   .depthFunction = DepthFunction::Less,
-                   .blend = false,
-                   .faceCulling = true,
-                   .cullFace = CullFace::Back,
-                   .colorMask = ColorMask{},
-                   .clearColor = ClearColor{sky(scene.background.r), sky(scene.background.g),
-                                            sky(scene.background.b), 1.0f},
-                   .clearDepth = 1.0f});
+    pass.setState(hdrSceneState(scene));
     if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
     return targets;
 }

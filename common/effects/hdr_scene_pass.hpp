@@ -21,6 +21,11 @@ namespace fx {
 // for about fifteen of them.
 inline constexpr float kSceneHdrMax = 4096.0f;
 
+// What an opaque scene draw into a float target depends on, declared by the pass itself: depth test
+// and writes (Less), no blending, back faces culled, every channel written; cleared to the scene's
+// sky (clamped to [0, kSceneHdrMax]) and depth 1. Every lit scene pass uses it.
+PassState hdrSceneState(const Scene& scene);
+
 struct HdrSceneTargets {
     TextureHandle color;
     TextureHandle depth;

@@ -26,19 +26,6 @@ void drawWithPlacements(GLuint program, const Scene& scene, const SceneMeshes& m
     }
 }
 
-PassState litState(const Scene& scene) {
-    auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-    return {.depthTest = true,
-            .depthWrite = true,
-            .depthFunction = DepthFunction::Less,
-            .blend = false,
-            .faceCulling = true,
-            .cullFace = CullFace::Back,
-            .colorMask = ColorMask{},
-            .clearColor = ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
-            .clearDepth = 1.0f};
-}
-
 }  // namespace
 
 ShadowLitPass ShadowLitPass::create() {
@@ -70,7 +57,7 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(litState(scene));
+    pass.setState(hdrSceneState(scene));
     if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
     return targets;
 }
@@ -100,7 +87,7 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
                                       TextureUsage::ColorAttachment);
     pass.create("shadow.light_view_depth", {TextureSize::absolute(size, size), TextureFormat::Depth32F, 1},
                 TextureUsage::DepthAttachment);
-    PassState state = litState(scene);
+    PassState state = hdrSceneState(scene);
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
     pass.setState(state);
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");

@@ -14,16 +14,13 @@ namespace {
 constexpr GLint kHdrMaxLocation = 30;     // shaders/lessons/03_fbo_pipeline/scene_lit.frag
 constexpr GLint kEncodeLocation = 31;
 
-// What the 3D draw depends on: depth testing and writing, no blending (the scene is opaque), back
-// faces culled. Declared by the pass itself from step 3 on.
-PassState sceneDrawState() {
-    return {.depthTest = true,
-            .depthWrite = true,
-            .depthFunction = DepthFunction::Less,
-            .blend = false,
-            .faceCulling = true,
-            .cullFace = CullFace::Back,
-            .colorMask = ColorMask{}};
+// What the 3D draw depends on (effects/hdr_scene_pass.hpp), declared by the pass itself from step 3
+// on. Its clears are the target's: the window's and the float target's skies differ.
+PassState sceneDrawState(const Scene& scene) {
+    PassState state = hdrSceneState(scene);
+    state.clearColor.reset();
+    state.clearDepth.reset();
+    return state;
 }
 
 }  // namespace
@@ -59,7 +56,7 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const Scene& scene, const SceneMe
         meshes.draw(name, scene, seconds);
     });
     if (hasMap) pass.read(map);
-    if (options.declaresState) pass.setState(sceneDrawState());
+    if (options.declaresState) pass.setState(sceneDrawState(scene));
     if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
     return pass;
 }
@@ -89,11 +86,7 @@ HdrSceneTargets LitScenePass::declareIntoTargets(FrameGraph& graph, const Scene&
                                 TextureUsage::DepthAttachment);
     // A float target holds linear light: the sky is cleared to its linear value, or to the display
     // value when the shader encodes (then everything in the target is display-encoded alike).
-    auto sky = [&](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-    pass.state().clearColor = options.encodeForDisplay
-                                  ? windowClearColor(scene)
-                                  : ClearColor{sky(scene.background.r), sky(scene.background.g),
-                                               sky(scene.background.b), 1.0f};
+    pass.state().clearColor = options.encodeForDisplay ? windowClearColor(scene) : hdrSceneState(scene).clearColor;
     pass.state().clearDepth = 1.0f;
     return targets;
 }
