@@ -61,8 +61,9 @@ double differingShare(const fx::ByteImage& a, const fx::ByteImage& b, int x0, in
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::cerr << "usage: fx_bloom_inspector_check <run with overlay> <run without>\n";
+    // run_window_test.sh also passes a path for a difference image, which this check does not write.
+    if (argc != 3 && argc != 4) {
+        std::cerr << "usage: fx_bloom_inspector_check <run with overlay> <run without> [unused]\n";
         return 2;
     }
     nlohmann::json with = readReport(argv[1]), without = readReport(argv[2]);
