@@ -114,6 +114,7 @@ Status BloomLesson::init(const Scene& scene) {
     chain_ = BloomChain::create();
     composite_ = BloomComposite::create();
     reference_glow_ = BloomReference::create();
+    flicker_ = BloomFlicker::create();
     present_ = OutputTransformPass::create();
     SceneFeatures sceneFeatures = features(scene);
     calledFor_ = sceneFeatures.has(SceneFeature::bloom);
@@ -130,7 +131,7 @@ void BloomLesson::shutdown() {
 
 std::vector<gl::ReloadableProgram*> BloomLesson::programs() {
     std::vector<gl::ReloadableProgram*> list{scenePass_.reloadable(), composite_.reloadable(),
-                                             present_.reloadable()};
+                                             present_.reloadable(), flicker_.reloadable()};
     for (auto* p : chain_.programs()) list.push_back(p);
     for (auto* p : reference_glow_.programs()) list.push_back(p);
     return list;
@@ -214,6 +215,12 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 calledFor_ ? result.pass.disable(off) : result.pass.notCalledFor(off);
             } else {
                 shown = result.output;
+                // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
+                // Another step or Karis setting is a change of chain, not flicker: start over.
+                bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
+                flickerStep_ = step;
+                flickerKaris_ = settings.karisAverage;
+                flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
             }
         }
     }
@@ -250,6 +257,13 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
     if (step == Beyond) {
         ImGui::Text("tone curve: %s%s", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))),
                     showsReference(step) ? ", showing the reference Gaussian" : "");
+    }
+    const BloomFlicker::Stats& f = flicker_.stats();
+    if (f.measured && !showsReference(step)) {
+        ImGui::Text("glow change since last frame: %.2f %% (last %d frames: mean %.2f %%, max %.2f %%)",
+                    f.changePercent, BloomFlicker::kWindow, f.meanPercent, f.maxPercent);
+        ImGui::TextWrapped("Inspect bloom.flicker to see where: |this frame's glow - last frame's|.%s",
+                           step == Beyond ? " Switch karis off to see the firefly flicker." : "");
     }
     ImGui::Text("bloom passes: %.3f ms of %.3f ms", bloomMs_, frameMs_);
     if (!calledFor_) ImGui::TextWrapped("bloom not run: %s", notCalledReason_.c_str());

@@ -7,6 +7,7 @@
 #include "app/lesson.hpp"
 #include "effects/bloom_chain.hpp"
 #include "effects/bloom_composite.hpp"
+#include "effects/bloom_flicker.hpp"
 #include "effects/bloom_reference.hpp"
 #include "effects/hdr_scene_pass.hpp"
 #include "effects/output_transform_pass.hpp"
@@ -63,6 +64,9 @@ private:
     fx::BloomChain chain_;
     fx::BloomComposite composite_;
     fx::BloomReference reference_glow_;
+    fx::BloomFlicker flicker_;  // the glow's frame-to-frame change (bloom.flicker)
+    int flickerStep_ = -1;      // the step and Karis setting the flicker measure last compared
+    bool flickerKaris_ = false;
     fx::OutputTransformPass present_;
     bool calledFor_ = true;
     std::string notCalledReason_;
