@@ -90,6 +90,26 @@ Measured measure(Lesson& lesson, FrameRenderer& renderer, const FrameInfo& frame
     return m;
 }
 
+// A setting's time, its cost in copies, and its error against the reference: the final image, and
+// the lesson's effect texture when both frames captured it.
+void fillMeasurement(SweepPoint& point, const Measured& m, const Measured& reference, double copyMs) {
+    point.medianMs = m.medianMs;
+    point.copyMultiple = copyMs > 0 ? m.medianMs / copyMs : 0;
+    if (auto d = compare(m.image, reference.image); d) {
+        point.rmse = d->rmse;
+        point.psnr = d->psnr;
+        point.maxAbs = d->maxAbs;
+    }
+    if (!reference.effect.empty() && !m.effect.empty()) {
+        if (auto d = compare(m.effect.front().pixels, reference.effect.front().pixels); d) {
+            point.hasEffectError = true;
+            point.effectRmse = d->rmse;
+            point.effectPsnr = d->psnr;
+            point.effectMaxAbs = d->maxAbs;
+        }
+    }
+}
+
 void setKnobsToReference(const ParamSet& params) {
     for (const Param* p : params.knobs()) p->set(p->knob->reference);
 }
@@ -150,21 +170,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
             point.value = knob->valueText(value);
             point.reference = !separateReference && value == knob->knob->reference;
             point.current = current.contains(knob->name) && current[knob->name] == point.value;
-            point.medianMs = m.medianMs;
-            point.copyMultiple = result.copyMs > 0 ? m.medianMs / result.copyMs : 0;
-            if (auto d = compare(m.image, reference.image); d) {
-                point.rmse = d->rmse;
-                point.psnr = d->psnr;
-                point.maxAbs = d->maxAbs;
-            }
-            if (!reference.effect.empty() && !m.effect.empty()) {
-                if (auto d = compare(m.effect.front().pixels, reference.effect.front().pixels); d) {
-                    point.hasEffectError = true;
-                    point.effectRmse = d->rmse;
-                    point.effectPsnr = d->psnr;
-                    point.effectMaxAbs = d->maxAbs;
-                }
-            }
+            fillMeasurement(point, m, reference, result.copyMs);
             result.points.push_back(point);
         }
         if (separateReference) {
@@ -172,22 +178,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
             point.knob = knob->name;
             point.value = referenceName;
             point.reference = true;
-            point.medianMs = reference.medianMs;
-            point.copyMultiple = result.copyMs > 0 ? reference.medianMs / result.copyMs : 0;
-            // Zero error by definition; compare() says how that is written (PSNR included).
-            if (auto d = compare(reference.image, reference.image); d) {
-                point.rmse = d->rmse;
-                point.psnr = d->psnr;
-                point.maxAbs = d->maxAbs;
-            }
-            if (!reference.effect.empty()) {
-                if (auto d = compare(reference.effect.front().pixels, reference.effect.front().pixels); d) {
-                    point.hasEffectError = true;
-                    point.effectRmse = d->rmse;
-                    point.effectPsnr = d->psnr;
-                    point.effectMaxAbs = d->maxAbs;
-                }
-            }
+            fillMeasurement(point, reference, reference, result.copyMs);  // zero error, as compare() writes it
             result.points.push_back(point);
         }
     }
