@@ -2,7 +2,7 @@
 // A glTF 2.0 model as fxlab uses it, without GL: triangle meshes (positions, normals, texture
 // coordinates, joints and weights, 32-bit indices whatever the file stored), materials (base colour
 // and emissive, each with an optional texture file), the node hierarchy, skins and animation clips.
-// gltf_loader.hpp reads one from a file; effects/gpu_model.hpp puts it on the GPU.
+// gltf_loader.hpp reads one from a file; effects/scene/gpu_model.hpp puts it on the GPU.
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -8,6 +8,7 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/paths.hpp"
 #include "scene/asset_path.hpp"
 #include "scene/json_document.hpp"
 #include "scene/scene_parse.hpp"
@@ -61,8 +62,7 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
 }  // namespace
 
 fs::path defaultAssetRoot() {
-    const char* root = std::getenv("FXLAB_ROOT");
-    return fs::path(root && *root ? root : FXLAB_SOURCE_ROOT) / "res";
+    return resourceDir();
 }
 
 AssetRef AssetPathReader::optional(JsonFieldReader& object, std::string_view key) const {

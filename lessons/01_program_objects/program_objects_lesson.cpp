@@ -8,7 +8,7 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
-#include "effects/camera_matrices.hpp"
+#include "effects/scene/camera_matrices.hpp"
 #include "raw_programs.hpp"
 
 namespace lesson01 {

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "app/lesson.hpp"
-#include "effects/gpu_mesh.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/scene/gpu_mesh.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "gl/program.hpp"
 
 namespace lesson01 {

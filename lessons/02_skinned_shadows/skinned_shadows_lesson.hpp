@@ -5,10 +5,10 @@
 #include <glm/mat4x4.hpp>
 
 #include "app/lesson.hpp"
-#include "effects/output_transform_pass.hpp"
-#include "effects/scene_meshes.hpp"
-#include "effects/shadow_lit_pass.hpp"
-#include "effects/shadow_map.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
 
 namespace lesson02 {
 

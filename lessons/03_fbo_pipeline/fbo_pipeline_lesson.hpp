@@ -5,10 +5,10 @@
 #include <vector>
 
 #include "app/lesson.hpp"
-#include "effects/fullscreen_pass.hpp"
-#include "effects/output_transform_pass.hpp"
-#include "effects/scene_meshes.hpp"
-#include "effects/shadow_map.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
 #include "lit_scene_pass.hpp"
 #include "ui_queue_pass.hpp"
 

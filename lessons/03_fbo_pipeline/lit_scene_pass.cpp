@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "effects/camera_matrices.hpp"
+#include "effects/scene/camera_matrices.hpp"
 #include "image/view_transform.hpp"
 
 namespace lesson03 {
@@ -14,7 +14,7 @@ namespace {
 constexpr GLint kHdrMaxLocation = 30;     // shaders/lessons/03_fbo_pipeline/scene_lit.frag
 constexpr GLint kEncodeLocation = 31;
 
-// What the 3D draw depends on (effects/hdr_scene_pass.hpp), declared by the pass itself from step 3
+// What the 3D draw depends on (effects/scene/hdr_scene_pass.hpp), declared by the pass itself from step 3
 // on. Its clears are the target's: the window's and the float target's skies differ.
 PassState sceneDrawState(const Scene& scene) {
     PassState state = hdrSceneState(scene);

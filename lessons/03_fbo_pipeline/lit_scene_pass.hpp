@@ -8,9 +8,9 @@
 //    on the frame's "draw state" set earlier, as the chapter's Render() does until section 3.3.
 #include <string>
 
-#include "effects/hdr_scene_pass.hpp"
-#include "effects/scene_meshes.hpp"
-#include "effects/shadow_map.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 

@@ -5,7 +5,7 @@
 //  - it leaves the depth test off for the next frame, which is what the reordered shadow pass of
 //    step 2 inherits;
 //  - from step 4 on it runs after the full-screen pass, so no image effect touches the interface.
-#include "effects/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "render/frame_graph.hpp"
 
 namespace lesson03 {

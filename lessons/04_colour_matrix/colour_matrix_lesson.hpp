@@ -1,10 +1,10 @@
 #pragma once
 // Lesson 04: colour matrix (seed 000, sections 3.4 and 3.5, hard cases 5 to 8, Exercise 02).
 #include "app/lesson.hpp"
-#include "effects/colour_matrix.hpp"
-#include "effects/hdr_scene_pass.hpp"
-#include "effects/output_transform_pass.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/post/colour_matrix.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
 
 namespace lesson04 {
 

@@ -1,10 +1,10 @@
 #pragma once
 // Lesson 05: radial blur (seed 000, section 3.6, hard cases 1 to 4, Exercises 03 and 04).
 #include "app/lesson.hpp"
-#include "effects/hdr_scene_pass.hpp"
-#include "effects/output_transform_pass.hpp"
-#include "effects/radial_blur.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/post/radial_blur.hpp"
+#include "effects/scene/scene_meshes.hpp"
 
 namespace lesson05 {
 

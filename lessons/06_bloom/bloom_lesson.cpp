@@ -188,7 +188,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (!calledFor_) off = notCalledReason_;
 
     if (showsReference(step)) {
-        // The reference: what the chain approximates, computed directly (effects/bloom_reference.hpp).
+        // The reference: what the chain approximates, computed directly (effects/bloom/bloom_reference.hpp).
         std::vector<BloomLevel> levels = bloomLevels(graph.outputSize(), 2, levels_);
         BloomReferenceSettings r{
             threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "base/paths.hpp"
-#include "effects/gpu_model.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/scene/gpu_model.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "gl/readback.hpp"
 #include "gl_test.hpp"
 #include "scene/gltf_loader.hpp"

@@ -3,12 +3,12 @@
 // frame. Seed 001's chain blooms every covered pixel in proportion to its value, so the glow's energy
 // jumps with the coverage; the Karis average on the first downsample (step 5) weights each tap by
 // 1 / (1 + luma), so a lone bright texel can no longer outweigh its neighbours and the glow steadies.
-// Also: effects/bloom_flicker.hpp measures what this test measures, on GL.
+// Also: effects/bloom/bloom_flicker.hpp measures what this test measures, on GL.
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "effects/bloom_flicker.hpp"
+#include "effects/bloom/bloom_flicker.hpp"
 #include "gl_test.hpp"
 #include "test_bloom_harness.hpp"
 

@@ -3,9 +3,9 @@
 // does, and reads the floats back (tests/gl/test_bloom*.cpp).
 #include <cmath>
 
-#include "effects/bloom_chain.hpp"
-#include "effects/bloom_composite.hpp"
-#include "effects/bloom_reference.hpp"
+#include "effects/bloom/bloom_chain.hpp"
+#include "effects/bloom/bloom_composite.hpp"
+#include "effects/bloom/bloom_reference.hpp"
 #include "test_fullscreen_harness.hpp"
 
 namespace fx::test {

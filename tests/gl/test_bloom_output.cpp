@@ -3,7 +3,7 @@
 // 6 (a lamp) and 300 (the sun) no longer both come out as white. Read back as the presented bytes.
 #include <cmath>
 
-#include "effects/output_transform_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
 #include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"
 

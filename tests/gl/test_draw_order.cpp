@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "base/paths.hpp"
-#include "effects/scene_meshes.hpp"
-#include "effects/shadow_map.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
 #include "gl/readback.hpp"
 #include "gl_test.hpp"
 #include "render/frame_graph.hpp"

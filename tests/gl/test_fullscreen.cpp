@@ -2,11 +2,11 @@
 // gamma test vectors), the split view, and the linear-HDR scene pass's limits.
 #include <cmath>
 
-#include "effects/colour_matrix.hpp"
-#include "effects/fullscreen_pass.hpp"
-#include "effects/hdr_scene_pass.hpp"
-#include "effects/output_transform_pass.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/post/colour_matrix.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "effects/radial_blur.hpp"
+#include "effects/post/radial_blur.hpp"
 #include "gl_test.hpp"
 #include "image/image_stats.hpp"
 #include "test_fullscreen_harness.hpp"

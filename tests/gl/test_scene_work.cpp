@@ -1,12 +1,13 @@
 // Simulate and draw only what the scene calls for. A small lesson-shaped frame graph built with SceneWork
 // runs on the real GL executor and texture pool; for each feature, the same scene with and without it
 // must run the expected passes, allocate the expected texture bytes, and call the expected updates.
+#include "base/paths.hpp"
 #include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "effects/scene_work.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "gl_test.hpp"
 #include "render/frame_graph.hpp"
 #include "render/texture_pool.hpp"
@@ -96,7 +97,7 @@ Scene baseScene() {
     auto scene = parseScene(R"({"name": "base", "camera": {"position": [0, 2, 8], "target": [0, 0, 0]},
         "lights": [{"type": "directional", "direction": [0, -1, 0]}],
         "objects": [{"name": "ground", "primitive": {"shape": "plane"}}]})",
-                            "base.json", {std::filesystem::path(FXLAB_SOURCE_ROOT) / "res", false});
+                            "base.json", {fx::projectRoot() / "res", false});
     EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error());
     return scene.ok() ? *scene : Scene{};
 }

@@ -13,8 +13,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/paths.hpp"
-#include "effects/shadow_lit_pass.hpp"
-#include "effects/shadow_map.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/object.hpp"
 #include "gl/readback.hpp"

@@ -10,9 +10,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/paths.hpp"
-#include "effects/gpu_model.hpp"
-#include "effects/gpu_skinning.hpp"
-#include "effects/scene_meshes.hpp"
+#include "effects/scene/gpu_model.hpp"
+#include "effects/scene/gpu_skinning.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
 #include "gl/readback.hpp"
@@ -198,7 +198,7 @@ TEST_F(Skinning, PosedAndInShaderSkinningDrawTheSamePicture) {
         gl::Program::build({"lessons/01_program_objects/lit.vert", litFragment, {}, {}, "posed"});
     ASSERT_TRUE(posedProgram.ok()) << posedProgram.error();
     auto sourceProgram =
-        gl::Program::build({"effects/skinning/skinned_scene.vert", litFragment, {}, {}, "skinned"});
+        gl::Program::build({"effects/scene/skinned_scene.vert", litFragment, {}, {}, "skinned"});
     ASSERT_TRUE(sourceProgram.ok()) << sourceProgram.error();
 
     const int size = 96;

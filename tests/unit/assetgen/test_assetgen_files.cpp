@@ -1,5 +1,6 @@
 // The generator is deterministic and the committed files are what it writes: two runs give the same
 // bytes, and a run into a fresh folder reproduces res/models and res/textures byte for byte.
+#include "base/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path resDir() {
-    return fs::path(FXLAB_SOURCE_ROOT) / "res";
+    return fx::projectRoot() / "res";
 }
 
 std::string readBytes(const fs::path& file) {

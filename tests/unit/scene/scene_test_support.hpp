@@ -1,5 +1,6 @@
 #pragma once
 // Shared by the scene tests: where the fixtures are, and loading them with the test asset root.
+#include "base/paths.hpp"
 #include <filesystem>
 #include <string>
 
@@ -12,7 +13,7 @@ inline std::filesystem::path dataDir() {
     return std::filesystem::path(FXLAB_TEST_DATA) / "scenes";
 }
 inline std::filesystem::path resDir() {
-    return std::filesystem::path(FXLAB_SOURCE_ROOT) / "res";
+    return fx::projectRoot() / "res";
 }
 
 // Test scenes may use files under tests/data.

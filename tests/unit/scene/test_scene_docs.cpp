@@ -1,4 +1,5 @@
 // docs/scene-format.md shows the every-field fixture and the smallest scene; they must stay true.
+#include "base/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <string>
@@ -26,7 +27,7 @@ std::vector<std::string> jsonBlocks(const std::string& markdown) {
 }
 
 TEST(SceneDocs, ExamplesMatchTheFixturesAndLoad) {
-    auto markdown = fx::readTextFile(std::filesystem::path(FXLAB_SOURCE_ROOT) / "docs" / "scene-format.md");
+    auto markdown = fx::readTextFile(fx::projectRoot() / "docs" / "scene-format.md");
     ASSERT_TRUE(markdown.ok()) << markdown.error();
     auto blocks = jsonBlocks(*markdown);
     ASSERT_GE(blocks.size(), 2u);

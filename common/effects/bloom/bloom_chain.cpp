@@ -1,0 +1,133 @@
+#include "effects/bloom/bloom_chain.hpp"
+
+#include <string>
+
+#include "base/log.hpp"
+
+namespace fx {
+
+std::string bloomShaderDefines() {
+    // std::to_string writes "60000.000000": a float literal in GLSL, not an int.
+    return cat("#define BLOOM_MAX_VALUE ", std::to_string(kBloomMaxValue), "\n#define BLOOM_MAX_BRIGHT ",
+               std::to_string(kBloomMaxBright), "\n");
+}
+
+BloomSampler BloomSampler::create() {
+    BloomSampler s;
+    s.sampler_ = gl::createSampler("bloom (linear, clamp to edge)");
+    GLuint name = s.sampler_.name();
+    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return s;
+}
+
+void BloomSampler::bind() const {
+    glBindSampler(0, sampler_.name());
+    glBindSampler(1, sampler_.name());
+}
+
+void BloomSampler::unbind() {
+    // Units 0 and 1 go back to their textures' own parameters: the next pass did not ask for ours.
+    glBindSampler(0, 0);
+    glBindSampler(1, 0);
+}
+
+BloomChain BloomChain::create() {
+    BloomChain c;
+    std::string defines = bloomShaderDefines();
+    c.extract_ = FullscreenPass("effects/bloom/extract.frag", "bloom bright pass", defines);
+    c.down_ = FullscreenPass("effects/bloom/downsample.frag", "bloom downsample", defines);
+    c.up_ = FullscreenPass("effects/bloom/upsample.frag", "bloom upsample", defines);
+    c.sampler_ = BloomSampler::create();
+    return c;
+}
+
+std::string BloomChain::error() const {
+    for (const FullscreenPass* p : {&extract_, &down_, &up_}) {
+        if (!p->usable()) return p->error();
+    }
+    return {};
+}
+
+std::vector<gl::ReloadableProgram*> BloomChain::programs() {
+    return {extract_.reloadable(), down_.reloadable(), up_.reloadable()};
+}
+
+BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
+                                         const BloomChainSettings& settings) const {
+    Declared d;
+    d.settings = settings;
+    d.levels = bloomLevels(graph.outputSize(), firstLevelDivisor(settings.filters), settings.levels);
+    if (d.levels.empty()) return d;
+    const int filters = static_cast<int>(settings.filters);
+    const BloomSampler* sampler = &sampler_;
+    auto level = [&](const char* chain, const BloomLevel& l) {
+        return graph.declareTexture(cat("bloom.", chain, "[", l.index, "]"),
+                                    {TextureSize::outputFraction(1, l.divisor), settings.format, 1});
+    };
+    std::string broken = usable() ? std::string() : "a bloom program did not build: " + error();
+
+    // The bright pass: the scene's bright part, shrunk into level 0.
+    const FullscreenPass* extract = &extract_;
+    d.down.push_back(level("down", d.levels[0]));
+    Pass& bright = graph.addPass("bloom bright pass", [=](PassContext& ctx) {
+        GLuint p = extract->program();
+        glProgramUniform1i(p, bloom_uniform::filters, filters);
+        glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
+        glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
+        glProgramUniform1f(p, bloom_uniform::scale, settings.extractScale);
+        glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+        glProgramUniform1i(p, bloom_uniform::karis, settings.karisAverage ? 1 : 0);
+        sampler->bind();
+        extract->draw({ctx.native(input)});
+        BloomSampler::unbind();
+    });
+    bright.read(input).writeColor(d.down[0]).setState(FullscreenPass::state());
+    d.passes.push_back(&bright);
+
+    // Down the chain: each level from the one above it, with blending off, so the level is overwritten.
+    const FullscreenPass* down = &down_;
+    for (std::size_t k = 1; k < d.levels.size(); ++k) {
+        TextureHandle from = d.down[k - 1];
+        d.down.push_back(level("down", d.levels[k]));
+        Pass& pass = graph.addPass(cat("bloom down ", k), [=](PassContext& ctx) {
+            GLuint p = down->program();
+            glProgramUniform1i(p, bloom_uniform::filters, filters);
+            glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+            sampler->bind();
+            down->draw({ctx.native(from)});
+            BloomSampler::unbind();
+        });
+        pass.read(from).writeColor(d.down[k]).setState(FullscreenPass::state());
+        d.passes.push_back(&pass);
+    }
+
+    // Up the chain, smallest first: level k gets itself plus the enlarged sum of everything below it.
+    const FullscreenPass* up = &up_;
+    std::size_t n = d.levels.size();
+    d.up.resize(n > 1 ? n - 1 : 0);
+    for (std::size_t k = n - 1; k-- > 0;) {
+        TextureHandle below = k + 2 < n ? d.up[k + 1] : d.down[k + 1];
+        TextureHandle base = d.down[k];
+        d.up[k] = level("up", d.levels[k]);
+        Pass& pass = graph.addPass(cat("bloom up ", k), [=](PassContext& ctx) {
+            GLuint p = up->program();
+            glProgramUniform1i(p, bloom_uniform::filters, filters);
+            glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
+            glProgramUniform1f(p, bloom_uniform::upScale, 1.0f);  // the chapters add every level at weight 1
+            sampler->bind();
+            up->draw({ctx.native(base), ctx.native(below)});
+            BloomSampler::unbind();
+        });
+        pass.read(base).read(below).writeColor(d.up[k]).setState(FullscreenPass::state());
+        d.passes.push_back(&pass);
+    }
+    if (!broken.empty()) {
+        for (Pass* p : d.passes) p->disable(broken);
+    }
+    return d;
+}
+
+}  // namespace fx

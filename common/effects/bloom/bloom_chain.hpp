@@ -1,0 +1,80 @@
+#pragma once
+// The bloom chain of seeds 000 and 001 (effects/bloom/bloom_settings.hpp says which filters): the bright
+// part of the scene shrunk into the first level, each level blurred down into the next, then each
+// level added back on the way up. Declared on the frame graph as
+//   "bloom bright pass"     input          -> bloom.down[0]
+//   "bloom down k"          bloom.down[k-1] -> bloom.down[k]          k = 1 .. N-1
+//   "bloom up k"            bloom.down[k] + Up(bloom.up[k+1]) -> bloom.up[k]   k = N-2 .. 0
+// (the smallest level's accumulated value is bloom.down[N-1] itself). The chapters add the enlarged
+// level onto the level in place with additive blending; keeping the sum in a texture of its own gives
+// the same numbers and lets the inspector's chain strip show every level before (bloom.down[*]) and
+// after (bloom.up[*]) accumulation. The graph tracks whole textures, so every level is a texture.
+//
+// Sizes follow the output every frame (render/bloom_levels.hpp); a level below one texel is not made,
+// and an output too small for even the first level declares nothing.
+//
+//   BloomChain chain = BloomChain::create();
+//   BloomChain::Declared d = chain.declare(graph, hdr.color, chapter001Bloom());
+//   composite.declare(graph, hdr.color, d, ...);
+#include <string>
+#include <vector>
+
+#include "effects/bloom/bloom_settings.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "render/bloom_levels.hpp"
+#include "render/frame_graph.hpp"
+
+namespace fx {
+
+// Uniform locations shared by shaders/effects/bloom/*.frag.
+namespace bloom_uniform {
+inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset = 4, karis = 5, upScale = 6;
+}
+
+// What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.
+std::string bloomShaderDefines();
+
+// A sampler with GL_LINEAR and CLAMP_TO_EDGE bound to units 0 and 1 for one draw: the chapters' kernels
+// rely on bilinear taps, and REPEAT would bring light from the opposite edge (seed 001, hard case 11).
+// Whatever a texture's own parameters say, the bloom passes filter the same way.
+class BloomSampler {
+public:
+    BloomSampler() = default;
+    static BloomSampler create();
+    void bind() const;
+    static void unbind();
+
+private:
+    gl::SamplerName sampler_;
+};
+
+class BloomChain {
+public:
+    BloomChain() = default;  // empty: no GL yet
+    static BloomChain create();
+
+    bool usable() const { return extract_.usable() && down_.usable() && up_.usable(); }
+    std::string error() const;
+    std::vector<gl::ReloadableProgram*> programs();
+
+    struct Declared {
+        BloomChainSettings settings;
+        std::vector<BloomLevel> levels;   // those that exist at this output size
+        std::vector<TextureHandle> down;  // bloom.down[k]: level k before accumulation
+        std::vector<TextureHandle> up;    // bloom.up[k], k < N-1: level k plus everything below it
+        std::vector<Pass*> passes;
+        bool empty() const { return levels.empty(); }
+        // The top of the accumulated chain (bloom.up[0], or bloom.down[0] for a one-level chain).
+        TextureHandle glow() const { return up.empty() ? down.front() : up.front(); }
+    };
+    // Declares nothing when no level fits the output.
+    Declared declare(FrameGraph& graph, TextureHandle input, const BloomChainSettings& settings) const;
+
+private:
+    FullscreenPass extract_;
+    FullscreenPass down_;
+    FullscreenPass up_;
+    BloomSampler sampler_;
+};
+
+}  // namespace fx

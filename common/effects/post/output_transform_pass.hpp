@@ -1,0 +1,60 @@
+#pragma once
+// The frame's one output transform: linear light to the sRGB encoding the display expects, written
+// into the presented output at the very end (seed 000 section 3.4). Every pass before it works on
+// linear values; nothing after it changes the colour. Values are clamped to [0, 1] first: there is no
+// tone mapping in these lessons, so HDR values clip to white, and negative ones (a colour matrix can
+// make them) to black instead of becoming NaN in the encoding curve.
+//
+// An optional tone curve compresses HDR light into [0, 1] before the encoding, so a lamp and the sun
+// no longer both clip to the same white: Reinhard x / (1 + x), or an ACES-style filmic curve
+// (Narkowicz's fit). Each works on each channel; `clip` (the default) is the chapters' picture.
+//
+// A split view shows two linear images through the same transform: `before` left of the divider,
+// the main input right of it, with a one-pixel line on the divider.
+//
+//   OutputTransformPass present = OutputTransformPass::create();
+//   present.declare(graph, graded, SplitView{hdr.color, 0.5f});
+#include <optional>
+
+#include "effects/post/fullscreen_pass.hpp"
+#include "render/frame_graph.hpp"
+
+namespace fx {
+
+enum class ToneCurve {
+    clip,      // none, as in the chapters: values above 1 clip per channel
+    reinhard,  // x / (1 + x)
+    filmic,    // ACES-style filmic: x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)
+};
+const char* toString(ToneCurve curve);
+// The curve on one linear channel value (>= 0), as the shader computes it: for tests and panels.
+float applyToneCurve(ToneCurve curve, float linear);
+
+struct SplitView {
+    TextureHandle before;  // shown left of the divider
+    float divider = 0.5f;  // where the divider is, as a fraction of the output's width (clamped to [0, 1])
+};
+
+// The divider's x in framebuffer pixels for an output `width` wide: the first column that shows the
+// main input. A fraction outside [0, 1] is clamped (0: all after, 1: all before).
+int splitDividerPixel(float divider, int width);
+
+class OutputTransformPass {
+public:
+    OutputTransformPass() = default;  // empty: no GL yet
+    static OutputTransformPass create();
+
+    bool usable() const { return pass_.usable(); }
+    const std::string& error() const { return pass_.error(); }
+    gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
+
+    // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
+    Pass& declare(FrameGraph& graph, TextureHandle linear,
+                  const std::optional<SplitView>& split = std::nullopt,
+                  ToneCurve curve = ToneCurve::clip) const;
+
+private:
+    FullscreenPass pass_;
+};
+
+}  // namespace fx

@@ -1,0 +1,96 @@
+#include "effects/post/radial_blur.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace fx {
+namespace {
+
+// shaders/effects/radial_blur_offset.glsl (both programs) and radial_blur.frag (samples: the blur only;
+// setting a location a program does not have is a GL error).
+constexpr GLint kCentreLocation = 0;
+constexpr GLint kLengthLocation = 1;
+constexpr GLint kStartLocation = 2;
+constexpr GLint kFormulaLocation = 3;
+constexpr GLint kSamplesLocation = 4;
+constexpr GLint kSizeLocation = 5;
+
+const RadialBlurFormulaInfo kFormulas[] = {
+    {"first version", "v = (centre - uv) * length", false},
+    {"the chapter's start distance", "v = d * (max(|d| - start, 0) / |d|) * length: 0/0 at the centre pixel",
+     true},
+    {"guarded", "v = |d| > eps ? d * (max(|d| - start, 0) / |d|) * length : 0", false},
+};
+
+void setUniforms(GLuint program, const RadialBlurParams& params, Size2D size) {
+    glm::vec2 centre = radialBlurCentrePixels(params, size);
+    glProgramUniform2f(program, kCentreLocation, centre.x, centre.y);
+    glProgramUniform1f(program, kLengthLocation, params.length);
+    glProgramUniform1f(program, kStartLocation, params.start);
+    glProgramUniform1i(program, kFormulaLocation, static_cast<int>(params.formula));
+    glProgramUniform2f(program, kSizeLocation, float(std::max(size.width, 1)),
+                       float(std::max(size.height, 1)));
+}
+
+}  // namespace
+
+const RadialBlurFormulaInfo& describe(RadialBlurFormula formula) {
+    return kFormulas[std::clamp(static_cast<int>(formula), 0, 2)];
+}
+
+glm::vec2 radialBlurCentrePixels(const RadialBlurParams& params, Size2D size) {
+    double x = double(params.centre.x) * size.width, y = double(params.centre.y) * size.height;
+    if (params.centreOnPixel) {
+        x = std::floor(x) + 0.5;
+        y = std::floor(y) + 0.5;
+    }
+    return {float(x), float(y)};
+}
+
+glm::vec2 radialBlurTapOffset(const RadialBlurParams& params, Size2D size, glm::vec2 pixel) {
+    glm::vec2 extent(float(std::max(size.width, 1)), float(std::max(size.height, 1)));
+    glm::vec2 d = (radialBlurCentrePixels(params, size) - pixel) / extent;
+    if (params.formula == RadialBlurFormula::firstVersion) return d * params.length;
+    float lenA = glm::length(d);
+    float lenB = std::max(lenA - params.start, 0.0f);
+    if (params.formula == RadialBlurFormula::chapter) return d * (lenB / lenA) * params.length;
+    return lenA > kRadialBlurCentreEpsilon ? d * (lenB / lenA) * params.length : glm::vec2(0.0f);
+}
+
+RadialBlur RadialBlur::create() {
+    RadialBlur r;
+    r.blur_ = FullscreenPass("effects/post/radial_blur.frag", "radial blur");
+    r.offsets_ = FullscreenPass("effects/post/radial_blur_offset.frag", "radial blur offsets");
+    return r;
+}
+
+RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
+                                         const RadialBlurParams& params, TextureFormat format) const {
+    const FullscreenPass* blur = &blur_;
+    Pass& blurPass = graph.addPass("radial blur", [blur, input, params](PassContext& ctx) {
+        setUniforms(blur->program(), params, ctx.targetSize());
+        glProgramUniform1i(blur->program(), kSamplesLocation,
+                           std::clamp(params.samples, 1, kRadialBlurMaxSamples));
+        blur->draw({ctx.native(input)});
+    });
+    TextureHandle result =
+        blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
+    blurPass.read(input).setState(FullscreenPass::state());
+    if (!blur_.usable()) blurPass.disable("the radial blur program did not build: " + blur_.error());
+
+    const FullscreenPass* offsets = &offsets_;
+    Pass& offsetPass = graph.addPass("radial blur offsets", [offsets, params](PassContext& ctx) {
+        setUniforms(offsets->program(), params, ctx.targetSize());
+        offsets->draw({});
+    });
+    TextureHandle offset = offsetPass.create("blur.offset", {TextureSize::output(), TextureFormat::RG16F, 1},
+                                             TextureUsage::ColorAttachment);
+    offsetPass.setState(FullscreenPass::state());
+    if (!offsets_.usable())
+        offsetPass.disable("the radial blur offsets program did not build: " + offsets_.error());
+    return {{blurPass, result}, {offsetPass, offset}};
+}
+
+}  // namespace fx

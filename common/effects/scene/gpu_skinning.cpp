@@ -1,0 +1,53 @@
+#include "effects/scene/gpu_skinning.hpp"
+
+#include "base/log.hpp"
+
+namespace fx {
+
+GpuSkinning GpuSkinning::create() {
+    GpuSkinning s;
+    auto program =
+        gl::Program::build({"effects/scene/pose.vert", {}, {}, {}, "skinning (transform feedback)"});
+    if (!program) {
+        s.error_ = program.error();
+        log::error("GPU skinning: ", s.error_);
+        return s;
+    }
+    s.program_ = std::move(*program);
+    GLuint feedback = 0;
+    glCreateTransformFeedbacks(1, &feedback);
+    s.feedback_ = gl::Object<TransformFeedbackTraits>(feedback);
+    s.feedback_.label("skinning.feedback");
+    s.framebuffer_ = gl::createFramebuffer("skinning.no attachments");
+    glNamedFramebufferParameteri(s.framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+    glNamedFramebufferParameteri(s.framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
+    return s;
+}
+
+void GpuSkinning::pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints) const {
+    if (!usable() || mesh.vertexCount() == 0) return;
+    GLint previousFeedback = 0, previousFramebuffer = 0;
+    glGetIntegerv(GL_TRANSFORM_FEEDBACK_BINDING, &previousFeedback);
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.name());
+    GLboolean discardWasOn = glIsEnabled(GL_RASTERIZER_DISCARD);
+
+    joints.bind(storage_binding::jointMatrices);
+    glTransformFeedbackBufferBase(feedback_.name(), 0, mesh.posedBuffer());
+    glUseProgram(program_.name());
+    glBindVertexArray(mesh.sourceVertexArray());
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback_.name());
+    // One point per vertex: transform feedback writes them in order, so output i is vertex i.
+    glBeginTransformFeedback(GL_POINTS);
+    glDrawArrays(GL_POINTS, 0, mesh.vertexCount());
+    glEndTransformFeedback();
+    glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, static_cast<GLuint>(previousFeedback));
+    if (!discardWasOn) glDisable(GL_RASTERIZER_DISCARD);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+    // Detach the posed buffer: a buffer bound for transform feedback cannot also be read as vertices.
+    glTransformFeedbackBufferBase(feedback_.name(), 0, 0);
+    ++posed_;
+}
+
+}  // namespace fx

@@ -1,0 +1,56 @@
+#include "effects/scene/hdr_scene_pass.hpp"
+
+#include <algorithm>
+
+#include "effects/scene/camera_matrices.hpp"
+
+namespace fx {
+namespace {
+
+constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene_hdr.frag
+
+}  // namespace
+
+PassState hdrSceneState(const Scene& scene) {
+    // The sky is linear HDR like everything else in the scene file; it obeys the same limit.
+    auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
+    return {.depthTest = true,
+            .depthWrite = true,
+            .depthFunction = DepthFunction::Less,
+            .blend = false,
+            .faceCulling = true,
+            .cullFace = CullFace::Back,
+            .colorMask = ColorMask{},
+            .clearColor = ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
+            .clearDepth = 1.0f};
+}
+
+HdrScenePass HdrScenePass::create() {
+    HdrScenePass pass;
+    pass.program_ = gl::ReloadableProgram(
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "scene (linear HDR)"});
+    return pass;
+}
+
+HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                      double seconds, TextureFormat colorFormat) const {
+    const gl::ReloadableProgram* program = &program_;
+    Pass& pass = graph.addPass("scene", [program, &scene, &meshes, seconds](PassContext& ctx) {
+        Size2D size = ctx.targetSize();
+        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        GLuint name = program->name();
+        SceneMeshes::setFrameUniforms(name, scene, camera);
+        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
+        meshes.draw(name, scene, seconds);
+    });
+    HdrSceneTargets targets;
+    targets.color =
+        pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
+    targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
+                                TextureUsage::DepthAttachment);
+    pass.setState(hdrSceneState(scene));
+    if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
+    return targets;
+}
+
+}  // namespace fx

@@ -1,0 +1,53 @@
+#pragma once
+// The scene drawn lit, in linear HDR, into a float target: the first pass of every post-processing
+// lesson (seed 000 section 3.4). It declares "scene" on the frame graph, which creates
+//   scene.color  RGBA16F, the size of the output: linear light, values above 1 kept for later passes;
+//   scene.depth  Depth32F (a texture, so later passes can read it).
+// No gamma is applied here: one output transform at the end of the frame encodes for the display.
+// What is written is clamped to [0, kSceneHdrMax] with NaN turned to 0 (DESIGN.md "Numbers"), so no
+// infinite or NaN texel can enter the post-processing chain and spread through a blur.
+//
+//   HdrScenePass scenePass;                       // in Lesson::init, with the context current:
+//   scenePass = HdrScenePass::create();
+//   HdrSceneTargets hdr = scenePass.declare(graph, scene, meshes, frame.seconds);
+#include "effects/scene/scene_meshes.hpp"
+#include "gl/program.hpp"
+#include "render/frame_graph.hpp"
+
+namespace fx {
+
+// The largest value the scene writes. A half float overflows to infinity above 65504; bloom adds
+// several blurred levels (each at most this bright) back onto the image, so the scene leaves room
+// for about fifteen of them.
+inline constexpr float kSceneHdrMax = 4096.0f;
+
+// What an opaque scene draw into a float target depends on, declared by the pass itself: depth test
+// and writes (Less), no blending, back faces culled, every channel written; cleared to the scene's
+// sky (clamped to [0, kSceneHdrMax]) and depth 1. Every lit scene pass uses it.
+PassState hdrSceneState(const Scene& scene);
+
+struct HdrSceneTargets {
+    TextureHandle color;
+    TextureHandle depth;
+};
+
+class HdrScenePass {
+public:
+    HdrScenePass() = default;  // empty: no GL yet
+    static HdrScenePass create();
+
+    bool usable() const { return program_.usable(); }
+    const std::string& error() const { return program_.error(); }
+    gl::ReloadableProgram* reloadable() { return &program_; }
+
+    // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
+    // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
+    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, seed 001 section 1.1).
+    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                            TextureFormat colorFormat = TextureFormat::RGBA16F) const;
+
+private:
+    gl::ReloadableProgram program_;
+};
+
+}  // namespace fx

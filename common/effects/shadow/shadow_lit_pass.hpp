@@ -1,0 +1,47 @@
+#pragma once
+// The scene lit in linear HDR with the directional light's shadow: HdrScenePass's job (the same
+// targets, formats, clamp and state) with a program that includes shaders/common/shadow_lookup.glsl
+// and reads the shadow map. Skinned objects are drawn posed (GpuSkinning), so the lit picture and
+// the shadow map show one pose.
+//
+//   DeclaredShadowMap map = shadows.declare(graph, scene, meshes, t, settings, {});
+//   HdrSceneTargets hdr = lit.declare(graph, scene, meshes, t, map);
+//
+// declareLightView() draws the same scene from the light into "shadow.light_view" for the
+// inspector: what the shadow map "sees", in colour. From there every visible surface is lit, which
+// is a quick check that the bias and the fit are right.
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
+
+namespace fx {
+
+class ShadowLitPass {
+public:
+    ShadowLitPass() = default;  // empty: no GL yet
+    static ShadowLitPass create();
+
+    bool usable() const { return program_.usable(); }
+    const std::string& error() const { return program_.error(); }
+    gl::ReloadableProgram* reloadable() { return &program_; }
+    GLuint program() const { return program_.name(); }
+
+    // Declares "scene" (scene.color RGBA16F, scene.depth Depth32F, the output's size). Skinned objects
+    // are drawn at each of `skinnedPlacements` (empty: once, where they are), as ShadowPassOptions does.
+    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                            const DeclaredShadowMap& shadow,
+                            const std::vector<glm::mat4>& skinnedPlacements = {}) const;
+
+    // Declares "shadow light view": the scene from the light, `size` squared, only when inspected.
+    TextureHandle declareLightView(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                                   const DeclaredShadowMap& shadow,
+                                   const std::vector<glm::mat4>& skinnedPlacements = {}, int size = 512) const;
+
+private:
+    gl::ReloadableProgram program_;
+};
+
+}  // namespace fx

@@ -1,0 +1,300 @@
+#include "effects/shadow/shadow_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/debug_output.hpp"
+
+namespace fx {
+namespace {
+
+// shadow_depth_view.frag
+constexpr GLint kDepthRangeLocation = 0;
+constexpr GLint kTargetSizeLocation = 1;
+// shadow_lookup.glsl
+constexpr GLint kLookupMatrixLocation = 40;
+constexpr GLint kLookupParamsLocation = 41;
+constexpr GLint kLookupTapsLocation = 42;
+constexpr GLint kLookupToLightLocation = 43;
+
+constexpr int kMaxMapSize = 8192;
+// A walking character's limbs leave its bind-pose box; this much room around skinned meshes keeps
+// their feet and hands inside the fitted map.
+constexpr float kSkinnedPadding = 0.3f;
+
+Bounds primitiveBounds(const Primitive& p) {
+    glm::vec3 half(0.5f);
+    switch (p.shape) {
+        case PrimitiveShape::plane:
+            half = {0.5f * p.planeSize.x, 0.0f, 0.5f * p.planeSize.y};
+            break;
+        case PrimitiveShape::box:
+            half = 0.5f * p.boxSize;
+            break;
+        case PrimitiveShape::sphere:
+            half = glm::vec3(p.radius);
+            break;
+        case PrimitiveShape::cylinder:
+        case PrimitiveShape::capsule:
+            half = {p.radius, 0.5f * p.height, p.radius};
+            break;
+    }
+    Bounds b;
+    b.add(-half);
+    b.add(half);
+    return b;
+}
+
+Bounds modelBounds(const GpuModel& gpu) {
+    const GltfModel& model = gpu.model();
+    Bounds out;
+    for (int node : model.meshNodes()) {
+        const ModelNode& n = model.nodes[std::size_t(node)];
+        Bounds local;
+        bool skinned = false;
+        for (const ModelPrimitive& prim : model.meshes[std::size_t(n.mesh)].primitives) {
+            for (const glm::vec3& p : prim.mesh.positions) local.add(p);
+            skinned = skinned || prim.skinned();
+        }
+        if (local.empty()) continue;
+        if (skinned) {
+            local.min -= glm::vec3(kSkinnedPadding);
+            local.max += glm::vec3(kSkinnedPadding);
+        }
+        out.add(local.transformed(gpu.nodeWorld()[std::size_t(node)]));
+    }
+    return out;
+}
+
+ShadowSettings checked(ShadowSettings s) {
+    s.mapSize = std::clamp(s.mapSize, 1, kMaxMapSize);
+    s.filterTaps = std::clamp(s.filterTaps, 1, kShadowMaxFilterTaps);
+    if (!std::isfinite(s.bias)) s.bias = 0.0f;
+    if (!std::isfinite(s.normalOffset)) s.normalOffset = 0.0f;
+    return s;
+}
+
+}  // namespace
+
+OperationCount operationCount(SkinningProduct product) {
+    // mat4*vec4: 16 mul + 12 add; mat4*mat4: 64 mul + 48 add (seed 000 section 2.2).
+    return product == SkinningProduct::parenthesised ? OperationCount{32, 24} : OperationCount{80, 60};
+}
+
+ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light, float filterRadiusMetres) {
+    ShadowLookup lookup;
+    lookup.light = light;
+    float texel = std::max(light.texelWorldSize, 1e-9f);
+    lookup.normalOffsetMetres = settings.normalOffset * texel;
+    lookup.depthBias = settings.bias;
+    lookup.filterRadiusTexels =
+        (filterRadiusMetres > 0.0f && std::isfinite(filterRadiusMetres)) ? filterRadiusMetres / texel : 1.5f;
+    lookup.filterTaps = std::clamp(settings.filterTaps, 1, kShadowMaxFilterTaps);
+    lookup.enabled = settings.casts;
+    return lookup;
+}
+
+const Light* shadowCastingLight(const Scene& scene) {
+    for (const Light& light : scene.lights)
+        if (light.castsShadows()) return &light;
+    return nullptr;
+}
+
+ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double seconds,
+                         const std::vector<glm::mat4>& skinnedPlacements) {
+    ShadowBounds out;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        Bounds local;
+        if (object.primitive) {
+            local = primitiveBounds(*object.primitive);
+        } else if (const GpuModel* gpu = meshes.model(i)) {
+            local = modelBounds(*gpu);
+        }
+        glm::mat4 model = SceneMeshes::modelAt(object, seconds);
+        Bounds world = local.transformed(model);
+        if (meshes.isSkinned(i))
+            for (const glm::mat4& placement : skinnedPlacements) world.add(local.transformed(placement * model));
+        out.everything.add(world);
+        if (object.castsShadows) out.casters.add(world);
+    }
+    return out;
+}
+
+ShadowMap ShadowMap::create() {
+    ShadowMap s;
+    s.static_ = gl::ReloadableProgram(
+        {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"});
+    s.skinned_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
+                                        "effects/shadow/shadow_depth.frag", {}, {}, "shadow (skinned, T*(J*p))"});
+    s.skinnedGrouped_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
+                                               "effects/shadow/shadow_depth.frag", {}, "#define GROUPED_PRODUCT\n",
+                                               "shadow (skinned, (T*J)*p)"});
+    s.depthView_ = gl::ReloadableProgram(
+        {"common/fullscreen.vert", "effects/shadow/shadow_depth_view.frag", {}, {}, "shadow depth view"});
+    s.emptyVao_ = gl::createVertexArray("shadow depth view (full-screen triangle)");
+    return s;
+}
+
+bool ShadowMap::usable() const {
+    return static_.usable() && skinned_.usable() && skinnedGrouped_.usable() && depthView_.usable();
+}
+
+std::string ShadowMap::error() const {
+    for (const gl::ReloadableProgram* p : {&static_, &skinned_, &skinnedGrouped_, &depthView_})
+        if (!p->usable()) return p->error();
+    return {};
+}
+
+std::vector<gl::ReloadableProgram*> ShadowMap::programs() {
+    return {&static_, &skinned_, &skinnedGrouped_, &depthView_};
+}
+
+const gl::Program& ShadowMap::skinnedProgram(SkinningProduct product) const {
+    return product == SkinningProduct::parenthesised ? skinned_.program() : skinnedGrouped_.program();
+}
+
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                     double seconds, const ShadowSettings& settings,
+                                     const ShadowPassOptions& options) const {
+    const Light* light = shadowCastingLight(scene);
+    glm::vec3 direction = light ? light->direction : glm::vec3(0.0f, -1.0f, 0.0f);
+    ShadowSettings s = checked(settings);
+    ShadowBounds bounds = sceneBounds(scene, meshes, seconds, options.skinnedPlacements);
+    LightView view = fitLightFrustum(bounds.casters, bounds.everything, direction, s.extent, s.mapSize);
+    return declare(graph, scene, meshes, seconds, s, view, options);
+}
+
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                     double seconds, const ShadowSettings& settings, const LightView& light,
+                                     const ShadowPassOptions& options) const {
+    DeclaredShadowMap out;
+    out.settings = checked(settings);
+    out.lookup = shadowLookup(out.settings, light, options.filterRadiusMetres);
+    const Light* caster = shadowCastingLight(scene);
+    if (!caster) {
+        out.lookup.enabled = false;
+        return out;
+    }
+    out.lookup.enabled = true;
+
+    const gl::ReloadableProgram* staticProgram = &static_;
+    const gl::Program* skinnedProgram = &this->skinnedProgram(options.product);
+    Pass& pass = graph.addPass(options.passName, [staticProgram, skinnedProgram, &scene, &meshes, seconds, light,
+                                                  options](PassContext&) {
+        ShadowPassStats stats;
+        const float* vp = glm::value_ptr(light.viewProjection);
+        glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
+        glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
+        if (options.drawStatic) {
+            MeshDrawOptions o;
+            o.shadowCastersOnly = true;
+            o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
+            o.bindTextures = false;
+            o.skinFilter = SkinFilter::withoutSkin;
+            stats.staticDraws = meshes.draw(staticProgram->name(), scene, seconds, o);
+        }
+        if (options.drawSkinned) {
+            // One switch, then every skinned object (seed 000 section 2.4, step 4).
+            if (options.drawStatic) ++stats.programSwitches;
+            MeshDrawOptions o;
+            o.shadowCastersOnly = true;
+            o.bindTextures = false;
+            o.skinned = SkinnedDraw::source;
+            o.skinFilter = SkinFilter::skinnedOnly;
+            // The fix asks the program (its active uniforms were listed once, at link time).
+            o.setMaterial = options.materialUpload == MaterialUpload::always || skinnedProgram->hasUniform("baseColor");
+            std::optional<gl::ExpectedErrorScope> expected;
+            if (options.materialUpload == MaterialUpload::always)
+                expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
+            std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
+            std::vector<glm::mat4> placements = options.skinnedPlacements;
+            if (placements.empty()) placements.emplace_back(1.0f);
+            for (const glm::mat4& placement : placements) {
+                o.placement = placement;
+                stats.skinnedDraws += meshes.draw(skinnedProgram->name(), scene, seconds, o);
+            }
+            stats.glErrors = gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
+            stats.skinnedVertices = skinnedVertexCount(meshes) * placements.size();
+        }
+        if (options.stats) *options.stats = stats;
+    });
+    std::string texName = options.textureName;
+    out.map = pass.create(texName, {TextureSize::absolute(out.settings.mapSize, out.settings.mapSize),
+                                    TextureFormat::Depth32F, 1},
+                          TextureUsage::DepthAttachment);
+    out.pass = &pass;
+    if (options.setsItsOwnState) {
+        // Seed 000 section 3.3: the pass enables its own depth test (without it GL writes no depth,
+        // whatever the depth mask says) and switches blending off. Culling is off so that open or
+        // one-sided casters still cast.
+        pass.setState({.depthTest = true,
+                       .depthWrite = true,
+                       .depthFunction = DepthFunction::Less,
+                       .blend = false,
+                       .faceCulling = false,
+                       .clearDepth = 1.0f});
+    } else {
+        // The chapter's bug: depth test, depth write and blend are whatever the previous pass left.
+        pass.setState({.faceCulling = false, .clearDepth = 1.0f});
+    }
+    if (!usable()) pass.disable("a shadow program did not build: " + error());
+    return out;
+}
+
+TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShadowMap& map, int size) const {
+    size = std::max(size, 1);
+    const gl::ReloadableProgram* program = &depthView_;
+    GLuint vao = emptyVao_.name();
+    TextureHandle input = map.map;
+    glm::vec2 range(map.lookup.light.nearDistance, map.lookup.light.farDistance);
+    Pass& pass = graph.addPass("shadow depth view", [program, vao, input, range](PassContext& ctx) {
+        Size2D target = ctx.targetSize();
+        glProgramUniform2f(program->name(), kDepthRangeLocation, range.x, range.y);
+        glProgramUniform2f(program->name(), kTargetSizeLocation, float(target.width), float(target.height));
+        glBindTextureUnit(0, ctx.native(input));
+        glUseProgram(program->name());
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    });
+    TextureHandle out = pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
+                                    TextureUsage::ColorAttachment);
+    if (map.pass) pass.read(map.map);
+    pass.setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false,
+                   .colorMask = ColorMask{}});
+    if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
+    if (!depthView_.usable()) pass.disable("the depth view program did not build: " + depthView_.error());
+    return out;
+}
+
+void ShadowMap::bindForLookup(GLuint program, GLuint depthTexture, const ShadowLookup& lookup) {
+    bool on = lookup.enabled && depthTexture != 0;
+    glProgramUniformMatrix4fv(program, kLookupMatrixLocation, 1, GL_FALSE,
+                              glm::value_ptr(lookup.light.viewProjection));
+    glProgramUniform4f(program, kLookupParamsLocation, lookup.normalOffsetMetres, lookup.depthBias,
+                       lookup.filterRadiusTexels, on ? 1.0f : 0.0f);
+    glProgramUniform1i(program, kLookupTapsLocation, lookup.filterTaps);
+    glProgramUniform3fv(program, kLookupToLightLocation, 1, glm::value_ptr(lookup.light.directionToLight));
+    glBindTextureUnit(texture_unit::shadowMap, on ? depthTexture : 0);
+}
+
+std::size_t ShadowMap::skinnedVertexCount(const SceneMeshes& meshes) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < meshes.objectCount(); ++i) {
+        const GpuModel* gpu = meshes.model(i);
+        if (!gpu || !meshes.isSkinned(i)) continue;
+        const GltfModel& model = gpu->model();
+        for (int node : model.meshNodes()) {
+            const ModelNode& n0 = model.nodes[std::size_t(node)];
+            if (n0.skin < 0) continue;
+            for (const ModelPrimitive& prim : model.meshes[std::size_t(n0.mesh)].primitives)
+                if (prim.skinned()) n += prim.mesh.vertexCount();
+        }
+    }
+    return n;
+}
+
+}  // namespace fx
