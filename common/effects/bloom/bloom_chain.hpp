@@ -35,7 +35,7 @@ inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset =
 std::string bloomShaderDefines();
 
 // A sampler with GL_LINEAR and CLAMP_TO_EDGE bound to units 0 and 1 for one draw: the chapters' kernels
-// rely on bilinear taps, and REPEAT would bring light from the opposite edge (seed 001, hard case 11).
+// rely on bilinear taps, and REPEAT would bring light from the opposite edge (Bloom, hard case 11).
 // Whatever a texture's own parameters say, the bloom passes filter the same way.
 class BloomSampler {
 public:

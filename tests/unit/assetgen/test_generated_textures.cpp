@@ -1,5 +1,5 @@
 // What the generated textures must look like, measured: the cloud density against the statistics of
-// seed 003 section 4, the fire sprite's alpha against seed 000 section 3.8, seamless tiling.
+// the Clouds chapter's cloud density, the fire sprite's alpha against Shader effects §3.8, seamless tiling.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,7 +81,7 @@ TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
     mean /= double(v.size());
     for (float x : v) squares += (x - mean) * (x - mean);
     double sd = std::sqrt(squares / double(v.size()));
-    // Seed 003 section 4: mean 0.447, sd 0.18, quantiles 0.12 / 0.33 / 0.47 / 0.58 / 0.71, max 230.
+    // Clouds chapter: mean 0.447, sd 0.18, quantiles 0.12 / 0.33 / 0.47 / 0.58 / 0.71, max 230.
     EXPECT_NEAR(mean, 0.447, 0.01);
     EXPECT_NEAR(sd, 0.18, 0.015);
     EXPECT_NEAR(quantile(0.05), 0.12, 0.01);
@@ -108,7 +108,7 @@ TEST_F(CloudDensity, TilesWithoutASeam) {
 }
 
 TEST_F(CloudDensity, BlobsAreFortyToSixtyTexelsAcross) {
-    // The seed's autocorrelation: 0.84 at 8 texels, 0.55 at 16, about 0.1 at 32, about 0 at 40.
+    // The chapter's autocorrelation: 0.84 at 8 texels, 0.55 at 16, about 0.1 at 32, about 0 at 40.
     EXPECT_NEAR(autocorrelation(8), 0.84, 0.06);
     EXPECT_NEAR(autocorrelation(16), 0.55, 0.1);
     EXPECT_NEAR(autocorrelation(32), 0.1, 0.12);
