@@ -9,7 +9,7 @@ namespace fx::assetgen {
 ByteImage groundChecker();
 
 // res/textures/cloud_density.png: 512x512 grey, tileable fBm with the statistics of the Clouds chapter's
-// section 4 (stored values: mean about 0.45, sd about 0.18, median 0.47, max 230/255; blobs 40 to 60
+// density texture (stored values: mean about 0.45, sd about 0.18, median 0.47, max 230/255; blobs 40 to 60
 // px across). The values are sRGB-encoded: sample the texture through an sRGB format (or decode
 // v^2.2) to get the lesson's scattered clouds rather than an overcast sky.
 ByteImage cloudDensity();

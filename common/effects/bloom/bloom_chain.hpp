@@ -1,6 +1,6 @@
 #pragma once
-// The bloom chain of seeds 000 and 001 (effects/bloom/bloom_settings.hpp says which filters): the bright
-// part of the scene shrunk into the first level, each level blurred down into the next, then each
+// The bloom chain of the Shader effects and Bloom chapters (bloom_settings.hpp says which filters): the
+// bright part of the scene shrunk into the first level, each level blurred down into the next, then each
 // level added back on the way up. Declared on the frame graph as
 //   "bloom bright pass"     input          -> bloom.down[0]
 //   "bloom down k"          bloom.down[k-1] -> bloom.down[k]          k = 1 .. N-1

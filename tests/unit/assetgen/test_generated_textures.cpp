@@ -73,7 +73,7 @@ TEST_F(CloudDensity, IsA512SquareGreyImage) {
     EXPECT_EQ(image_->channels, 1);  // R = G = B and opaque when read as RGBA
 }
 
-TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
+TEST_F(CloudDensity, ValueStatisticsMatchTheCloudsChapter) {
     auto v = sortedValues();
     auto quantile = [&](double q) { return v[std::size_t(q * double(v.size() - 1))]; };
     double mean = 0, squares = 0;
@@ -95,7 +95,7 @@ TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
 }
 
 TEST_F(CloudDensity, TilesWithoutASeam) {
-    // Across the wrap the step is about the same as between neighbours inside (the seed: 3.7 and 4.5
+    // Across the wrap the step is about the same as between neighbours inside (the chapter: 3.7 and 4.5
     // at the seam, 3.0 and 3.3 inside, out of 255).
     const ByteImage& im = *image_;
     double inside = 0;
