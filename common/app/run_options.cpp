@@ -270,7 +270,7 @@ Error unknownFlag(const std::string& word) {
     std::vector<std::string> names;
     for (const Flag& f : flags()) names.push_back(f.name);
     auto near = closestName(word, names);
-    return Error{cat("unknown option \"", word, "\"", near ? cat(" (did you mean ", *near, "?)") : "",
+    return Error{cat("unknown option \"", word, "\"", near ? cat("; did you mean ", *near, "?") : "",
                      " (see --help)")};
 }
 

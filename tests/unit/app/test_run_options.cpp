@@ -117,7 +117,8 @@ TEST(RunOptions, ASingleValuedFlagGivenTwiceIsAnError) {
 TEST(RunOptions, AnUnknownFlagGetsTheNearestName) {
     auto o = parseRunOptions({"--scnee", "a.json"});
     ASSERT_FALSE(o.ok());
-    EXPECT_NE(o.error().find("unknown option \"--scnee\" (did you mean --scene?)"), std::string::npos)
+    EXPECT_NE(o.error().find("unknown option \"--scnee\"; did you mean --scene? (see --help)"),
+              std::string::npos)
         << o.error();
     auto far = parseRunOptions({"--completely-different"});
     ASSERT_FALSE(far.ok());
