@@ -1,17 +1,47 @@
 #include "app/run_options.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <set>
+#include <string_view>
 
+#include "app/window_input.hpp"
 #include "base/log.hpp"
+#include "render/frame_report.hpp"
+#include "scene/closest_name.hpp"
 
 namespace fx {
 namespace {
 
 constexpr int kMaxSize = 16384;
 
-Result<long> parseWhole(std::string_view text, long min, long max, std::string_view flag, std::string_view what) {
+// One use of a flag on the command line: its value (empty for a switch) and what the value is
+// checked against.
+struct FlagUse {
+    std::string_view flag;  // its name, for messages: "--size: expected WxH ..."
+    std::string value;
+    int stepCount = 0;  // the lesson's, for --step
+};
+
+// Checks the value and sets what it stands for; otherwise returns what was wrong, naming the flag.
+using Apply = std::function<Status(RunOptions&, const FlagUse&)>;
+
+struct Flag {
+    std::string name;         // "--size"
+    std::string alias{};      // "-h" for --help; empty for the others
+    std::string value{};      // how --help shows the value ("WxH"); empty: a switch, which takes none
+    std::string help;         // for --help; each "\n" starts an indented continuation line
+    bool repeatable = false;  // each use adds one more (--param, --inspect); others take one value
+    Apply apply;
+};
+
+// --- What the values may be: the parse and range check of each kind of value ---
+
+Result<long> parseWhole(std::string_view text, long min, long max, std::string_view flag,
+                        std::string_view what) {
     long value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) {
@@ -20,166 +50,298 @@ Result<long> parseWhole(std::string_view text, long min, long max, std::string_v
     return value;
 }
 
+template <class T>
+Apply set(T RunOptions::*field, T value) {
+    return [field, value](RunOptions& o, const FlagUse&) {
+        o.*field = value;
+        return Status::success();
+    };
+}
+
+// A whole number from `min` to `max` (`what` names it: "a frame count"), handed to `store`.
+Apply whole(long min, long max, std::string what, std::function<void(RunOptions&, long)> store) {
+    return [=](RunOptions& o, const FlagUse& use) -> Status {
+        auto n = parseWhole(use.value, min, max, use.flag, what);
+        if (!n) return Error{n.error()};
+        store(o, *n);
+        return Status::success();
+    };
+}
+
+// Any text but an empty one; `noun` says what is expected ("a path").
+template <class Field>
+Apply nonEmpty(Field RunOptions::*field, std::string noun) {
+    return [=](RunOptions& o, const FlagUse& use) -> Status {
+        if (use.value.empty()) return Error{cat(use.flag, ": needs ", noun)};
+        o.*field = use.value;
+        return Status::success();
+    };
+}
+
+template <class T>
+struct Choice {
+    std::string word;
+    T value;
+};
+
+// One of a few words, each standing for a value.
+template <class T>
+Apply oneOf(T RunOptions::*field, std::vector<Choice<T>> choices) {
+    return [=](RunOptions& o, const FlagUse& use) -> Status {
+        std::string words;
+        for (const auto& c : choices) {
+            if (c.word == use.value) {
+                o.*field = c.value;
+                return Status::success();
+            }
+            words += (words.empty() ? "" : ", ") + c.word;
+        }
+        return Error{cat(use.flag, ": expected one of ", words, "; got \"", use.value, "\"")};
+    };
+}
+
+Status parseSize(RunOptions& o, const FlagUse& use) {
+    std::string_view v = use.value;
+    auto x = v.find('x');
+    Error expected{cat(use.flag, ": expected WxH with sizes from 0 to ", kMaxSize, ", got \"", v, "\"")};
+    if (x == std::string::npos) return expected;
+    auto w = parseWhole(v.substr(0, x), 0, kMaxSize, use.flag, "a width");
+    auto h = parseWhole(v.substr(x + 1), 0, kMaxSize, use.flag, "a height");
+    if (!w || !h) return expected;
+    o.width = int(*w);
+    o.height = int(*h);
+    return Status::success();
+}
+
+// The range is the lesson's own: a lesson with five steps takes --step 1 to 5.
+Status parseStep(RunOptions& o, const FlagUse& use) {
+    if (use.stepCount < 1) return Error{cat(use.flag, ": this lesson has no steps")};
+    auto n = parseWhole(use.value, 1, use.stepCount, use.flag, "a step number");
+    if (!n) return Error{n.error()};
+    o.step = int(*n);
+    return Status::success();
+}
+
+Status parseTimeStep(RunOptions& o, const FlagUse& use) {
+    const std::string& v = use.value;
+    char* end = nullptr;
+    double s = std::strtod(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(s) || s <= 0 || s > 10) {
+        return Error{cat(use.flag, ": expected seconds greater than 0 and at most 10, got \"", v, "\"")};
+    }
+    o.timeStep = s;
+    return Status::success();
+}
+
+Status addParam(RunOptions& o, const FlagUse& use) {
+    // Only the shape here: names, types and ranges are checked once the lesson's parameters are known.
+    if (use.value.find('=') == std::string::npos || use.value.front() == '=') {
+        return Error{cat(use.flag, ": expected name=value, got \"", use.value, "\"")};
+    }
+    o.params.push_back(use.value);
+    return Status::success();
+}
+
+Status addInspect(RunOptions& o, const FlagUse& use) {
+    // The frame's texture names are known only after its graph is built: see unknownInspectWarnings.
+    if (use.value.empty()) return Error{cat(use.flag, ": needs a texture name")};
+    o.inspect.push_back(use.value);
+    return Status::success();
+}
+
+// --- Every flag, once: the order here is the order of --help ---
+
+const std::vector<Flag>& flags() {
+    static const std::vector<Flag> table = {
+        {.name = "--headless",
+         .help = "render without a window (automatic when there is no display)",
+         .apply = set(&RunOptions::forceHeadless, true)},
+        {.name = "--size",
+         .value = "WxH",
+         .help =
+             cat("framebuffer size, 0 to ", kMaxSize, " each (0 renders nothing, like a minimised window)"),
+         .apply = parseSize},
+        {.name = "--frames",
+         .value = "N",
+         .help = "frames to render, then exit (default 3 headless; a window runs until closed)",
+         .apply = whole(1, 1000000, "a frame count", [](RunOptions& o, long n) { o.frames = int(n); })},
+        {.name = "--step",
+         .value = "K",
+         .help = "start at step K of the lesson (see --list-steps)",
+         .apply = parseStep},
+        {.name = "--scene",
+         .value = "FILE",
+         .help = "a scene file instead of the lesson's default (see docs/scene-format.md)",
+         .apply = nonEmpty(&RunOptions::scene, "a path")},
+        {.name = "--lang",
+         .value = "en|ja",
+         .help = "the language of the lesson text: en English (default), ja Japanese",
+         .apply = oneOf<std::string>(&RunOptions::language, {{"en", "en"}, {"ja", "ja"}})},
+        {.name = "--param",
+         .value = "NAME=VALUE",
+         .help = "set a parameter, checked against its type and range (see --list-params)",
+         .repeatable = true,
+         .apply = addParam},
+        {.name = "--preset",
+         .value = "FILE",
+         .help = "load parameters from a preset file (the overlay saves these)",
+         .apply = nonEmpty(&RunOptions::presetFile, "a path")},
+        {.name = "--capture",
+         .value = "DIR",
+         .help = "write the final image and every intermediate texture as PNG into DIR",
+         .apply = nonEmpty(&RunOptions::captureDir, "a path")},
+        {.name = "--capture-float",
+         .help = "with --capture: also write exact 32-bit floats (PFM)",
+         .apply = set(&RunOptions::captureFloat, true)},
+        {.name = "--report",
+         .value = "FILE",
+         .help = "write a JSON report: renderer, frame times, GL errors, texture statistics, passes",
+         .apply = nonEmpty(&RunOptions::reportFile, "a path")},
+        {.name = "--graph",
+         .value = "FILE.dot",
+         .help = "write the last frame's compiled frame graph as Graphviz dot",
+         .apply = nonEmpty(&RunOptions::graphFile, "a path")},
+        {.name = "--time-step",
+         .value = "S",
+         .help = "fixed time step in seconds (headless runs always use one; default 1/60)",
+         .apply = parseTimeStep},
+        {.name = "--seed",
+         .value = "N",
+         .help = "seed for everything random (default 1)",
+         .apply = whole(0, 4294967295L, "a seed", [](RunOptions& o, long n) { o.seed = std::uint32_t(n); })},
+        {.name = "--timing",
+         .value = "MODE",
+         .help = "pass timing: gpu (timer queries), fenced (glFinish + wall clock), off, auto",
+         .apply = oneOf<TimingMode>(&RunOptions::timing, {{"gpu", TimingMode::Gpu},
+                                                          {"fenced", TimingMode::Fenced},
+                                                          {"off", TimingMode::Off},
+                                                          {"auto", TimingMode::Automatic}})},
+        {.name = "--inspect",
+         .value = "NAME",
+         .help = "keep a texture (and the passes that make it) alive, as the inspector does;\n"
+                 "a name the first frame does not have gets a warning with the nearest names",
+         .repeatable = true,
+         .apply = addInspect},
+        {.name = "--overlay",
+         .help = "draw the overlay into headless captures too",
+         .apply = set(&RunOptions::overlayHeadless, true)},
+        {.name = "--no-overlay",
+         .help = "start with the overlay hidden (F1 toggles it)",
+         .apply = set(&RunOptions::overlay, false)},
+        {.name = "--bench",
+         .help = "sweep the quality knobs (headless): time and error against the reference,\n"
+                 "written to out/bench/<lesson>/ (bench.csv, bench.json, bench-<knob>.png)",
+         .apply = set(&RunOptions::bench, true)},
+        {.name = "--knob",
+         .value = "NAME",
+         .help = "with --bench: only this knob",
+         .apply = nonEmpty(&RunOptions::benchKnob, "a knob name")},
+        {.name = "--bench-frames",
+         .value = "N",
+         .help = "with --bench: measured frames per setting (default 5; the median is kept)",
+         .apply = whole(1, 1000, "a frame count", [](RunOptions& o, long n) { o.benchFrames = int(n); })},
+        {.name = "--bench-values",
+         .value = "N",
+         .help = "with --bench: only the first N values of each knob",
+         .apply = whole(1, 1000, "a value count", [](RunOptions& o, long n) { o.benchValues = int(n); })},
+        {.name = "--bench-out",
+         .value = "DIR",
+         .help = "with --bench: where the results go (default out/bench/<lesson>/)",
+         .apply = nonEmpty(&RunOptions::benchOut, "a path")},
+        {.name = "--list-steps",
+         .help = "print the lesson's steps and exit",
+         .apply = set(&RunOptions::listSteps, true)},
+        {.name = "--list-params",
+         .help = "print the lesson's parameters with their ranges and exit",
+         .apply = set(&RunOptions::listParams, true)},
+        {.name = "--help", .alias = "-h", .help = "this text", .apply = set(&RunOptions::help, true)},
+    };
+    return table;
+}
+
+const Flag* findFlag(std::string_view word) {
+    for (const Flag& f : flags()) {
+        if (word == f.name || (!f.alias.empty() && word == f.alias)) return &f;
+    }
+    return nullptr;
+}
+
+Error unknownFlag(const std::string& word) {
+    std::vector<std::string> names;
+    for (const Flag& f : flags()) names.push_back(f.name);
+    auto near = closestName(word, names);
+    return Error{cat("unknown option \"", word, "\"", near ? cat("; did you mean ", *near, "?") : "",
+                     " (see --help)")};
+}
+
+// "  --size WxH            framebuffer size..." with continuation lines under the text.
+std::string helpLine(const std::string& left, const std::string& text) {
+    constexpr std::size_t kColumn = 22;
+    std::string indent(kColumn + 2, ' ');
+    std::string line = "  " + left + std::string(left.size() < kColumn ? kColumn - left.size() : 1, ' ');
+    for (char c : text) line += c == '\n' ? "\n" + indent : std::string(1, c);
+    return line + "\n";
+}
+
 }  // namespace
 
-Result<RunOptions> parseRunOptions(const std::vector<std::string>& args) {
+Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int stepCount) {
     RunOptions o;
+    std::set<std::string> given;
     for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& flag = args[i];
-        auto value = [&]() -> Result<std::string> {
-            if (i + 1 >= args.size()) return Error{cat(flag, ": needs a value")};
-            return args[++i];
-        };
-        auto withValue = [&](auto&& apply) -> Status {
-            auto v = value();
-            if (!v) return Error{v.error()};
-            return apply(*v);
-        };
-        Status status;
-        if (flag == "--help" || flag == "-h") {
-            o.help = true;
-        } else if (flag == "--list-steps") {
-            o.listSteps = true;
-        } else if (flag == "--list-params") {
-            o.listParams = true;
-        } else if (flag == "--headless") {
-            o.forceHeadless = true;
-        } else if (flag == "--capture-float") {
-            o.captureFloat = true;
-        } else if (flag == "--bench") {
-            o.bench = true;
-        } else if (flag == "--knob" || flag == "--bench-out") {
-            status = withValue([&](const std::string& v) -> Status {
-                if (v.empty()) return Error{cat(flag, ": needs a value")};
-                if (flag == "--knob") o.benchKnob = v;
-                else o.benchOut = v;
-                return Status::success();
-            });
-        } else if (flag == "--bench-frames" || flag == "--bench-values") {
-            status = withValue([&](const std::string& v) -> Status {
-                auto n = parseWhole(v, 1, 1000, flag, flag == "--bench-frames" ? "a frame count" : "a value count");
-                if (!n) return Error{n.error()};
-                (flag == "--bench-frames" ? o.benchFrames : o.benchValues) = int(*n);
-                return Status::success();
-            });
-        } else if (flag == "--overlay") {
-            o.overlayHeadless = true;
-        } else if (flag == "--no-overlay") {
-            o.overlay = false;
-        } else if (flag == "--size") {
-            status = withValue([&](const std::string& v) -> Status {
-                auto x = v.find('x');
-                std::string expected = cat("--size: expected WxH with sizes from 0 to ", kMaxSize, ", got \"", v, "\"");
-                if (x == std::string::npos) return Error{expected};
-                auto w = parseWhole(std::string_view(v).substr(0, x), 0, kMaxSize, "--size", "a width");
-                auto h = parseWhole(std::string_view(v).substr(x + 1), 0, kMaxSize, "--size", "a height");
-                if (!w || !h) return Error{expected};
-                o.width = int(*w);
-                o.height = int(*h);
-                return Status::success();
-            });
-        } else if (flag == "--frames") {
-            status = withValue([&](const std::string& v) -> Status {
-                auto n = parseWhole(v, 1, 1000000, flag, "a frame count");
-                if (!n) return Error{n.error()};
-                o.frames = int(*n);
-                return Status::success();
-            });
-        } else if (flag == "--step") {
-            status = withValue([&](const std::string& v) -> Status {
-                auto n = parseWhole(v, 1, 99, flag, "a step number");
-                if (!n) return Error{n.error()};
-                o.step = int(*n);
-                return Status::success();
-            });
-        } else if (flag == "--seed") {
-            status = withValue([&](const std::string& v) -> Status {
-                auto n = parseWhole(v, 0, 4294967295L, flag, "a seed");
-                if (!n) return Error{n.error()};
-                o.seed = static_cast<std::uint32_t>(*n);
-                return Status::success();
-            });
-        } else if (flag == "--time-step") {
-            status = withValue([&](const std::string& v) -> Status {
-                char* end = nullptr;
-                double s = std::strtod(v.c_str(), &end);
-                if (end != v.c_str() + v.size() || !std::isfinite(s) || s <= 0 || s > 10) {
-                    return Error{cat("--time-step: expected seconds greater than 0 and at most 10, got \"", v, "\"")};
-                }
-                o.timeStep = s;
-                return Status::success();
-            });
-        } else if (flag == "--scene" || flag == "--capture" || flag == "--report" || flag == "--preset") {
-            status = withValue([&](const std::string& v) -> Status {
-                if (v.empty()) return Error{cat(flag, ": needs a path")};
-                if (flag == "--scene") o.scene = v;
-                if (flag == "--capture") o.captureDir = v;
-                if (flag == "--report") o.reportFile = v;
-                if (flag == "--preset") o.presetFile = v;
-                return Status::success();
-            });
-        } else if (flag == "--param") {
-            status = withValue([&](const std::string& v) -> Status {
-                if (v.find('=') == std::string::npos || v.front() == '=') {
-                    return Error{cat("--param: expected name=value, got \"", v, "\"")};
-                }
-                o.params.push_back(v);
-                return Status::success();
-            });
-        } else if (flag == "--inspect") {
-            status = withValue([&](const std::string& v) -> Status {
-                o.inspect.push_back(v);
-                return Status::success();
-            });
-        } else if (flag == "--timing") {
-            status = withValue([&](const std::string& v) -> Status {
-                if (v == "gpu") o.timing = TimingMode::Gpu;
-                else if (v == "fenced") o.timing = TimingMode::Fenced;
-                else if (v == "off") o.timing = TimingMode::Off;
-                else if (v == "auto") o.timing = TimingMode::Automatic;
-                else return Error{cat("--timing: expected one of gpu, fenced, off, auto; got \"", v, "\"")};
-                return Status::success();
-            });
-        } else {
-            status = Error{cat("unknown option \"", flag, "\" (see --help)")};
+        const Flag* flag = findFlag(args[i]);
+        if (!flag) return unknownFlag(args[i]);
+        std::string value;
+        if (!flag->value.empty()) {
+            if (i + 1 >= args.size()) return Error{cat(flag->name, ": needs a value (", flag->value, ")")};
+            value = args[++i];
+            // A second --scene would silently replace the first: say so instead of guessing.
+            if (!flag->repeatable && !given.insert(flag->name).second) {
+                return Error{
+                    cat(flag->name, ": given more than once (again as \"", value, "\"); give it once")};
+            }
         }
-        if (!status) return Error{status.error()};
+        if (auto status = flag->apply(o, {flag->name, value, stepCount}); !status)
+            return Error{status.error()};
     }
     return o;
 }
 
 std::string runOptionsHelp(const std::string& program) {
-    return cat("usage: ", program, R"( [options]
+    std::string text = cat("usage: ", program, " [options]\n\n");
+    for (const Flag& f : flags()) {
+        std::string left =
+            f.name + (f.alias.empty() ? "" : ", " + f.alias) + (f.value.empty() ? "" : " " + f.value);
+        text += helpLine(left, f.help);
+    }
+    text += "\nkeys in a window:\n";
+    for (const WindowKeyHelp& k : windowKeysHelp()) text += helpLine(k.key, k.action);
+    return text;
+}
 
-  --headless            render without a window (automatic when there is no display)
-  --size WxH            framebuffer size, 0 to 16384 each (0 renders nothing, like a minimised window)
-  --frames N            frames to render, then exit (default 3 headless; a window runs until closed)
-  --step K              start at step K of the lesson (see --list-steps)
-  --scene FILE          a scene file instead of the lesson's default (see docs/scene-format.md)
-  --param NAME=VALUE    set a parameter, checked against its type and range (see --list-params)
-  --preset FILE         load parameters from a preset file (the overlay saves these)
-  --capture DIR         write the final image and every intermediate texture as PNG into DIR
-  --capture-float       with --capture: also write exact 32-bit floats (PFM)
-  --report FILE         write a JSON report: renderer, frame times, GL errors, texture statistics, passes
-  --time-step S         fixed time step in seconds (headless runs always use one; default 1/60)
-  --seed N              seed for everything random (default 1)
-  --timing MODE         pass timing: gpu (timer queries), fenced (glFinish + wall clock), off, auto
-  --inspect NAME        keep a texture (and the passes that make it) alive, as the inspector does
-  --overlay             draw the overlay into headless captures too
-  --no-overlay          start with the overlay hidden (F1 toggles it)
-  --bench               sweep the quality knobs (headless): time and error against the reference,
-                        written to out/bench/<lesson>/ (bench.csv, bench.json, bench-<knob>.png)
-  --knob NAME           with --bench: only this knob
-  --bench-frames N      with --bench: measured frames per setting (default 5; the median is kept)
-  --bench-values N      with --bench: only the first N values of each knob
-  --bench-out DIR       with --bench: where the results go
-  --list-steps          print the lesson's steps and exit
-  --list-params         print the lesson's parameters with their ranges and exit
-  --help                this text
-
-keys in a window: left/right arrow = previous/next step, F1 = overlay, F5 = reload shaders,
-F12 = screenshot to out/, Esc = quit
-)");
+std::vector<std::string> unknownInspectWarnings(const std::vector<std::string>& inspect,
+                                                const FrameReport& report, int step) {
+    std::vector<std::string> known;
+    for (const TextureRecord& t : report.textures) known.push_back(t.name);
+    std::vector<std::string> warnings;
+    for (const std::string& name : inspect) {
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        // The nearest few by edit distance; closestName says whether one is near enough to be a typo.
+        std::vector<std::string> nearest = known;
+        std::stable_sort(nearest.begin(), nearest.end(), [&](const std::string& a, const std::string& b) {
+            return editDistance(name, a) < editDistance(name, b);
+        });
+        if (nearest.size() > 5) nearest.resize(5);
+        std::string list;
+        for (const auto& n : nearest) list += (list.empty() ? "" : ", ") + n;
+        auto typo = closestName(name, known);
+        warnings.push_back(
+            cat("--inspect: step ", step + 1, "'s frame has no texture named \"", name, "\"",
+                typo ? cat(" (did you mean \"", *typo, "\"?)") : "",
+                known.empty() ? "; it has no textures" : cat("; the nearest names it has: ", list),
+                ". Another step may have it (--list-steps)."));
+    }
+    return warnings;
 }
 
 }  // namespace fx

@@ -1,6 +1,7 @@
 #pragma once
 // What a lesson run was asked to do, from its command line. Parsing is separate from running so
-// that every flag and every error message has a unit test.
+// that every flag and every error message has a unit test. One table of flags (run_options.cpp)
+// drives both the parser and --help.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -11,6 +12,8 @@
 
 namespace fx {
 
+struct FrameReport;
+
 struct RunOptions {
     bool help = false;
     bool listSteps = false;
@@ -20,9 +23,11 @@ struct RunOptions {
     std::optional<int> frames;            // --frames N (default: 3 headless, until closed in a window)
     std::optional<int> step;              // --step K, 1-based
     std::filesystem::path scene;          // --scene FILE
+    std::string language = "en";          // --lang en|ja: the language of the lesson text
     std::filesystem::path captureDir;     // --capture DIR
     bool captureFloat = false;            // --capture-float
     std::filesystem::path reportFile;     // --report FILE
+    std::filesystem::path graphFile;      // --graph FILE.dot: the last frame's compiled graph (Graphviz)
     std::optional<double> timeStep;       // --time-step S (fixed step; default 1/60 s headless)
     std::uint32_t seed = 1;               // --seed N
     std::vector<std::string> params;      // --param name=value, checked once the lesson is known
@@ -39,8 +44,17 @@ struct RunOptions {
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".
-Result<RunOptions> parseRunOptions(const std::vector<std::string>& args);
+// `stepCount` is the lesson's number of steps: --step is checked against it. A flag that takes one
+// value may be given once; --param and --inspect may be repeated.
+Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int stepCount);
 
+// Every flag with its value and what it does, then the keys of a lesson window.
 std::string runOptionsHelp(const std::string& program);
+
+// --inspect names no texture of a frame: one warning per such name, naming it and the frame's
+// texture names nearest to it. The names are known only once a frame's graph is built, so the
+// runner asks after its first frame; `step` (0-based) is the step that frame showed.
+std::vector<std::string> unknownInspectWarnings(const std::vector<std::string>& inspect, const FrameReport& report,
+                                                int step);
 
 }  // namespace fx

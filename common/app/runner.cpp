@@ -139,6 +139,7 @@ int run(Session& s, const std::string& exe) {
         FloatImage lastFinal;
         ByteImage lastFinalBytes;
         int screenshotCount = 0;
+        bool inspectChecked = false;
         gl::resetDebugCounters();
 
         for (std::uint64_t index = 0; frames == 0 || index < std::uint64_t(frames); ++index) {
@@ -238,6 +239,10 @@ int run(Session& s, const std::string& exe) {
                     [&] { return sweepKnobs(s.lesson, s.params, renderer, *context, {{}, 3, 0}, exe, s.step); });
             }
             RenderedFrame rendered = renderer.render(s.lesson, frame, request, drawOverlayOnTop);
+            if (!inspectChecked) {
+                inspectChecked = true;  // the first frame's graph knows the texture names --inspect can use
+                for (const auto& warning : unknownInspectWarnings(o.inspect, rendered.report, s.step)) log::warning(warning);
+            }
             lastReport = std::move(rendered.report);
             double passMs = rendered.passMs;
             if (lastFrame) lastTextures = std::move(rendered.textures);
@@ -302,7 +307,7 @@ int run(Session& s, const std::string& exe) {
 int runLesson(Lesson& lesson, int argc, char** argv) {
     std::string exe = executableName(lesson.info());
     std::vector<std::string> args(argv + 1, argv + argc);
-    auto parsed = parseRunOptions(args);
+    auto parsed = parseRunOptions(args, int(lesson.steps().size()));
     if (!parsed) {
         std::cerr << exe << ": " << parsed.error() << "\n";
         return 2;
@@ -321,14 +326,7 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
         printParams(s.params);
         return 0;
     }
-    int stepCount = int(lesson.steps().size());
-    if (s.options.step) {
-        if (*s.options.step > stepCount) {
-            std::cerr << exe << ": --step: expected a step number from 1 to " << stepCount << ", got " << *s.options.step << "\n";
-            return 2;
-        }
-        s.step = *s.options.step - 1;
-    }
+    if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
     if (!s.options.presetFile.empty()) {
         auto text = readTextFile(s.options.presetFile);
         Status loaded = text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});

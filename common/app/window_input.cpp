@@ -6,24 +6,44 @@
 namespace fx {
 namespace {
 
+struct WindowKey {
+    int key;           // GLFW_KEY_*
+    const char* name;  // as --help shows it
+    const char* action;
+    bool KeyPresses::*press;  // what a press sets; nullptr: Esc, which closes the window
+};
+
+constexpr WindowKey kWindowKeys[] = {
+    {GLFW_KEY_LEFT, "left arrow", "previous step", &KeyPresses::previous},
+    {GLFW_KEY_RIGHT, "right arrow", "next step", &KeyPresses::next},
+    {GLFW_KEY_F1, "F1", "show or hide the overlay", &KeyPresses::toggleOverlay},
+    {GLFW_KEY_F5, "F5", "reload shaders (they also reload when saved)", &KeyPresses::reload},
+    {GLFW_KEY_F12, "F12", "save a screenshot to out/", &KeyPresses::screenshot},
+    {GLFW_KEY_ESCAPE, "Esc", "quit", nullptr},
+};
+
 // GLFW callbacks are plain functions: the presses of the one lesson window go here.
 KeyPresses* pending = nullptr;
 KeyPresses presses;
 
 void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (action != GLFW_PRESS || !pending) return;
-    switch (key) {
-        case GLFW_KEY_RIGHT: pending->next = true; break;
-        case GLFW_KEY_LEFT: pending->previous = true; break;
-        case GLFW_KEY_F1: pending->toggleOverlay = true; break;
-        case GLFW_KEY_F5: pending->reload = true; break;
-        case GLFW_KEY_F12: pending->screenshot = true; break;
-        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-        default: break;
+    for (const WindowKey& k : kWindowKeys) {
+        if (k.key != key) continue;
+        if (k.press)
+            pending->*k.press = true;
+        else
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
     }
 }
 
 }  // namespace
+
+std::vector<WindowKeyHelp> windowKeysHelp() {
+    std::vector<WindowKeyHelp> keys;
+    for (const WindowKey& k : kWindowKeys) keys.push_back({k.name, k.action});
+    return keys;
+}
 
 WindowInput::WindowInput(GLFWwindow* window) : window_(window) {
     if (!window_) return;

@@ -1,6 +1,9 @@
 #pragma once
 // The keys and the mouse of a lesson window. Create it before the overlay: Dear ImGui's GLFW
 // backend chains the key callback that was installed before it, so both see every key.
+#include <string>
+#include <vector>
+
 #include "app/lesson.hpp"
 #include "platform/context.hpp"
 
@@ -11,6 +14,13 @@ namespace fx {
 struct KeyPresses {
     bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
 };
+
+// The keys of a lesson window and what each does, for --help. The same table decides what a press
+// does, so the help and the window cannot disagree.
+struct WindowKeyHelp {
+    std::string key, action;
+};
+std::vector<WindowKeyHelp> windowKeysHelp();
 
 class WindowInput {
 public:

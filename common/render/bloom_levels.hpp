@@ -2,11 +2,11 @@
 // The sizes of a bloom chain, and how wide each of its levels blurs: GL-free maths the effect, the
 // lesson's panel and the tests share.
 //
-// A chain starts at 1/firstDivisor of the output (seed 000: a quarter, seed 001: a half) and halves
+// A chain starts at 1/firstDivisor of the output (Shader effects: a quarter, Bloom: a half) and halves
 // with integer division from level to level, GL's mip rule: level k is output / (firstDivisor * 2^k),
 // floored on each axis. A level that would be narrower or lower than one texel is not created, so a
 // small window gets a shorter chain instead of a zero-sized texture (an incomplete framebuffer, and a
-// texel size of 1/0 in the shaders: seed 001, hard case 7). A 0x0 output has no levels at all.
+// texel size of 1/0 in the shaders: Bloom chapter, hard case 7). A 0x0 output has no levels at all.
 #include <vector>
 
 #include "render/texture_desc.hpp"
@@ -29,7 +29,7 @@ std::vector<BloomLevel> bloomLevels(Size2D output, int firstDivisor, int request
 // including what bilinear filtering adds (a tap a fraction f between texel centres adds f(1 - f)).
 //   downsample: four diagonal taps at +-offset from the destination centre (a source texel corner);
 //   upsample: four axial taps at +-2 offset (weight 1) and four diagonal at +-offset (weight 2), /12,
-//             the destination centre a quarter texel from a source centre (seed 001, section 1.6).
+//             the destination centre a quarter texel from a source centre (Bloom chapter, §1.6).
 double bloomDownsampleVariance(double offset);
 double bloomUpsampleVariance(double offset);
 

@@ -30,7 +30,7 @@ struct PassWrites {
 // on depth writes and the depth function); a pass writing colour depends on blending (and, while
 // blending, on the blend function) and the colour mask; any drawing pass depends on face culling.
 // Empty when the pass declares all of it, which is the chapter's rule: each pass sets the state it
-// depends on (seed 000 section 3.3).
+// depends on (the Shader effects chapter, §3.3).
 std::vector<std::string> inheritedDependencies(const PassState& declared, const GlStateSnapshot& inherited,
                                                PassWrites writes);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 01: program objects (seed 000, sections 1.x and the learning goals of 0.3).
+// Lesson 01: program objects (the Shader effects chapter, §1 and its learning goals).
 #include <memory>
 
 #include "app/lesson.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 02: skeletal-mesh shadows (seed 000 sections 2.1 to 2.6, hard cases 17, 19 and 20).
+// Lesson 02: skeletal-mesh shadows (the Shader effects chapter, §2; hard cases 17, 19, 20).
 #include <vector>
 
 #include <glm/mat4x4.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// The frame as the chapter writes it by hand in Engine::Render() (seed 000 sections 3.2 to 3.4), one
+// The frame as the chapter writes it by hand in Engine::Render() (Shader effects §3.2 to §3.4), one
 // line per step of its code, each with the fxlab pass that does that work. The overlay shows it next
 // to the order the frame graph derives from what each pass reads and writes.
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// Lesson 03: the FBO pipeline and its draw order (seed 000, sections 3.1 to 3.4, hard cases 15, 16
-// and 21).
+// Lesson 03: the FBO pipeline and its draw order (the Shader effects chapter, §3.1 to §3.4; its
+// hard cases 15 state leaks, 16 viewport leaks and 21 aspect: docs/chapters.md).
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The engine's own user-interface queue (seed 000 sections 3.3 and 3.4): the last pass of the frame,
+// The engine's own user-interface queue (Shader effects §3.3, §3.4): the last pass of the frame,
 // straight into the window, with the depth test switched off and alpha blending on. It draws a small
 // translucent panel in the bottom-right corner. Two things in the lesson hang on it:
 //  - it leaves the depth test off for the next frame, which is what the reordered shadow pass of

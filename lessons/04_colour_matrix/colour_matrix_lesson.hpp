@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 04: colour matrix (seed 000, sections 3.4 and 3.5, hard cases 5 to 8, Exercise 02).
+// Lesson 04: colour matrix (the Shader effects chapter, §3.4, §3.5, hard cases 5 to 8, Exercise 02).
 #include "app/lesson.hpp"
 #include "effects/post/colour_matrix.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 05: radial blur (seed 000, section 3.6, hard cases 1 to 4, Exercises 03 and 04).
+// Lesson 05: radial blur (the Shader effects chapter, §3.6, hard cases 1 to 4, Exercises 03, 04).
 #include "app/lesson.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"

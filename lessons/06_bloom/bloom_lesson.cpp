@@ -46,7 +46,7 @@ std::vector<LessonStep> BloomLesson::steps() const {
          "display still clips at 1, but scene.color now holds the lamp's 6 and the sun's 3000: the "
          "inspector's "
          "auto-fit range and histogram show them. This costs twice the memory and bandwidth of RGBA8."},
-        {"Seed 000's bloom: a quarter-size chain, averaged",
+        {"The Shader effects chapter's bloom: a quarter-size chain, averaged",
          "The bright pass keeps max(b - threshold, 0) / b of each colour (b: its brightest channel, so the "
          "hue "
          "stays) on 4 taps at +-1 texel and shrinks to a quarter (bloom.down[0]). Five downsamples (centre "
@@ -55,7 +55,7 @@ std::vector<LessonStep> BloomLesson::steps() const {
          "larger "
          "(bloom.up[*]), and the composite adds 1/N of the result to the scene. A uniform area v becomes "
          "v + intensity * max(v - 1, 0)."},
-        {"Seed 001's chain: half size, summed, bloomScale",
+        {"The Bloom chapter's chain: half size, summed, bloomScale",
          "The bright pass averages 4 diagonal taps at +-0.75 texel (a [1 3 3 1]/8 binomial) into a half-size "
          "level "
          "and then applies the ratio; the same taps go down, and the upsample reads 4 axial taps at 1 texel "
@@ -82,18 +82,18 @@ void BloomLesson::declareParams(ParamSet& params) {
                     "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)");
     params.addFloat(
         "intensity", &intensity_, 0.0f, 4.0f,
-        "Step 3: seed 000's intensity; step 5: the glow's strength (a uniform area gains this times its "
+        "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this times its "
         "bright part, for any level count)");
     params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
-                    "Step 4: seed 001's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
+                    "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
     Param& levels = params.addInt("levels", &levels_, 1, kBloomMaxLevels,
                                   "Steps 3 to 5: levels in the chain (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
     params.addFloat(
         "down_offset", &downOffset_, 0.0f, 2.0f,
-        "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (seed 001: 0.75)");
+        "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)");
     params.addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
-                    "Steps 4 and 5: upsample tap offset, in source texels (seed 001: 0.5)");
+                    "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)");
     Param& format =
         params.addChoice("format", &format_, {"RGBA16F", "R11F_G11F_B10F", "RGBA32F", "RGBA8"},
                          "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");

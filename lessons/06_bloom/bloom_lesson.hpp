@@ -1,5 +1,5 @@
 #pragma once
-// Lesson 06: bloom, with the whole chain live (seed 000 section 3.7, seed 001, reference/effects.md
+// Lesson 06: bloom, with the whole chain live (Shader effects §3.7, the Bloom chapter, reference/effects.md
 // section 1). Float targets first, then the two chapters' chains, then what the chapters leave out.
 #include <string>
 #include <vector>
@@ -47,8 +47,8 @@ private:
     // Parameters (the chapters' values).
     float threshold_ = 1.0f;
     float knee_ = 0.5f;
-    float intensity_ = 2.0f;   // seed 000's intensity; step 5's glow strength
-    float bloomScale_ = 2.0f;  // seed 001 (Exercise 01: 1.0)
+    float intensity_ = 2.0f;   // the Shader effects chapter's intensity; step 5's glow strength
+    float bloomScale_ = 2.0f;  // the Bloom chapter's (Exercise 01: 1.0)
     int levels_ = 6;
     float downOffset_ = 0.75f;
     float upOffset_ = 0.5f;

@@ -1,6 +1,6 @@
 // Lesson 06: fireflies. A small, very bright dot moving by fractions of a texel is drawn as a scene
 // rasteriser draws it (point-sampled at pixel centres), so it covers 0, 1 or 2 pixels from frame to
-// frame. Seed 001's chain blooms every covered pixel in proportion to its value, so the glow's energy
+// frame. The Bloom chapter blooms every covered pixel in proportion to its value, so the glow's energy
 // jumps with the coverage; the Karis average on the first downsample (step 5) weights each tap by
 // 1 / (1 + luma), so a lone bright texel can no longer outweigh its neighbours and the glow steadies.
 // Also: effects/bloom/bloom_flicker.hpp measures what this test measures, on GL.
@@ -26,7 +26,7 @@ protected:
     BloomEffects effects;
 };
 
-constexpr int kWidth = 128, kHeight = 64;  // seed 001's first level: 64x32
+constexpr int kWidth = 128, kHeight = 64;  // the Bloom chapter's first level: 64x32
 constexpr int kFrames = 16;
 
 // Frame t: a dim floor (0.05), a steady lamp (4, 3.5, 3) of 12x12 pixels, and a dot of radius 0.6

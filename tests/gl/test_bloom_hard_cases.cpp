@@ -1,4 +1,4 @@
-// Bloom (lesson 06): the hard cases of seed 001 and seed 000 section 7, read back as floats. Values
+// Bloom (lesson 06): the Bloom and Shader effects chapters' hard cases, read back as floats. Values
 // above a half float's range, Inf and NaN in the scene; sums that overflow only once the levels are
 // added; negative colours; window sizes where levels would be smaller than a texel.
 #include <cmath>
@@ -31,8 +31,8 @@ struct Chain {
 std::vector<Chain> lessonChains() {
     BloomChainSettings beyond = beyondChapters(6);
     beyond.knee = 0.5f;
-    return {{"seed 000", chapter000Bloom(1.0f, 2.0f, 6), chapter000CompositeScale(6)},
-            {"seed 001", chapter001Bloom(1.0f, 6), 2.0f},
+    return {{"Shader effects", chapter000Bloom(1.0f, 2.0f, 6), chapter000CompositeScale(6)},
+            {"Bloom chapter", chapter001Bloom(1.0f, 6), 2.0f},
             {"beyond", beyond, normalisedCompositeScale(2.0f, 6)}};
 }
 
@@ -65,7 +65,7 @@ float worstRelativeDifference(const FloatImage& a, const FloatImage& b, int cx, 
 }  // namespace
 
 TEST_F(BloomHardCases, ValuesAboveHalfFloatRangeInfAndNanStayFinite) {
-    // 1e6 is stored as +Inf in the RGBA16F scene (seed 001, hard case 1); the Inf and NaN texels are
+    // 1e6 is stored as +Inf in the RGBA16F scene (Bloom, hard case 1); the Inf and NaN texels are
     // planted in the bright patch, where an unguarded bright pass computes (Inf - 1) / Inf = NaN.
     const int w = 160, h = 96;
     EffectRunner runner(w, h);
@@ -109,8 +109,8 @@ TEST_F(BloomHardCases, OneNanTexelDoesNotSpreadOverTheScreen) {
 }
 
 TEST_F(BloomHardCases, AccumulationThatWouldOverflowIsClampedFirst) {
-    // 30000 is a finite half float, and its bright part alone is too. Seed 001's chain adds 6 levels
-    // and doubles them: 30000 + 12 * 29999 would be infinite in a half float (seed 001, hard case 2).
+    // 30000 is a finite half float, and its bright part alone is too. The Bloom chapter adds 6 levels
+    // and doubles them: 30000 + 12 * 29999 would be infinite in a half float (Bloom, hard case 2).
     // The bright pass keeps at most kBloomMaxBright and every sum stays below kBloomMaxValue.
     EffectRunner runner(128, 64);
     for (TextureFormat format : {TextureFormat::RGBA16F, TextureFormat::R11F_G11F_B10F}) {
@@ -133,7 +133,7 @@ TEST_F(BloomHardCases, AccumulationThatWouldOverflowIsClampedFirst) {
 
 TEST_F(BloomHardCases, NegativeColoursMakeNoNegativeHalo) {
     // A texel (8, -3, 0) passes the threshold by its red; the ratio would scale its -3 too and paint a
-    // dark halo (seed 001, hard case 4). A region of -50 must not darken its neighbours either.
+    // dark halo (Bloom chapter, hard case 4). A region of -50 must not darken its neighbours either.
     const int w = 128, h = 64;
     EffectRunner runner(w, h);
     FloatImage input = makeImage(w, h, [](int x, int y) {

@@ -1,5 +1,5 @@
 // Bloom (lesson 06): what the chapters' formulas predict, read back as floats. A uniform grey area
-// gains what seed 000 and seed 001 say, a point source spreads as seed 001's simulation says, and the
+// gains what the two chapters say, a point source spreads as the Bloom chapter's numbers say, and the
 // glow of lesson 06's step 5 keeps its energy whatever the level count.
 #include <cmath>
 
@@ -51,8 +51,8 @@ FloatImage spot(int width, int height, int x0, int y0, int side, float v) {
 // Half-float storage rounds to 11 significant bits (about 0.05 %) in every pass the value crosses.
 constexpr float kUniformTolerance = 0.005f;
 
-TEST_F(BloomOnGl, Seed000UniformGreyGainsIntensityTimesItsBrightPart) {
-    // Seed 000's invariant: v + I * v * max(b - t, 0) / b, for grey v + I * max(v - 1, 0) with t 1, I 2.
+TEST_F(BloomOnGl, ShaderEffectsChapterUniformGreyGainsIntensityTimesItsBrightPart) {
+    // Shader effects' invariant: v + I * v * max(b - t, 0) / b, for grey v + I * max(v - 1, 0) with t 1, I 2.
     EffectRunner runner(128, 64);
     for (float v : {0.9f, 1.5f, 3.0f, 40.0f}) {
         int levels = 0;
@@ -68,8 +68,8 @@ TEST_F(BloomOnGl, Seed000UniformGreyGainsIntensityTimesItsBrightPart) {
     }
 }
 
-TEST_F(BloomOnGl, Seed001UniformGreyGainsLevelsTimesBloomScale) {
-    // Seed 001 sums the levels: a uniform bright part E comes back N * bloomScale * E (12 E for 6 and 2).
+TEST_F(BloomOnGl, BloomChapterUniformGreyGainsLevelsTimesBloomScale) {
+    // The Bloom chapter sums: a uniform bright part E comes back N * bloomScale * E (12 E for 6 and 2).
     EffectRunner runner(128, 64);
     for (float v : {0.5f, 1.5f, 4.0f}) {
         int levels = 0;
@@ -104,8 +104,8 @@ TEST_F(BloomOnGl, ReferenceGaussianGainsTheSameAsTheChain) {
     EXPECT_LE(worstRelative(out, 3.0f), 1e-5f);
 }
 
-TEST_F(BloomOnGl, PointSourceSpreadsAsSeed001Simulated) {
-    // Seed 001's derived numbers at 1280x720: a 2x2 spot's glow holds about 12.97 times its bright
+TEST_F(BloomOnGl, PointSourceSpreadsAsTheBloomChapterSays) {
+    // The Bloom chapter's numbers at 1280x720: a 2x2 spot's glow holds about 12.97 times its bright
     // part, and falls off to 0.32, 0.075, 0.019, 0.0048 and 0.0011 of its peak at 4, 8, 16, 32 and 64
     // pixels. The digest calls them loose reference values: energy within 15 %, each ratio within a
     // factor of 2 (the spot's place against the odd-sized levels moves them).
@@ -128,7 +128,7 @@ TEST_F(BloomOnGl, PointSourceSpreadsAsSeed001Simulated) {
 }
 
 TEST_F(BloomOnGl, NormalisedGlowEnergyDoesNotGrowWithTheLevelCount) {
-    // Summed levels (seed 001) hold N times the bright part; lesson 06's step 5 divides by N.
+    // Summed levels (Bloom chapter) hold N times the bright part; lesson 06's step 5 divides by N.
     // An 8x8 spot: every bright-pass tap inside it reads the same value, so the Karis weights are equal
     // there (a lone 2x2 spot would mostly be weighted away, which is their purpose).
     EffectRunner runner(512, 512);

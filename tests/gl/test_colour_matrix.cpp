@@ -1,4 +1,4 @@
-// Colour matrix (seed 000 section 3.5, hard cases 5 to 7): the CPU maths of ColourTransform, and the
+// Colour matrix (Shader effects §3.5, hard cases 5 to 7): the CPU maths of ColourTransform, and the
 // GPU pass against it on known colours, read back as floats.
 #include <cmath>
 #include <limits>

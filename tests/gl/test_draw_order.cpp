@@ -1,4 +1,4 @@
-// Lesson 03's draw-order bug (seed 000 section 3.3) on the real shadow pass: a shadow pass that
+// Lesson 03's draw-order bug (Shader effects chapter §3.3) on the real shadow pass: a shadow pass that
 // declares no state of its own inherits the depth test, the executor names what it inherited, and
 // with the depth test off the map stays at its clear value; the pass that sets its own state draws the
 // casters whatever the previous pass left.

@@ -94,7 +94,7 @@ public:
     }
 
     // The tests share one context: leave it as GL starts, so a later test that relies on the defaults
-    // (depth writes on, say) does not inherit a full-screen pass's state (seed 000, hard case 15).
+    // (depth writes on, say) does not inherit a full-screen pass's state (Shader effects, hard case 15).
     static void restoreInitialState() {
         glDepthMask(GL_TRUE);
         glDisable(GL_DEPTH_TEST);

@@ -1,4 +1,4 @@
-// Radial blur (seed 000 section 3.6, hard cases 1 to 4): the identities the chapter promises and the
+// Radial blur (Shader effects §3.6, hard cases 1 to 4): the identities the chapter promises and the
 // 0/0 at the centre pixel, read back as floats.
 #include <cmath>
 #include <cstring>

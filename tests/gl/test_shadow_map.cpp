@@ -235,7 +235,7 @@ TEST_F(ShadowMapTest, OwnStateWritesDepthWhateverWasLeftAndInheritedStateDoesNot
     ShadowPassOptions inherits;
     inherits.setsItsOwnState = false;
     FrameResult leaked = run(0.5, inherits, false, std::nullopt, depthTestOff);
-    // Seed 000 section 3.3: with the depth test off GL writes no depth: the map stays cleared.
+    // Shader effects chapter §3.3: with the depth test off GL writes no depth: the map stays cleared.
     EXPECT_EQ(texelsBelow(leaked.map, 1.0f), 0);
 
     // The declared state itself: nothing about depth or blend when the pass inherits.

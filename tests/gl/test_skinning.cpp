@@ -133,7 +133,7 @@ TEST_F(Skinning, SsboHoldsTheUploadedMatrices) {
 }
 
 TEST_F(Skinning, BadWeightsFollowTheCpuRuleAndStayFinite) {
-    // One vertex per hard case of seed 000 section 7 (item 19).
+    // One vertex per bad weight of the Shader effects chapter's hard case 19.
     MeshData mesh;
     std::vector<JointInfluence> influences;
     auto add = [&](glm::vec3 p, JointInfluence inf) {

@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
         (isDown ? down : up)++;
     }
     std::printf("bloom.down[*]: %d levels, bloom.up[*]: %d levels\n", down, up);
-    // 1200x800, seed 001's chain of 6 levels: 600x400 down to 18x12, and 5 accumulated levels.
+    // 1200x800, the Bloom chapter's chain of 6 levels: 600x400 down to 18x12, and 5 accumulated levels.
     if (down != 6 || up != 5) {
         std::cout << "FAIL: expected 6 levels before accumulation and 5 after\n";
         ok = false;

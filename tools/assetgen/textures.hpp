@@ -8,8 +8,8 @@ namespace fx::assetgen {
 // with a faint darker seam between them and a little per-check variation; tiles seamlessly.
 ByteImage groundChecker();
 
-// res/textures/cloud_density.png: 512x512 grey, tileable fBm with the statistics of seed 003
-// section 4 (stored values: mean about 0.45, sd about 0.18, median 0.47, max 230/255; blobs 40 to 60
+// res/textures/cloud_density.png: 512x512 grey, tileable fBm with the statistics of the Clouds chapter's
+// density texture (stored values: mean about 0.45, sd about 0.18, median 0.47, max 230/255; blobs 40 to 60
 // px across). The values are sRGB-encoded: sample the texture through an sRGB format (or decode
 // v^2.2) to get the lesson's scattered clouds rather than an overcast sky.
 ByteImage cloudDensity();
@@ -23,7 +23,7 @@ extern const Quantile kCloudQuantiles[8];
 
 // res/textures/fire_sprite.png: 256x256 RGBA. RGB is a warm white; alpha is a soft teardrop flame
 // (round base around v = 0.27, tapering to a point near v = 0.95, v = 0 at the bottom) whose edge
-// falls off over the outer 15 % of its half-width. Only the alpha shapes the particle (seed 000 3.8).
+// falls off over the outer 15 % of its half-width. Only the alpha shapes the particle (Shader effects §3.8).
 ByteImage fireSprite();
 
 // res/textures/crate_planks.png: 256x256 RGB wooden planks with a frame, for the crate prop.

@@ -1,6 +1,6 @@
 #pragma once
-// The bloom chain of seeds 000 and 001 (effects/bloom/bloom_settings.hpp says which filters): the bright
-// part of the scene shrunk into the first level, each level blurred down into the next, then each
+// The bloom chain of the Shader effects and Bloom chapters (bloom_settings.hpp says which filters): the
+// bright part of the scene shrunk into the first level, each level blurred down into the next, then each
 // level added back on the way up. Declared on the frame graph as
 //   "bloom bright pass"     input          -> bloom.down[0]
 //   "bloom down k"          bloom.down[k-1] -> bloom.down[k]          k = 1 .. N-1
@@ -35,7 +35,7 @@ inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset =
 std::string bloomShaderDefines();
 
 // A sampler with GL_LINEAR and CLAMP_TO_EDGE bound to units 0 and 1 for one draw: the chapters' kernels
-// rely on bilinear taps, and REPEAT would bring light from the opposite edge (seed 001, hard case 11).
+// rely on bilinear taps, and REPEAT would bring light from the opposite edge (Bloom, hard case 11).
 // Whatever a texture's own parameters say, the bloom passes filter the same way.
 class BloomSampler {
 public:

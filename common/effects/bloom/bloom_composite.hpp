@@ -2,9 +2,9 @@
 // The last bloom pass: the glow added onto the scene, enlarged to full size with the chain's upsample
 // filter (the chapters reuse the upsample shader for it), into bloom.result (RGBA16F, the output's
 // size). The scale is a shader uniform, not the blend constant: GL may clamp a blend constant to
-// [0, 1], which would silently turn seed 001's bloomScale of 2 into 1 (seed 001, discrepancy 3).
-//   seed 000: scale 1/N (N levels, each adding the bright part once)
-//   seed 001: scale bloomScale (2; the exercise asks for 1)
+// [0, 1], which would silently turn the Bloom chapter's bloomScale of 2 into 1 (its hard case 14).
+//   Shader effects chapter: scale 1/N (N levels, each adding the bright part once)
+//   Bloom chapter: scale bloomScale (2; the exercise asks for 1)
 //   beyond:   scale intensity/N, so the glow's energy does not grow with the level count
 //
 //   BloomComposite composite = BloomComposite::create();

@@ -115,7 +115,7 @@ DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, T
     ColourTransform t = transform_;  // the transform as it is now, not when the pass runs
     Pass& declared = graph.addPass("colour matrix", [pass, input, t](PassContext& ctx) {
         GLuint program = pass->program();
-        // Column-major data, no transpose: uploading rows here is the chapter's hard case 7 (a
+        // Column-major data, no transpose: uploading rows is Shader effects' hard case 7 (a
         // grayscale that comes out tinted).
         glProgramUniformMatrix3fv(program, kMatrixLocation, 1, GL_FALSE, glm::value_ptr(t.matrix));
         glProgramUniform3fv(program, kOffsetLocation, 1, glm::value_ptr(t.offset));

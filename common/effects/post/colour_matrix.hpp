@@ -1,5 +1,5 @@
 #pragma once
-// Colour conversion by a matrix (seed 000 section 3.5), applied to linear HDR colour before the
+// Colour conversion by a matrix (the Shader effects chapter, §3.5), applied to linear HDR colour before the
 // output transform. The chapter's filters (grayscale, sepia) are 3x3 matrices; an inverted picture is
 // not, because a matrix maps black to black and the negative must map it to white. So the transform
 // here is affine, a matrix and an offset:

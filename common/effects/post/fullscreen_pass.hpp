@@ -2,7 +2,7 @@
 // The draw call every post effect shares: one triangle that covers the target (shaders/common/
 // fullscreen.vert makes it from gl_VertexID, so it needs no vertex buffer) with a fragment program
 // that reads the pass's input textures. The triangle is wound counter-clockwise and the state below
-// turns culling off anyway, so a leaked glCullFace cannot make it vanish (seed 000, hard case 15).
+// turns culling off anyway, so a leaked glCullFace cannot make it vanish (Shader effects, hard case 15).
 //
 //   FullscreenPass copy("effects/post/colour_matrix.frag", "colour matrix");
 //   graph.addPass("colour matrix", [&](PassContext& ctx) { copy.draw({ctx.native(input)}); })

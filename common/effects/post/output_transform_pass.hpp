@@ -1,6 +1,6 @@
 #pragma once
 // The frame's one output transform: linear light to the sRGB encoding the display expects, written
-// into the presented output at the very end (seed 000 section 3.4). Every pass before it works on
+// into the presented output at the very end (Shader effects §3.4). Every pass before it works on
 // linear values; nothing after it changes the colour. Values are clamped to [0, 1] first: there is no
 // tone mapping in these lessons, so HDR values clip to white, and negative ones (a colour matrix can
 // make them) to black instead of becoming NaN in the encoding curve.

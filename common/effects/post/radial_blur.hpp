@@ -1,5 +1,5 @@
 #pragma once
-// Radial (zoom) blur, seed 000 section 3.6: each pixel averages taps placed on the line from the pixel
+// Radial (zoom) blur, Shader effects §3.6: each pixel averages taps placed on the line from the pixel
 // toward a centre, so edges streak along lines through that point. Near the centre a start distance
 // keeps the picture sharp. All distances are in texture coordinates of the screen, like the chapter's
 // (so the sharp area is an ellipse on a wide screen).
@@ -26,7 +26,7 @@ namespace fx {
 
 enum class RadialBlurFormula {
     firstVersion,  // no start distance: every pixel but the centre is blurred
-    chapter,       // the seed's start-distance formula: divides by |d|, which is 0 at the centre pixel
+    chapter,       // the chapter's start-distance formula: divides by |d|, which is 0 at the centre pixel
     guarded,       // the same formula with the limit at the centre defined (no blur there)
 };
 

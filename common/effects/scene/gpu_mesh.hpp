@@ -6,7 +6,7 @@
 
 namespace fx {
 
-// Vertex attribute locations (the chapter's location map, seed 000 section 0.4).
+// Vertex attribute locations (the Shader effects chapter's location map).
 namespace attribute_location {
 inline constexpr GLuint position = 0;  // vec3
 inline constexpr GLuint texcoord = 1;  // vec2

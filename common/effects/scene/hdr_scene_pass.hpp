@@ -1,6 +1,6 @@
 #pragma once
 // The scene drawn lit, in linear HDR, into a float target: the first pass of every post-processing
-// lesson (seed 000 section 3.4). It declares "scene" on the frame graph, which creates
+// lesson (Shader effects §3.4). It declares "scene" on the frame graph, which creates
 //   scene.color  RGBA16F, the size of the output: linear light, values above 1 kept for later passes;
 //   scene.depth  Depth32F (a texture, so later passes can read it).
 // No gamma is applied here: one output transform at the end of the frame encodes for the display.
@@ -42,7 +42,7 @@ public:
 
     // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
     // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
-    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, seed 001 section 1.1).
+    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, Bloom chapter §1.1).
     HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
                             TextureFormat colorFormat = TextureFormat::RGBA16F) const;
 

@@ -43,7 +43,7 @@ inline constexpr GLint cameraPosition = 13;
 }  // namespace uniform_location
 
 // Which objects a draw covers, by whether they have a skinned mesh. A shadow pass draws the two
-// groups with two programs (seed 000 section 2.4: static meshes first, then skinned, one switch).
+// groups with two programs (Shader effects chapter §2: static meshes first, then skinned, one switch).
 enum class SkinFilter {
     all,
     withoutSkin,  // primitives and glTF objects with no skinned mesh

@@ -80,7 +80,7 @@ ShadowSettings checked(ShadowSettings s) {
 }  // namespace
 
 OperationCount operationCount(SkinningProduct product) {
-    // mat4*vec4: 16 mul + 12 add; mat4*mat4: 64 mul + 48 add (seed 000 section 2.2).
+    // mat4*vec4: 16 mul + 12 add; mat4*mat4: 64 mul + 48 add (Shader effects chapter, §2).
     return product == SkinningProduct::parenthesised ? OperationCount{32, 24} : OperationCount{80, 60};
 }
 
@@ -198,7 +198,7 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
             stats.staticDraws = meshes.draw(staticProgram->name(), scene, seconds, o);
         }
         if (options.drawSkinned) {
-            // One switch, then every skinned object (seed 000 section 2.4, step 4).
+            // One switch, then every skinned object (Shader effects chapter, §2).
             if (options.drawStatic) ++stats.programSwitches;
             MeshDrawOptions o;
             o.shadowCastersOnly = true;
@@ -228,7 +228,7 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
                           TextureUsage::DepthAttachment);
     out.pass = &pass;
     if (options.setsItsOwnState) {
-        // Seed 000 section 3.3: the pass enables its own depth test (without it GL writes no depth,
+        // Shader effects §3.3: the pass enables its own depth test (without it GL writes no depth,
         // whatever the depth mask says) and switches blending off. Culling is off so that open or
         // one-sided casters still cast.
         pass.setState({.depthTest = true,

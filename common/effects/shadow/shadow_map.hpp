@@ -1,5 +1,5 @@
 #pragma once
-// A directional light's shadow map (seed 000 section 2, and 3.3 for its state): a depth-only pass
+// A directional light's shadow map (Shader effects §2, and §3.3 for its state): a depth-only pass
 // "shadow map" that draws the shadow casters from the light into "shadow.map" (Depth32F, mapSize
 // squared), static meshes first with one program, then skinned meshes with a second program that
 // skins in its vertex shader (joint matrices from the storage buffer at binding 0): one switch.
@@ -36,7 +36,7 @@ inline constexpr GLuint shadowMap = 4;  // shaders/common/shadow_lookup.glsl
 // The largest filter the lookup shader takes (kShadowMaxTaps there).
 inline constexpr int kShadowMaxFilterTaps = 64;
 
-// How the skinning product is written in the skinned shadow program (seed 000 section 2.2).
+// How the skinning product is written in the skinned shadow program (Shader effects chapter, §2).
 enum class SkinningProduct {
     parenthesised,  // T*(J*p): two mat4*vec4, 32 mul + 24 add a vertex
     grouped,        // T*J*p = (T*J)*p: mat4*mat4 then mat4*vec4, 80 mul + 60 add a vertex
@@ -47,7 +47,7 @@ struct OperationCount {
 };
 OperationCount operationCount(SkinningProduct product);
 
-// Whether the skinned draw uploads material uniforms (seed 000 section 2.5).
+// Whether the skinned draw uploads material uniforms (Shader effects chapter, §2.4: the error flood).
 enum class MaterialUpload {
     askProgram,  // only when the program has them (Program::hasUniform, looked up once at link): the fix
     always,      // as the lit path does: GL_INVALID_OPERATION every draw on the shadow program (the
@@ -67,7 +67,7 @@ struct ShadowPassOptions {
     bool drawStatic = true;
     bool drawSkinned = true;  // false: the chapter before section 2, the character casts no shadow
     // false: the pass declares no depth test, depth write, depth function or blend state and runs with
-    // whatever the pass before it left (seed 000 section 3.3: with the depth test off nothing is
+    // whatever the pass before it left (Shader effects §3.3: with the depth test off nothing is
     // written and every shadow vanishes). true: it declares all of them itself.
     bool setsItsOwnState = true;
     SkinningProduct product = SkinningProduct::parenthesised;

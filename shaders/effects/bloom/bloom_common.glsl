@@ -3,14 +3,14 @@
 
 // A colour made safe to filter and to store: NaN becomes 0 (GLSL leaves clamp(NaN) undefined, so it
 // is picked out first), and the rest is clamped to [lo, hi], which also turns +-Inf into a limit.
-// One bad texel then stays one bad texel instead of spreading through every level (seed 001, hard
-// cases 1 and 3).
+// One bad texel then stays one bad texel instead of spreading through every level (Bloom chapter,
+// hard cases 1 and 3).
 vec3 finiteClamp(vec3 c, float lo, float hi) {
     return mix(clamp(c, lo, hi), vec3(0.0), isnan(c));
 }
 
 // The chapters' hue-preserving bright pass: the brightest channel b decides, and the colour is scaled
-// by (b - threshold) / b, so (2, 0.5, 0) keeps its green: (1, 0.25, 0) (seed 001, section 1.5).
+// by (b - threshold) / b, so (2, 0.5, 0) keeps its green: (1, 0.25, 0) (Bloom chapter, §1.5).
 // knee > 0 rounds the corner at the threshold into a parabola (the quadratic soft knee), so a surface
 // that creeps over the threshold fades in instead of switching on; knee 0 is the chapters' hard cut.
 // The input must be >= 0: a negative channel would be scaled too and make a dark halo.
@@ -21,7 +21,7 @@ vec3 brightPart(vec3 c, float threshold, float knee) {
     float s = clamp(b - threshold + k, 0.0, 2.0 * k);
     float soft = s * s / max(4.0 * k, 1e-5);
     float amount = k > 0.0 ? max(hard, soft) : hard;
-    return c * (amount / max(b, 1e-5));  // 1e-5: black has b = 0 (seed 001's guard)
+    return c * (amount / max(b, 1e-5));  // 1e-5: black has b = 0 (the Bloom chapter's guard)
 }
 
 float luma(vec3 c) {

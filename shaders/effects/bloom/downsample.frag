@@ -1,7 +1,7 @@
 #version 450 core
 // One step down the chain (effects/bloom_chain.hpp): the next level at half the size, lightly blurred.
-//   filters 0 (seed 000): centre x4 plus 4 diagonal taps at +-offset (1) texels, / 8;
-//   filters 1 (seed 001): 4 diagonal taps at +-offset (0.75) texels, / 4: the [1 3 3 1]/8 binomial.
+//   filters 0 (Shader effects): centre x4 plus 4 diagonal taps at +-offset (1) texels, / 8;
+//   filters 1 (Bloom chapter): 4 diagonal taps at +-offset (0.75) texels, / 4: the [1 3 3 1]/8 binomial.
 // Taps need GL_LINEAR and CLAMP_TO_EDGE (the chain binds its own sampler): each tap then averages four
 // texels, and light from one edge does not wrap round to the other.
 #include "bloom_common.glsl"

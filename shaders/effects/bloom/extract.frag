@@ -1,9 +1,9 @@
 #version 450 core
 // The bright pass (effects/bloom_chain.hpp): keeps the part of the scene above the threshold and
 // shrinks it into the chain's first level in the same pass.
-//   filters 0 (seed 000): 4 taps at +-offset texels (1: the centres of the 2x2 quads around the
+//   filters 0 (Shader effects): 4 taps at +-offset texels (1: the centres of the 2x2 quads around the
 //                         destination's 4x4 block), the ratio on each tap, averaged, times `scale`;
-//   filters 1 (seed 001): 4 diagonal taps at +-offset (0.75) averaged first, then the ratio;
+//   filters 1 (Bloom chapter): 4 diagonal taps at +-offset (0.75) averaged first, then the ratio;
 //   filters 2 (reference): the texel itself, same size, no filtering.
 // Every tap is made finite and non-negative first: an Inf, a NaN or a negative texel in the scene
 // must not leave this pass as anything but a bounded, non-negative colour.

@@ -4,11 +4,11 @@
 // it is enlarged. The chapters add the enlarged level with additive blending onto the level itself;
 // writing the sum into a texture of its own gives the same numbers and keeps the level as it was
 // before, so the inspector can show both chains.
-//   filters 0 (seed 000): centre x3, 4 diagonals at +-offset (1) texels x2, 4 axial at 2 offset x1, / 15;
-//   filters 1 (seed 001): 4 axial taps at 2 offset (2 x 0.5) x1, 4 diagonal at offset x2, / 12;
+//   filters 0 (Shader effects): centre x3, 4 diagonals at +-offset (1) texels x2, 4 axial at 2 offset x1, / 15;
+//   filters 1 (Bloom chapter): 4 axial taps at 2 offset (2 x 0.5) x1, 4 diagonal at offset x2, / 12;
 //   filters 2 (reference): one tap, source and target the same size.
 // Every sum is clamped below BLOOM_MAX_VALUE: levels that are finite alone cannot overflow a half
-// float once they are added up (seed 001, hard case 2).
+// float once they are added up (Bloom chapter, hard case 2).
 #include "bloom_common.glsl"
 
 layout(binding = 0) uniform sampler2D base;

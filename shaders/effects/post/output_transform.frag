@@ -1,6 +1,6 @@
 #version 450 core
 // The frame's one output transform (effects/output_transform_pass.hpp): linear light in, the sRGB
-// encoding out. Encoding twice looks washed out and not at all looks too dark (seed 000 section 3.4),
+// encoding out. Encoding twice looks washed out and not at all looks too dark (Shader effects §3.4),
 // so this is the only place that does it. With a split view the columns left of the divider show
 // `before`, through the same transform, so the two halves differ only by the effect.
 #include "../../common/output_transform.glsl"

@@ -1,4 +1,4 @@
-// The offset between neighbouring taps of the radial blur (seed 000 section 3.6), shared by the blur
+// The offset between neighbouring taps of the radial blur (Shader effects chapter §3.6), shared by the blur
 // and by the pass that writes the offsets for the inspector. Distances are in texture coordinates of
 // the screen, as in the chapter; the centre comes in pixels so that the pixel sitting on it gets
 // d = 0 exactly. effects/radial_blur.cpp holds the same maths on the CPU.

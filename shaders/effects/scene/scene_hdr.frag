@@ -1,5 +1,5 @@
 #version 450 core
-// The lit scene in linear HDR (seed 000 section 3.4). There is no gamma here on purpose: the frame
+// The lit scene in linear HDR (Shader effects chapter §3.4). There is no gamma here on purpose: the frame
 // ends with one output transform that encodes for the display, and encoding here as well is the
 // chapter's washed-out double-gamma picture.
 #include "../../common/scene_uniforms.glsl"

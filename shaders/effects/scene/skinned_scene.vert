@@ -2,7 +2,7 @@
 // The lit scene vertex shader with skinning in it, for drawing a SkinnedMesh's source (bind pose plus
 // joints and weights) directly: the chapter's skeletal path. Outputs match the plain scene vertex
 // shaders (texcoord at 1, world normal at 2), so any of their fragment shaders pairs with it.
-// T * (J * p): two mat4 * vec4 products instead of a mat4 * mat4 (seed 000 section 2.2).
+// T * (J * p): two mat4 * vec4 products instead of a mat4 * mat4 (Shader effects chapter §2).
 #include "../../common/scene_uniforms.glsl"
 #include "../../common/skinning.glsl"
 

@@ -1,5 +1,5 @@
 #version 450 core
-// Depth-only shadow pass, skinned meshes (seed 000 section 2.2: shadow_skeletal.vert): shadow_static.vert
+// Depth-only shadow pass, skinned meshes (Shader effects §2: shadow_skeletal.vert): shadow_static.vert
 // plus the skinning of the lit skeletal shader. The joint matrices come from the storage buffer at
 // binding 0, which belongs to the context, so the object's buffer bound for this draw is the one read.
 //

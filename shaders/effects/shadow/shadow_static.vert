@@ -1,5 +1,5 @@
 #version 450 core
-// Depth-only shadow pass, static meshes (seed 000 section 2: the chapter's shadow.vert). The light's
+// Depth-only shadow pass, static meshes (Shader effects chapter §2: its shadow.vert). The light's
 // view-projection is at location 2, where the lit shaders have the camera's. Only the uniforms this
 // program really has are declared: a material upload to location 3 or 4 is an error here, which is
 // the chapter's error flood when a draw path does not ask first (section 2.4).

@@ -1,14 +1,29 @@
 #include <gtest/gtest.h>
 
-#include "app/run_options.hpp"
+#include <set>
 
-using fx::parseRunOptions;
+#include "app/run_options.hpp"
+#include "render/frame_report.hpp"
+
+namespace {
+
+// The lessons' step counts differ; these tests use a lesson with five steps.
+constexpr int kSteps = 5;
+
+fx::Result<fx::RunOptions> parseRunOptions(const std::vector<std::string>& args) {
+    return fx::parseRunOptions(args, kSteps);
+}
+
+}  // namespace
 
 TEST(RunOptions, ParsesEveryFlag) {
-    auto o = parseRunOptions({"--headless", "--size", "320x180", "--frames", "3", "--step", "2", "--scene", "a.json",
-                              "--capture", "out/c", "--capture-float", "--report", "r.json", "--time-step", "0.02",
-                              "--seed", "7", "--param", "length=0.5", "--timing", "fenced", "--inspect", "bloom.down[2]",
-                              "--overlay", "--list-steps", "--list-params"});
+    auto o = parseRunOptions(
+        {"--headless", "--size",       "320x180",       "--frames",  "3",         "--step",
+         "2",          "--scene",      "a.json",        "--capture", "out/c",     "--capture-float",
+         "--report",   "r.json",       "--time-step",   "0.02",      "--seed",    "7",
+         "--param",    "length=0.5",   "--timing",      "fenced",    "--inspect", "bloom.down[2]",
+         "--overlay",  "--list-steps", "--list-params", "--lang",    "ja",        "--graph",
+         "g.dot"});
     ASSERT_TRUE(o.ok()) << o.error();
     EXPECT_TRUE(o->forceHeadless);
     EXPECT_EQ(*o->width, 320);
@@ -25,9 +40,155 @@ TEST(RunOptions, ParsesEveryFlag) {
     EXPECT_EQ(o->params[0], "length=0.5");
     EXPECT_EQ(o->timing, fx::TimingMode::Fenced);
     ASSERT_EQ(o->inspect.size(), 1u);
+    EXPECT_EQ(o->inspect[0], "bloom.down[2]");
     EXPECT_TRUE(o->overlayHeadless);
     EXPECT_TRUE(o->listSteps);
     EXPECT_TRUE(o->listParams);
+    EXPECT_EQ(o->language, "ja");
+    EXPECT_EQ(o->graphFile, "g.dot");
+}
+
+TEST(RunOptions, ParsesTheBenchFlags) {
+    auto o = parseRunOptions({"--bench", "--knob", "levels", "--bench-frames", "2", "--bench-values", "3",
+                              "--bench-out", "out/b", "--preset", "p.json", "--no-overlay", "-h"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_TRUE(o->bench);
+    EXPECT_EQ(o->benchKnob, "levels");
+    EXPECT_EQ(o->benchFrames, 2);
+    EXPECT_EQ(o->benchValues, 3);
+    EXPECT_EQ(o->benchOut, "out/b");
+    EXPECT_EQ(o->presetFile, "p.json");
+    EXPECT_FALSE(o->overlay);
+    EXPECT_TRUE(o->help);
+}
+
+TEST(RunOptions, DefaultsWhenNothingIsGiven) {
+    auto o = parseRunOptions({});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->language, "en");
+    EXPECT_TRUE(o->graphFile.empty());
+    EXPECT_FALSE(o->step);
+    EXPECT_EQ(o->timing, fx::TimingMode::Automatic);
+    EXPECT_TRUE(o->overlay);
+    EXPECT_EQ(o->seed, 1u);
+}
+
+TEST(RunOptions, StepRangeIsTheLessons) {
+    EXPECT_EQ(*fx::parseRunOptions({"--step", "5"}, 5)->step, 5);
+    EXPECT_EQ(*fx::parseRunOptions({"--step", "1"}, 1)->step, 1);
+    for (const char* bad : {"0", "6", "-1"}) {
+        auto o = fx::parseRunOptions({"--step", bad}, 5);
+        ASSERT_FALSE(o.ok()) << bad;
+        EXPECT_EQ(o.error(), std::string("--step: expected a step number from 1 to 5, got \"") + bad + "\"");
+    }
+    auto twelve = fx::parseRunOptions({"--step", "13"}, 12);
+    ASSERT_FALSE(twelve.ok());
+    EXPECT_NE(twelve.error().find("from 1 to 12"), std::string::npos) << twelve.error();
+}
+
+TEST(RunOptions, ParamAndInspectMayRepeat) {
+    auto o = parseRunOptions({"--param", "a=1", "--inspect", "x", "--param", "b=2", "--inspect", "y"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->params, (std::vector<std::string>{"a=1", "b=2"}));
+    EXPECT_EQ(o->inspect, (std::vector<std::string>{"x", "y"}));
+}
+
+TEST(RunOptions, ASwitchGivenTwiceIsHarmless) {
+    auto o = parseRunOptions({"--headless", "--headless"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_TRUE(o->forceHeadless);
+}
+
+TEST(RunOptions, ASingleValuedFlagGivenTwiceIsAnError) {
+    const std::vector<std::pair<std::string, std::string>> flagsWithAValue = {
+        {"--scene", "a.json"}, {"--size", "4x4"},      {"--frames", "2"},       {"--step", "2"},
+        {"--lang", "en"},      {"--graph", "g.dot"},   {"--timing", "off"},     {"--seed", "2"},
+        {"--capture", "c"},    {"--report", "r.json"}, {"--preset", "p.json"},  {"--time-step", "0.5"},
+        {"--knob", "k"},       {"--bench-out", "b"},   {"--bench-frames", "2"}, {"--bench-values", "2"}};
+    for (const auto& [flag, value] : flagsWithAValue) {
+        auto once = parseRunOptions({flag, value});
+        ASSERT_TRUE(once.ok()) << flag << ": " << once.error();
+        auto twice = parseRunOptions({flag, value, "--headless", flag, value});
+        ASSERT_FALSE(twice.ok()) << flag;
+        EXPECT_EQ(twice.error(), flag + ": given more than once (again as \"" + value + "\"); give it once");
+    }
+}
+
+TEST(RunOptions, AnUnknownFlagGetsTheNearestName) {
+    auto o = parseRunOptions({"--scnee", "a.json"});
+    ASSERT_FALSE(o.ok());
+    EXPECT_NE(o.error().find("unknown option \"--scnee\"; did you mean --scene? (see --help)"),
+              std::string::npos)
+        << o.error();
+    auto far = parseRunOptions({"--completely-different"});
+    ASSERT_FALSE(far.ok());
+    EXPECT_EQ(far.error().find("did you mean"), std::string::npos) << far.error();
+}
+
+TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
+    std::string help = fx::runOptionsHelp("fxlab-99-test");
+    EXPECT_EQ(help.rfind("usage: fxlab-99-test [options]", 0), 0u);
+    for (const char* line :
+         {"--size WxH", "--lang en|ja", "--graph FILE.dot", "--param NAME=VALUE", "--help, -h",
+          "--bench-values N", "--inspect NAME", "--no-overlay", "--time-step S"}) {
+        EXPECT_NE(help.find(std::string("\n  ") + line + " "), std::string::npos) << line << " in\n" << help;
+    }
+    for (const char* key : {"left arrow", "right arrow", "F1", "F5", "F12", "Esc"}) {
+        EXPECT_NE(help.find(std::string("\n  ") + key + " "), std::string::npos) << key << " in\n" << help;
+    }
+    // The help's flags are exactly these, and each of them parses (or asks for its value).
+    std::set<std::string> inHelp;
+    for (std::size_t at = 0; (at = help.find("\n  --", at)) != std::string::npos; ++at) {
+        std::size_t start = at + 3;
+        std::string flag = help.substr(start, help.find_first_of(" ,", start) - start);
+        inHelp.insert(flag);
+        auto o = parseRunOptions({flag});
+        EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
+            << flag << ": " << (o.ok() ? "" : o.error());
+    }
+    EXPECT_EQ(
+        inHelp,
+        (std::set<std::string>{
+            "--headless",    "--size",   "--frames",       "--step",          "--scene",     "--lang",
+            "--param",       "--preset", "--capture",      "--capture-float", "--report",    "--graph",
+            "--time-step",   "--seed",   "--timing",       "--inspect",       "--overlay",   "--no-overlay",
+            "--bench",       "--knob",   "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
+            "--list-params", "--help"}));
+}
+
+fx::FrameReport reportWithTextures(std::vector<std::string> names) {
+    fx::FrameReport report;
+    for (auto& n : names)
+        report.textures.push_back(fx::TextureRecord{n, {}, {}, 0, {}, false, {}, false, false});
+    return report;
+}
+
+TEST(RunOptions, InspectNamesTheFrameHasGetNoWarning) {
+    auto report = reportWithTextures({"scene.hdr", "bloom.down[0]", "bloom.down[1]"});
+    EXPECT_TRUE(fx::unknownInspectWarnings({"bloom.down[1]", "scene.hdr"}, report, 0).empty());
+    EXPECT_TRUE(fx::unknownInspectWarnings({}, report, 0).empty());
+}
+
+TEST(RunOptions, AnUnknownInspectNameIsNamedWithTheNearestNames) {
+    auto report = reportWithTextures(
+        {"scene.hdr", "bloom.down[0]", "bloom.down[1]", "bloom.up[0]", "shadow.depth", "ldr", "tonemapped"});
+    auto warnings = fx::unknownInspectWarnings({"bloom.dwn[1]", "scene.hdr", "zzz"}, report, 3);
+    ASSERT_EQ(warnings.size(), 2u);
+    const std::string& typo = warnings[0];
+    EXPECT_NE(typo.find("step 4's frame has no texture named \"bloom.dwn[1]\""), std::string::npos) << typo;
+    EXPECT_NE(typo.find("did you mean \"bloom.down[1]\"?"), std::string::npos) << typo;
+    EXPECT_NE(typo.find("nearest names it has: bloom.down[1], bloom.down[0]"), std::string::npos) << typo;
+    EXPECT_EQ(typo.find("tonemapped"), std::string::npos) << "at most five names: " << typo;
+    const std::string& far = warnings[1];
+    EXPECT_NE(far.find("\"zzz\""), std::string::npos) << far;
+    EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+    EXPECT_NE(far.find("nearest names it has: "), std::string::npos) << far;
+}
+
+TEST(RunOptions, AnInspectNameOnAFrameWithoutTexturesSaysSo) {
+    auto warnings = fx::unknownInspectWarnings({"x"}, fx::FrameReport{}, 0);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("it has no textures"), std::string::npos) << warnings[0];
 }
 
 TEST(RunOptions, ZeroAndOneSizesAreAllowed) {
@@ -53,10 +214,18 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadFlag{{"--size", "12"}, "--size: expected WxH with sizes from 0 to 16384"},
                       BadFlag{{"--size", "-1x5"}, "--size"}, BadFlag{{"--size", "20000x5"}, "16384"},
                       BadFlag{{"--frames", "0"}, "--frames: expected a frame count from 1"},
-                      BadFlag{{"--frames", "two"}, "--frames"}, BadFlag{{"--step", "100"}, "--step: expected a step number from 1 to 99"},
+                      BadFlag{{"--frames", "two"}, "--frames"},
+                      BadFlag{{"--step", "6"}, "--step: expected a step number from 1 to 5"},
+                      BadFlag{{"--step", "0"}, "--step: expected a step number from 1 to 5"},
+                      BadFlag{{"--lang", "fr"}, "--lang: expected one of en, ja; got \"fr\""},
+                      BadFlag{{"--graph", ""}, "--graph: needs a path"},
+                      BadFlag{{"--scene", ""}, "--scene: needs a path"},
+                      BadFlag{{"--inspect", ""}, "--inspect: needs a texture name"},
+                      BadFlag{{"--bench-frames", "0"},
+                              "--bench-frames: expected a frame count from 1 to 1000"},
                       BadFlag{{"--time-step", "0"}, "--time-step: expected seconds greater than 0"},
                       BadFlag{{"--time-step", "nan"}, "--time-step"}, BadFlag{{"--seed", "-3"}, "--seed"},
                       BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
                       BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
-                      BadFlag{{"--frames"}, "--frames: needs a value"}, BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
-
+                      BadFlag{{"--frames"}, "--frames: needs a value"},
+                      BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));

@@ -1,5 +1,5 @@
 // What the generated textures must look like, measured: the cloud density against the statistics of
-// seed 003 section 4, the fire sprite's alpha against seed 000 section 3.8, seamless tiling.
+// the Clouds chapter's cloud density, the fire sprite's alpha against Shader effects §3.8, seamless tiling.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,7 +73,7 @@ TEST_F(CloudDensity, IsA512SquareGreyImage) {
     EXPECT_EQ(image_->channels, 1);  // R = G = B and opaque when read as RGBA
 }
 
-TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
+TEST_F(CloudDensity, ValueStatisticsMatchTheCloudsChapter) {
     auto v = sortedValues();
     auto quantile = [&](double q) { return v[std::size_t(q * double(v.size() - 1))]; };
     double mean = 0, squares = 0;
@@ -81,7 +81,7 @@ TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
     mean /= double(v.size());
     for (float x : v) squares += (x - mean) * (x - mean);
     double sd = std::sqrt(squares / double(v.size()));
-    // Seed 003 section 4: mean 0.447, sd 0.18, quantiles 0.12 / 0.33 / 0.47 / 0.58 / 0.71, max 230.
+    // Clouds chapter: mean 0.447, sd 0.18, quantiles 0.12 / 0.33 / 0.47 / 0.58 / 0.71, max 230.
     EXPECT_NEAR(mean, 0.447, 0.01);
     EXPECT_NEAR(sd, 0.18, 0.015);
     EXPECT_NEAR(quantile(0.05), 0.12, 0.01);
@@ -95,7 +95,7 @@ TEST_F(CloudDensity, ValueStatisticsMatchTheSeed) {
 }
 
 TEST_F(CloudDensity, TilesWithoutASeam) {
-    // Across the wrap the step is about the same as between neighbours inside (the seed: 3.7 and 4.5
+    // Across the wrap the step is about the same as between neighbours inside (the chapter: 3.7 and 4.5
     // at the seam, 3.0 and 3.3 inside, out of 255).
     const ByteImage& im = *image_;
     double inside = 0;
@@ -108,7 +108,7 @@ TEST_F(CloudDensity, TilesWithoutASeam) {
 }
 
 TEST_F(CloudDensity, BlobsAreFortyToSixtyTexelsAcross) {
-    // The seed's autocorrelation: 0.84 at 8 texels, 0.55 at 16, about 0.1 at 32, about 0 at 40.
+    // The chapter's autocorrelation: 0.84 at 8 texels, 0.55 at 16, about 0.1 at 32, about 0 at 40.
     EXPECT_NEAR(autocorrelation(8), 0.84, 0.06);
     EXPECT_NEAR(autocorrelation(16), 0.55, 0.1);
     EXPECT_NEAR(autocorrelation(32), 0.1, 0.12);

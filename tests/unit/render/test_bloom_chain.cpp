@@ -18,16 +18,16 @@ std::vector<Size2D> sizes(const std::vector<BloomLevel>& levels) {
 
 }  // namespace
 
-TEST(BloomLevels, Seed000QuarterChainAt1080p) {
-    // Seed 000 section 8: 480x270, 240x135, 120x67, 60x33, 30x16, 15x8.
+TEST(BloomLevels, ShaderEffectsChapterQuarterChainAt1080p) {
+    // The Shader effects chapter's numbers: 480x270, 240x135, 120x67, 60x33, 30x16, 15x8.
     auto levels = bloomLevels({1920, 1080}, 4, 6);
     std::vector<Size2D> expected{{480, 270}, {240, 135}, {120, 67}, {60, 33}, {30, 16}, {15, 8}};
     EXPECT_EQ(sizes(levels), expected);
     EXPECT_EQ(levels[5].divisor, 128);
 }
 
-TEST(BloomLevels, Seed001HalfChainAt720p) {
-    // Seed 001 section 1.3, levels 1..6: 640x360 .. 20x11 (45 -> 22 -> 11: not exact halvings).
+TEST(BloomLevels, BloomChapterHalfChainAt720p) {
+    // Bloom chapter §1.3, levels 1..6: 640x360 .. 20x11 (45 -> 22 -> 11: not exact halvings).
     auto levels = bloomLevels({1280, 720}, 2, 6);
     std::vector<Size2D> expected{{640, 360}, {320, 180}, {160, 90}, {80, 45}, {40, 22}, {20, 11}};
     EXPECT_EQ(sizes(levels), expected);
@@ -61,7 +61,7 @@ TEST(BloomLevels, EveryLevelMatchesTheFrameGraphsFraction) {
 }
 
 TEST(BloomLevels, FilterVariancesOfTheChapters) {
-    // Seed 001's 4 diagonal taps at 0.75 texel are the [1 3 3 1]/8 binomial: variance 0.75.
+    // The Bloom chapter's 4 diagonal taps at 0.75 texel are the [1 3 3 1]/8 binomial: variance 0.75.
     EXPECT_NEAR(bloomDownsampleVariance(0.75), 0.75, 1e-12);
     // The dual-filter upsample at 0.5: taps 4/3 * 0.25 plus bilinear 3/16 at every tap.
     EXPECT_NEAR(bloomUpsampleVariance(0.5), 1.0 / 3.0 + 3.0 / 16.0, 1e-12);

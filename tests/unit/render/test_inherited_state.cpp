@@ -19,7 +19,7 @@ GlStateSnapshot afterUiQueue() {
 }
 
 TEST(InheritedState, DepthOnlyPassThatDeclaresNothingInheritsTheDepthTestOff) {
-    // Seed 000 section 3.3: the reordered shadow pass.
+    // Shader effects chapter §3.3: the reordered shadow pass.
     Names names = inheritedDependencies(PassState{}, afterUiQueue(), {.depth = true, .color = false});
     EXPECT_EQ(names, (Names{"depth test: off (inherited)", "face culling: off (inherited)"}));
 }
