@@ -109,13 +109,15 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args) {
                 o.timeStep = s;
                 return Status::success();
             });
-        } else if (flag == "--scene" || flag == "--capture" || flag == "--report" || flag == "--preset") {
+        } else if (flag == "--scene" || flag == "--capture" || flag == "--report" || flag == "--preset" ||
+                   flag == "--graph") {
             status = withValue([&](const std::string& v) -> Status {
                 if (v.empty()) return Error{cat(flag, ": needs a path")};
                 if (flag == "--scene") o.scene = v;
                 if (flag == "--capture") o.captureDir = v;
                 if (flag == "--report") o.reportFile = v;
                 if (flag == "--preset") o.presetFile = v;
+                if (flag == "--graph") o.graphFile = v;
                 return Status::success();
             });
         } else if (flag == "--param") {
@@ -161,6 +163,7 @@ std::string runOptionsHelp(const std::string& program) {
   --capture DIR         write the final image and every intermediate texture as PNG into DIR
   --capture-float       with --capture: also write exact 32-bit floats (PFM)
   --report FILE         write a JSON report: renderer, frame times, GL errors, texture statistics, passes
+  --graph FILE.dot      write the last frame's pass graph as Graphviz dot (dot -Tpng FILE.dot -o FILE.png)
   --time-step S         fixed time step in seconds (headless runs always use one; default 1/60)
   --seed N              seed for everything random (default 1)
   --timing MODE         pass timing: gpu (timer queries), fenced (glFinish + wall clock), off, auto

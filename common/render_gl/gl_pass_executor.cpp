@@ -3,7 +3,6 @@
 #include "base/log.hpp"
 #include "render/frame_graph.hpp"
 #include "render/state_diff.hpp"
-#include "render_gl/gl_formats.hpp"
 #include "render_gl/gl_state.hpp"
 
 namespace fx {
