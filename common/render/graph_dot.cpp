@@ -13,6 +13,15 @@ constexpr std::string_view kTextureFill = "#fdf3d8";
 constexpr std::string_view kCulledFill = "#eeeeee";
 constexpr std::string_view kCulledLine = "#9a9a9a";
 constexpr std::size_t kWrapColumn = 36;
+constexpr std::string_view kInheritedLine = "#c0392b";
+constexpr std::size_t kInheritedListed = 2;
+
+// "depth test: off (inherited)" -> "depth test: off": the label already says "inherits".
+std::string withoutSuffix(std::string_view item) {
+    constexpr std::string_view suffix = " (inherited)";
+    if (item.ends_with(suffix)) item.remove_suffix(suffix.size());
+    return std::string(item);
+}
 
 // A dot string literal's content: quotes and backslashes escaped, newlines as dot's centred \n.
 std::string quoted(std::string_view text) {
@@ -74,8 +83,19 @@ std::string passStatement(const PassRecord& pass, std::size_t node, std::size_t 
     if (pass.status == PassStatus::Runs) {
         std::string label =
             cat(ranPosition, ". ", pass.name, "\n(declared ", ordinal(pass.declaredIndex + 1), ")");
-        return cat("  ", passNode(node), " [shape=box, label=", quoted(label),
-                   ", style=\"rounded,filled\", fillcolor=\"", kRanFill, "\"];\n");
+        std::string attributes = cat("style=\"rounded,filled\", fillcolor=\"", kRanFill, "\"");
+        if (!pass.stateInherited.empty()) {
+            // The state check's finding (lesson 03's bug): named when short, counted when long.
+            std::string all;
+            for (const std::string& item : pass.stateInherited)
+                all += cat(all.empty() ? "" : "\n", withoutSuffix(item));
+            label += pass.stateInherited.size() <= kInheritedListed
+                         ? cat("\ninherits ", all)
+                         : cat("\ninherits ", pass.stateInherited.size(), " settings");
+            attributes += cat(", color=\"", kInheritedLine,
+                              "\", penwidth=2, tooltip=", quoted(cat("inherits:\n", all)));
+        }
+        return cat("  ", passNode(node), " [shape=box, label=", quoted(label), ", ", attributes, "];\n");
     }
     // "output unused: ..." names its status itself; "scene has no particle emitter" does not.
     std::string_view status = toString(pass.status);
@@ -119,7 +139,7 @@ std::string toDot(const FrameReport& report) {
     for (std::size_t t = 0; t < report.textures.size(); ++t) textureIndex.emplace(report.textures[t].name, t);
 
     std::string out = "digraph frame {\n";
-    out += cat("  graph [rankdir=LR, fontname=\"Helvetica\", labelloc=t, label=",
+    out += cat("  graph [rankdir=LR, bgcolor=\"white\", fontname=\"Helvetica\", labelloc=t, label=",
                quoted(cat("frame at ", toString(report.outputSize),
                           report.errors.empty() ? std::string()
                                                 : cat(", ", report.errors.size(), " error(s): nothing ran"))),

@@ -102,6 +102,31 @@ TEST(GraphDot, InspectedTexturesAreOutlinedTwiceAndNamesAreEscaped) {
     EXPECT_TRUE(contains(f.dot, "peripheries=2")) << f.dot;
 }
 
+// The state check's findings, as a GL executor records them (lesson 03, step 2).
+TEST(GraphDot, APassThatInheritedStateIsOutlinedAndSaysWhat) {
+    FrameReport report;
+    report.outputSize = {320, 180};
+    PassRecord shadow;
+    shadow.name = "shadow map";
+    shadow.stateInherited = {"depth test: off (inherited)"};
+    PassRecord scene;
+    scene.name = "scene";
+    scene.declaredIndex = 1;
+    scene.stateInherited = {"depth test: on (inherited)", "blend: on (inherited)",
+                            "face culling: off (inherited)"};
+    report.passes = {shadow, scene};
+    std::string dot = toDot(report);
+    EXPECT_TRUE(contains(dot,
+                         "label=\"1. shadow map\\n(declared 1st)\\ninherits depth test: off\", "
+                         "style=\"rounded,filled\", fillcolor=\"#dbe8f6\", color=\"#c0392b\", penwidth=2, "
+                         "tooltip=\"inherits:\\ndepth test: off\"];"))
+        << dot;
+    // Three or more are counted in the label and listed in the tooltip.
+    EXPECT_TRUE(contains(dot, "label=\"2. scene\\n(declared 2nd)\\ninherits 3 settings\"")) << dot;
+    EXPECT_TRUE(contains(dot, "tooltip=\"inherits:\\ndepth test: on\\nblend: on\\nface culling: off\""))
+        << dot;
+}
+
 TEST(GraphDot, AFrameWithErrorsSaysNothingRan) {
     test::FakeAllocator allocator;
     TexturePool pool(allocator);
