@@ -12,9 +12,8 @@ namespace fx {
 
 GLuint MaterialTextures::upload(const std::string& key, const std::string& label, int width, int height,
                                 const unsigned char* rgba) {
-    int levels = 1;
-    while ((std::max(width, height) >> levels) > 0) ++levels;
-    gl::Texture texture = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, width, height, levels, label);
+    gl::Texture texture = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, width, height,
+                                                fullMipChainLength(width, height), label);
     glTextureSubImage2D(texture.name(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     glGenerateTextureMipmap(texture.name());
     glTextureParameteri(texture.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
