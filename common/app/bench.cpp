@@ -120,7 +120,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
                        const SweepOptions& options, const std::string& lessonName, int step) {
     SweepResult result;
     result.lesson = lessonName;
-    Extent size = context.framebufferSize();
+    Size2D size = context.framebufferSize();
     result.width = size.width;
     result.height = size.height;
     result.timingMethod = std::string(toString(renderer.timer().method()));

@@ -5,7 +5,6 @@
 #include "image/pfm_file.hpp"
 #include "image/png_file.hpp"
 #include "image/view_transform.hpp"
-#include "render_gl/gl_formats.hpp"
 
 namespace fx {
 
@@ -14,8 +13,7 @@ std::vector<CapturedTexture> readFrameTextures(const FrameGraph& graph) {
     for (std::uint32_t i = 0; i < graph.textureCount(); ++i) {
         const TextureView& view = graph.texture(TextureHandle{i});
         if (view.native == 0 || view.origin == TextureOrigin::PresentedOutput) continue;
-        gl::TextureInfo info{view.spec.width, view.spec.height, view.spec.mipLevels, glInternalFormat(view.spec.format), view.name};
-        CapturedTexture c{view.name, view.spec, gl::readTexture(view.native, info, 0), {}};
+        CapturedTexture c{view.name, view.spec, gl::readTexture(view.native, view.spec, 0), {}};
         c.stats = computeStats(c.pixels);
         out.push_back(std::move(c));
     }

@@ -64,7 +64,8 @@ public:
 
     // Simulation for the frame (only what the scene has).
     virtual void update(const FrameInfo& frame) { (void)frame; }
-    // Declares this frame's passes for the current step.
+    // Declares this frame's passes for the current step. Their bodies run after this returns, so
+    // they capture handles and values by copy, never a local by reference (docs/frame-graph.md).
     virtual void buildFrame(FrameGraph& graph, const FrameInfo& frame) = 0;
 
     // Programs the runner reloads on F5 or when their files change, and whose errors it shows.

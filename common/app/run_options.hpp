@@ -27,7 +27,7 @@ struct RunOptions {
     std::filesystem::path captureDir;     // --capture DIR
     bool captureFloat = false;            // --capture-float
     std::filesystem::path reportFile;     // --report FILE
-    std::filesystem::path graphFile;      // --graph FILE.dot: the last frame's compiled graph (Graphviz)
+    std::filesystem::path graphFile;      // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
     std::optional<double> timeStep;       // --time-step S (fixed step; default 1/60 s headless)
     std::uint32_t seed = 1;               // --seed N
     std::vector<std::string> params;      // --param name=value, checked once the lesson is known

@@ -22,6 +22,7 @@
 #include "gl/readback.hpp"
 #include "image/png_file.hpp"
 #include "platform/context.hpp"
+#include "render/graph_dot.hpp"
 #include "render_gl/gl_pass_executor.hpp"
 #include "render_gl/gl_texture_allocator.hpp"
 #include "scene/scene_loader.hpp"
@@ -166,12 +167,12 @@ int run(Session& s, const std::string& exe) {
                 s.status = "reloaded shaders";
             }
 
-            Extent extent = context->framebufferSize();
+            Size2D extent = context->framebufferSize();
             FrameInfo frame;
             frame.index = index;
             frame.seconds = seconds;
             frame.deltaSeconds = delta;
-            frame.size = {extent.width, extent.height};
+            frame.size = extent;
             frame.step = s.step;
             frame.seed = o.seed;
             frame.headless = headless;
@@ -264,8 +265,7 @@ int run(Session& s, const std::string& exe) {
         }
 
         // The results of the run.
-        Extent extent = context->framebufferSize();
-        facts.size = {extent.width, extent.height};
+        facts.size = context->framebufferSize();
         facts.step = s.step + 1;
         auto steps = s.lesson.steps();
         facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)].title : "";
@@ -293,6 +293,14 @@ int run(Session& s, const std::string& exe) {
                 exitCode = 1;
             } else {
                 log::info("report written to ", reportFile.string());
+            }
+        }
+        if (!o.graphFile.empty()) {
+            if (auto written = writeFileAtomically(o.graphFile, toDot(lastReport)); !written) {
+                log::error(written.error());
+                exitCode = 1;
+            } else {
+                log::info("frame graph written to ", o.graphFile.string(), " (dot -Tpng draws it)");
             }
         }
         if (facts.glErrors > 0) log::error(facts.glErrors, " GL error(s) in this run; the last: ", facts.lastGlError);

@@ -62,7 +62,7 @@ KeyPresses WindowInput::takeKeyPresses() {
     return window_ ? taken : KeyPresses{};
 }
 
-Pointer WindowInput::pointer(Extent framebuffer, bool overUi) const {
+Pointer WindowInput::pointer(Size2D framebuffer, bool overUi) const {
     Pointer p;
     if (!window_ || framebuffer.empty()) return p;
     double x = 0, y = 0;

@@ -33,7 +33,7 @@ public:
     // The presses since the last call (Esc closes the window directly).
     KeyPresses takeKeyPresses();
     // The mouse in framebuffer pixels, bottom-left origin.
-    Pointer pointer(Extent framebuffer, bool overUi) const;
+    Pointer pointer(Size2D framebuffer, bool overUi) const;
 
 private:
     GLFWwindow* window_;

@@ -13,10 +13,7 @@ void Framebuffer::attachColor(int index, const Texture& texture, int level) {
 }
 
 void Framebuffer::attachDepth(const Texture& texture, int level) {
-    GLenum attachment = texture.info().internalFormat == GL_DEPTH24_STENCIL8 ||
-                                texture.info().internalFormat == GL_DEPTH32F_STENCIL8
-                            ? GL_DEPTH_STENCIL_ATTACHMENT
-                            : GL_DEPTH_ATTACHMENT;
+    GLenum attachment = hasStencil(texture.spec().format) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
     glNamedFramebufferTexture(name(), attachment, texture.name(), level);
 }
 

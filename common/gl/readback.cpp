@@ -2,42 +2,31 @@
 
 #include <algorithm>
 
+#include "gl/gl_formats.hpp"
+
 namespace fx::gl {
-namespace {
 
-GLenum readFormatFor(int channels) {
-    switch (channels) {
-        case 1: return GL_RED;
-        case 2: return GL_RG;
-        case 3: return GL_RGB;
-        default: return GL_RGBA;
-    }
-}
-
-}  // namespace
-
-FloatImage readTexture(GLuint texture, const TextureInfo& info, int level) {
+FloatImage readTexture(GLuint texture, const TextureSpec& spec, int level) {
     FloatImage image;
-    image.width = mipSize(info.width, level);
-    image.height = mipSize(info.height, level);
-    image.channels = channelCount(info.internalFormat);
+    image.width = mipLevelSize(spec.width, level);
+    image.height = mipLevelSize(spec.height, level);
+    image.channels = readbackChannelCount(spec.format);
     image.texels.assign(static_cast<std::size_t>(image.width) * image.height * image.channels, 0.0f);
-    GLenum format = isDepthFormat(info.internalFormat) ? GL_DEPTH_COMPONENT : readFormatFor(image.channels);
+    GLenum format = readbackPixelFormat(spec.format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(texture, level, format, GL_FLOAT, static_cast<GLsizei>(image.texels.size() * sizeof(float)),
                       image.texels.data());
     return image;
 }
 
-FloatImage readTexture(const Texture& texture, int level) { return readTexture(texture.name(), texture.info(), level); }
+FloatImage readTexture(const Texture& texture, int level) { return readTexture(texture.name(), texture.spec(), level); }
 
-Texel readTexel(GLuint texture, const TextureInfo& info, int level, int x, int y) {
+Texel readTexel(GLuint texture, const TextureSpec& spec, int level, int x, int y) {
     Texel texel;
-    int w = mipSize(info.width, level);
-    int h = mipSize(info.height, level);
-    if (x < 0 || y < 0 || x >= w || y >= h) return texel;
-    int channels = channelCount(info.internalFormat);
-    GLenum format = isDepthFormat(info.internalFormat) ? GL_DEPTH_COMPONENT : readFormatFor(channels);
+    Size2D size = spec.levelSize(level);
+    if (x < 0 || y < 0 || x >= size.width || y >= size.height) return texel;
+    int channels = readbackChannelCount(spec.format);
+    GLenum format = readbackPixelFormat(spec.format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     float values[4] = {0, 0, 0, 1};
     glGetTextureSubImage(texture, level, x, y, 0, 1, 1, 1, format, GL_FLOAT, sizeof(values), values);

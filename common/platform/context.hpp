@@ -6,21 +6,15 @@
 #include <string>
 
 #include "base/result.hpp"
+#include "base/size2d.hpp"
 #include "gl/gl.hpp"
 
 struct GLFWwindow;
 
 namespace fx {
 
-struct Extent {
-    int width = 0;
-    int height = 0;
-    bool empty() const { return width <= 0 || height <= 0; }
-    bool operator==(const Extent&) const = default;
-};
-
 struct ContextOptions {
-    Extent size{1280, 720};
+    Size2D size{1280, 720};
     std::string title = "fxlab";
     bool debugContext = true;  // KHR_debug messages are delivered reliably only in debug contexts
     bool visible = true;       // windows only
@@ -31,7 +25,7 @@ public:
     virtual ~Context() = default;
 
     // The size of what is presented; 0x0 while a window is minimised (render nothing then).
-    virtual Extent framebufferSize() const = 0;
+    virtual Size2D framebufferSize() const = 0;
     // 0 for a window's back buffer; an offscreen framebuffer when headless.
     virtual GLuint presentFramebuffer() const = 0;
     virtual void present() = 0;
@@ -39,7 +33,7 @@ public:
     virtual bool shouldClose() const = 0;
     virtual bool headless() const = 0;
     // Headless contexts resize their offscreen target on request; windows follow the user.
-    virtual void resize(Extent size) = 0;
+    virtual void resize(Size2D size) = 0;
     virtual GLFWwindow* window() const { return nullptr; }
 
     // "EGL surfaceless (Mesa)", "GLFW window" ...

@@ -55,23 +55,23 @@ public:
         eglTerminate(display_);
     }
 
-    Status setup(const std::string& kind, Extent size) {
+    Status setup(const std::string& kind, Size2D size) {
         if (auto status = finishSetup(kind); !status) return status;
         resize(size);
         return Status::success();
     }
 
-    Extent framebufferSize() const override { return size_; }
+    Size2D framebufferSize() const override { return size_; }
     GLuint presentFramebuffer() const override { return target_.name(); }
     void present() override { glFlush(); }
     void pollEvents() override {}
     bool shouldClose() const override { return false; }
     bool headless() const override { return true; }
-    void resize(Extent size) override {
+    void resize(Size2D size) override {
         size_ = {std::max(size.width, 0), std::max(size.height, 0)};
         if (size_.empty()) return;  // like a minimised window: nothing is drawn
-        color_ = gl::Texture::create2D(GL_RGBA8, size_.width, size_.height, 1, "present.color");
-        depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, size_.width, size_.height, 1, "present.depth");
+        color_ = gl::Texture::create2D(TextureFormat::RGBA8, size_.width, size_.height, 1, "present.color");
+        depth_ = gl::Texture::create2D(TextureFormat::Depth24, size_.width, size_.height, 1, "present.depth");
         target_ = gl::Framebuffer("present (headless)");
         target_.attachColor(0, color_);
         target_.attachDepth(depth_);
@@ -83,7 +83,7 @@ private:
     EGLDisplay display_;
     EGLContext context_;
     EGLSurface surface_;
-    Extent size_;
+    Size2D size_;
     gl::Texture color_, depth_;
     gl::Framebuffer target_;
 };

@@ -48,8 +48,8 @@ public:
         glfwTerminate();
     }
 
-    Extent framebufferSize() const override {
-        Extent e;
+    Size2D framebufferSize() const override {
+        Size2D e;
         glfwGetFramebufferSize(window_, &e.width, &e.height);
         return e;
     }
@@ -58,7 +58,7 @@ public:
     void pollEvents() override { glfwPollEvents(); }
     bool shouldClose() const override { return glfwWindowShouldClose(window_) != 0; }
     bool headless() const override { return false; }
-    void resize(Extent size) override { glfwSetWindowSize(window_, size.width, size.height); }
+    void resize(Size2D size) override { glfwSetWindowSize(window_, size.width, size.height); }
     GLFWwindow* window() const override { return window_; }
 
     Status setup() { return finishSetup("GLFW window"); }

@@ -236,7 +236,7 @@ PassRecord& FrameGraph::recordOf(std::uint32_t pass) {
     return report_.passes[reportSlot_[pass]];
 }
 
-Status FrameGraph::execute(TexturePool& pool, PassExecutor& executor) {
+Status FrameGraph::executeDeclared(TexturePool& pool, PassExecutor& executor) {
     if (!compiled_) compile();
     if (!compileOk_)
         return Error{cat("frame graph: not executed, it has ", report_.errors.size(), " error(s)")};

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "render/dead_stack.hpp"
 #include "render/frame_report.hpp"
 #include "render/graph_compiler.hpp"
 #include "render/pass.hpp"
@@ -72,8 +73,14 @@ public:
     const std::vector<std::string>& errors() const { return report_.errors; }
 
     // Compiles if needed, then runs what runs. Nothing runs when compile failed, or when the output is
-    // 0x0 (every pass is then reported as "frame skipped").
-    Status execute(TexturePool& pool, PassExecutor& executor);
+    // 0x0 (every pass is then reported as "frame skipped"). The bodies run now, after the functions
+    // that declared them returned, so first the stack those functions used is poisoned: a body that
+    // captured one of their locals by reference fails loudly instead of reading a leftover
+    // (render/dead_stack.hpp). Inlined, so the poison starts right below the caller's frame.
+    [[gnu::always_inline]] Status execute(TexturePool& pool, PassExecutor& executor) {
+        poisonDeadStack();
+        return executeDeclared(pool, executor);
+    }
     // Hands inspected and captured transients back to the pool; call after the overlay and captures
     // are done with them and before TexturePool::endFrame.
     void releaseTextures();
@@ -95,6 +102,7 @@ public:
     Size2D targetSize(const Pass& pass) const;
 
 private:
+    Status executeDeclared(TexturePool& pool, PassExecutor& executor);
     void resolveTextures();
     void buildReport();
     PassRecord& recordOf(std::uint32_t pass);

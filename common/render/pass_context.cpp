@@ -1,8 +1,10 @@
 #include "render/pass_context.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "base/log.hpp"
+#include "render/dead_stack.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -12,6 +14,14 @@ const TextureView& PassContext::texture(TextureHandle handle) const {
     bool declared = std::any_of(accesses.begin(), accesses.end(),
                                 [&](const TextureAccess& a) { return a.texture == handle; });
     if (declared) return graph_.texture(handle);
+    if (handle.index == kDeadStackWord) {
+        // Memory is already being misread; carrying on would only hide where.
+        log::error("pass '", pass_.name(),
+                   "' read a texture handle from a stack frame that has returned: its body captured a "
+                   "local of the function that declared it by reference ([&]), but bodies run later, in "
+                   "FrameGraph::execute. Capture handles and values by copy ([=] or [handle]).");
+        std::abort();
+    }
     static const TextureView kNone{};
     log::error(
         "pass '", pass_.name(), "' used ",

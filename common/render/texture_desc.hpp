@@ -1,22 +1,13 @@
 #pragma once
-// How a lesson describes a texture (a size rule, a format, a mip count) and the concrete texture it
-// resolves to for one frame. Sizes are ints like the rest of fxlab's GL-facing code; negative input
-// is treated as zero.
-#include <cstdint>
+// How a lesson describes a texture (a size rule, a format, a mip count), resolved each frame to the
+// concrete TextureSpec (base/texture_spec.hpp). Sizes are ints like the rest of fxlab's GL-facing
+// code; negative input is treated as zero.
 #include <string>
 
-#include "render/texture_format.hpp"
+#include "base/size2d.hpp"
+#include "base/texture_spec.hpp"
 
 namespace fx {
-
-// A width and height in texels (the output's size, a texture's size). The platform layer has its own
-// Extent; this one lives here so the render layer needs nothing but base.
-struct Size2D {
-    int width = 0;
-    int height = 0;
-    bool empty() const { return width <= 0 || height <= 0; }
-    bool operator==(const Size2D&) const = default;
-};
 
 // A texture's size: either absolute texels, or a fraction num/den of the output's size.
 // Rounding rule for fractions: floor(output * num / den) on each axis, but never below 1 when that
@@ -59,28 +50,9 @@ struct TextureDesc {
     int mipLevels = 1;
 };
 
-// The concrete texture: what the pool allocates and keys on, and what the GL layer creates.
-struct TextureSpec {
-    int width = 0;
-    int height = 0;
-    TextureFormat format = TextureFormat::RGBA8;
-    int mipLevels = 1;
-    bool operator==(const TextureSpec&) const = default;
-};
-
-// Number of levels from width x height down to 1x1: floor(log2(max(w, h))) + 1. A 0x0 size counts
-// one level, so level arithmetic never goes below zero.
-int fullMipChainLength(int width, int height);
-// Size of one axis at a mip level: max(1, size >> level), GL's rule (0 stays 0).
-int mipLevelSize(int size, int level);
-
+// The concrete texture for this frame's output size: what the pool allocates and keys on.
 TextureSpec resolve(const TextureDesc& desc, Size2D outputSize);
 
-// Bytes of all mip levels.
-std::uint64_t textureBytes(const TextureSpec& spec);
-
-std::string toString(Size2D size);              // "1279x719"
 std::string toString(const TextureSize& size);  // "1/4 output", "output", "2048x2048"
-std::string toString(const TextureSpec& spec);  // "319x179 RGBA16F, 9 mips"
 
 }  // namespace fx

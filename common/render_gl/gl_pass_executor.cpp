@@ -3,7 +3,6 @@
 #include "base/log.hpp"
 #include "render/frame_graph.hpp"
 #include "render/state_diff.hpp"
-#include "render_gl/gl_formats.hpp"
 #include "render_gl/gl_state.hpp"
 
 namespace fx {
@@ -22,7 +21,7 @@ Result<GLuint> GlPassExecutor::framebufferFor(const Pass& pass, PassContext& ctx
     }
     if (auto depth = pass.depthAttachment()) {
         key.depth = ctx.native(*depth);
-        key.depthStencil = ctx.texture(*depth).spec.format == TextureFormat::Depth24Stencil8;
+        key.depthStencil = hasStencil(ctx.texture(*depth).spec.format);
         label += (label.empty() ? "" : " + ") + ctx.texture(*depth).name;
     }
     if (key.colors.empty() && key.depth == 0) return 0u;  // a compute or storage-only pass

@@ -1,13 +1,12 @@
 #include "render_gl/gl_texture_allocator.hpp"
 
 #include "base/log.hpp"
-#include "render_gl/gl_formats.hpp"
 
 namespace fx {
 
 NativeTexture GlTextureAllocator::create(const TextureSpec& spec, std::string_view label) {
     if (spec.width <= 0 || spec.height <= 0) return 0;
-    auto texture = gl::Texture::create2D(glInternalFormat(spec.format), spec.width, spec.height, spec.mipLevels, label);
+    auto texture = gl::Texture::create2D(spec.format, spec.width, spec.height, spec.mipLevels, label);
     NativeTexture name = texture.name();
     textures_.emplace(name, std::move(texture));
     return name;
@@ -18,11 +17,6 @@ void GlTextureAllocator::destroy(NativeTexture texture) { destroyed_ += textures
 void GlTextureAllocator::relabel(NativeTexture texture, std::string_view label) {
     auto it = textures_.find(texture);
     if (it != textures_.end()) it->second.relabel(label);
-}
-
-const gl::TextureInfo* GlTextureAllocator::info(NativeTexture texture) const {
-    auto it = textures_.find(texture);
-    return it == textures_.end() ? nullptr : &it->second.info();
 }
 
 }  // namespace fx

@@ -15,9 +15,6 @@ public:
     void destroy(NativeTexture texture) override;
     void relabel(NativeTexture texture, std::string_view label) override;
 
-    // The GL facts of a texture this allocator made (size, levels, internal format, label).
-    const gl::TextureInfo* info(NativeTexture texture) const;
-
     // How many textures were deleted so far. GL may give a deleted texture's name to a new one, so
     // whoever caches objects by texture name (framebuffers) drops them when this changes.
     std::uint64_t destroyedCount() const { return destroyed_; }

@@ -33,13 +33,13 @@ void Inspector::select(const std::string& name) {
     view_.fit();
 }
 
-ViewSettings& Inspector::settingsFor(const std::string& name, const gl::TextureInfo& info) {
+ViewSettings& Inspector::settingsFor(const std::string& name, const TextureSpec& spec) {
     auto it = settings_.find(name);
-    if (it == settings_.end() || it->second.format != info.internalFormat) {
-        it = settings_.insert_or_assign(name, Kept{info.internalFormat, defaultViewSettings(info)}).first;
+    if (it == settings_.end() || it->second.format != spec.format) {
+        it = settings_.insert_or_assign(name, Kept{spec.format, defaultViewSettings(spec)}).first;
     }
     ViewSettings& s = it->second.settings;
-    s.level = std::clamp(s.level, 0, std::max(info.levels, 1) - 1);
+    s.level = std::clamp(s.level, 0, std::max(spec.mipLevels, 1) - 1);
     return s;
 }
 
@@ -84,14 +84,14 @@ void Inspector::refreshThumbnails(const InspectorFrame& frame) {
         }
         TextureSource source = lookup(t.name);
         if (!source.alive()) continue;
-        ViewSettings& s = settingsFor(t.name, source.info);
+        ViewSettings& s = settingsFor(t.name, source.spec);
         s.cameraNear = frame.cameraNear;
         s.cameraFar = frame.cameraFar;
         // Depth needs its range before a thumbnail says anything; one texture a frame is read back
         // for that (once per texture: the fitted range is kept).
         if (s.autoFitPending && !fittedOne && t.name != selected_) {
-            TextureAnalysis a = analyseImage(gl::readTexture(source.native, source.info, 0),
-                                             showsLinearDepth(s, source.info), s.cameraNear, s.cameraFar, 8);
+            TextureAnalysis a = analyseImage(gl::readTexture(source.native, source.spec, 0),
+                                             showsLinearDepth(s, source.spec), s.cameraNear, s.cameraFar, 8);
             if (autoFitRange(s, a)) s.autoFitPending = false;
             fittedOne = true;
         }
@@ -142,7 +142,7 @@ void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) 
 Result<std::filesystem::path> Inspector::saveSelected(bool exactFloats) {
     TextureSource source = lookup(selected_);
     if (selected_.empty()) return Error{"no texture selected"};
-    ViewSettings& s = settingsFor(selected_, source.info);
+    ViewSettings& s = settingsFor(selected_, source.spec);
     auto path = inspectorFilePath(saveFolder_, selected_, s.level, exactFloats ? ".pfm" : ".png");
     Status saved = exactFloats ? saveExactPfm(source, s.level, path) : saveViewPng(display_, source, s, path);
     if (!saved) return Error{saved.error()};
@@ -190,7 +190,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
         return;
     }
 
-    ViewSettings& s = settingsFor(selected_, source.info);
+    ViewSettings& s = settingsFor(selected_, source.spec);
     s.cameraNear = frame.cameraNear;
     s.cameraFar = frame.cameraFar;
     if (analyser_.update(source, s, frame.deltaSeconds) && s.autoFitPending) {
@@ -241,7 +241,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
                 anchor.levelSize(target->level));
         }
     }
-    PixelProbe::draw(probeSample_, anchor, showsLinearDepth(s, anchor.info), s.cameraNear, s.cameraFar,
+    PixelProbe::draw(probeSample_, anchor, showsLinearDepth(s, anchor.spec), s.cameraNear, s.cameraFar,
                      probe_.pinned());
     if (target && !inView(*target)) {
         ImGui::SameLine();

@@ -55,7 +55,7 @@ public:
     void select(const std::string& name);
     const std::string& selected() const { return selected_; }
     // The view settings kept for a texture (created with defaults for its format).
-    ViewSettings& settingsFor(const std::string& name, const gl::TextureInfo& info);
+    ViewSettings& settingsFor(const std::string& name, const TextureSpec& spec);
     ZoomableView& view() { return view_; }
     PixelProbe& probe() { return probe_; }
     const ChainStrip& strip() const { return strip_; }
@@ -91,7 +91,7 @@ private:
     std::optional<PixelProbe::Target> hovered_;  // from the last frame's view or strip
 
     struct Kept {
-        GLenum format = 0;
+        TextureFormat format = TextureFormat::RGBA8;
         ViewSettings settings;
     };
     std::map<std::string, Kept> settings_;

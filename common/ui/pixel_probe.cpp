@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
+#include "gl/gl_formats.hpp"
 #include "ui/texture_analysis.hpp"
 #include "ui/ui_style.hpp"
 
@@ -20,8 +21,8 @@ ProbeSample probeTexel(const TextureSource& source, int level, int x, int y) {
     s.size = source.levelSize(level);
     if (!source.alive() || level < 0 || level >= source.levels()) return s;
     if (x < 0 || y < 0 || x >= s.size.width || y >= s.size.height) return s;
-    s.texel = gl::readTexel(source.native, source.info, level, x, y);
-    s.channels = gl::channelCount(source.info.internalFormat);
+    s.texel = gl::readTexel(source.native, source.spec, level, x, y);
+    s.channels = readbackChannelCount(source.spec.format);
     return s;
 }
 
@@ -50,11 +51,10 @@ std::string exactFloatText(float value) {
     return text;
 }
 
-std::string storedValueText(float value, GLenum internalFormat) {
+std::string storedValueText(float value, TextureFormat format) {
     std::string text = exactFloatText(value);
-    bool unorm8 = internalFormat == GL_RGBA8 || internalFormat == GL_R8 || internalFormat == GL_RG8 ||
-                  internalFormat == GL_RGB8 || internalFormat == GL_SRGB8_ALPHA8;
-    if (unorm8 && internalFormat != GL_SRGB8_ALPHA8 && std::isfinite(value)) {
+    // An sRGB texel reads back decoded, so it is no longer a whole number of 255ths.
+    if (isUnorm8(format) && !isSrgb(format) && std::isfinite(value)) {
         text += cat(" (", static_cast<int>(std::lround(value * 255.0f)), "/255)");
     }
     return text;
@@ -69,14 +69,14 @@ void PixelProbe::draw(const ProbeSample& sample, const TextureSource& source, bo
     ImGui::Text("texel (%d, %d) of mip %d, %dx%d%s", sample.x, sample.y, sample.level, sample.size.width,
                 sample.size.height, pinned ? "  [pinned: right click to release]" : "");
     static const char* names[4] = {"R", "G", "B", "A"};
-    const bool depth = gl::isDepthFormat(source.info.internalFormat);
+    const bool depth = isDepth(source.spec.format);
     for (int c = 0; c < sample.channels; ++c) {
         if (c > 0) ImGui::SameLine(0.0f, 14.0f);
         ImGui::TextColored(depth ? ui_style::kMuted : ui_style::channelColour(c), "%s",
                            depth ? "depth" : names[c]);
         ImGui::SameLine();
         float v = sample.texel.value[c];
-        ImGui::TextUnformatted(storedValueText(v, source.info.internalFormat).c_str());
+        ImGui::TextUnformatted(storedValueText(v, source.spec.format).c_str());
     }
     if (depth && linearDepth && std::isfinite(sample.texel.value[0])) {
         ImGui::SameLine(0.0f, 14.0f);

@@ -35,7 +35,7 @@ std::vector<ProbeSample> probeChain(const TextureChain& chain, const SourceLooku
 
 // A stored value as text: floats in the fewest digits that read back as the same float ("0.1",
 // "65504", "1e-40", "nan", "-inf"); 8-bit UNORM values also as n/255.
-std::string storedValueText(float value, GLenum internalFormat);
+std::string storedValueText(float value, TextureFormat format);
 
 // The shortest decimal form that parses back to exactly `value`.
 std::string exactFloatText(float value);

@@ -130,14 +130,14 @@ bool TextureAnalyser::update(const TextureSource& source, const ViewSettings& se
     if (!source.alive()) return false;
     age_ += std::max(deltaSeconds, 0.0);
     const int level = std::clamp(settings.level, 0, source.levels() - 1);
-    const bool linear = showsLinearDepth(settings, source.info);
-    const bool same = valid_ && analysis_.name == source.info.label && analysis_.level == level &&
+    const bool linear = showsLinearDepth(settings, source.spec);
+    const bool same = valid_ && analysis_.name == source.name && analysis_.level == level &&
                       analysis_.linearDepth == linear &&
                       (!linear || (near_ == settings.cameraNear && far_ == settings.cameraFar));
     if (same && age_ < interval_) return false;
-    FloatImage image = gl::readTexture(source.native, source.info, level);
+    FloatImage image = gl::readTexture(source.native, source.spec, level);
     analysis_ = analyseImage(image, linear, settings.cameraNear, settings.cameraFar);
-    analysis_.name = source.info.label;
+    analysis_.name = source.name;
     analysis_.level = level;
     near_ = settings.cameraNear;
     far_ = settings.cameraFar;

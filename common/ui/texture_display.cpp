@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "base/log.hpp"
+#include "gl/gl_formats.hpp"
 #include "ui/gl_state_scope.hpp"
 
 namespace fx {
@@ -44,7 +45,7 @@ void DisplaySurface::resize(int width, int height) {
     width = std::max(width, 1);
     height = std::max(height, 1);
     if (texture_ && texture_.width() == width && texture_.height() == height) return;
-    texture_ = gl::Texture::create2D(GL_RGBA8, width, height, 1, label_);
+    texture_ = gl::Texture::create2D(TextureFormat::RGBA8, width, height, 1, label_);
     glTextureParameteri(texture_.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.name(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (!framebuffer_.name()) framebuffer_ = gl::Framebuffer(label_);
@@ -85,13 +86,13 @@ void TextureDisplay::draw(DisplaySurface& surface, const TextureSource& source, 
     glProgramUniform2i(p, kLevelSize, size.width, size.height);
     glProgramUniform2f(p, kOrigin, float(window.originX), float(window.originY));
     glProgramUniform1f(p, kTexelsPerPixel, float(std::max(window.texelsPerPixel, 1e-6)));
-    glProgramUniform1i(p, kChannelCount, gl::channelCount(source.info.internalFormat));
+    glProgramUniform1i(p, kChannelCount, readbackChannelCount(source.spec.format));
     glProgramUniform4f(p, kShown, s.channels[0] ? 1.0f : 0.0f, s.channels[1] ? 1.0f : 0.0f,
                        s.channels[2] ? 1.0f : 0.0f, s.channels[3] ? 1.0f : 0.0f);
     glProgramUniform2f(p, kRange, s.rangeLow, s.rangeHigh);
     glProgramUniform1f(p, kExposure, std::exp2(s.exposureStops));
     glProgramUniform1i(p, kTransform, static_cast<int>(s.transform));
-    glProgramUniform1i(p, kLinearDepth, showsLinearDepth(s, source.info) ? 1 : 0);
+    glProgramUniform1i(p, kLinearDepth, showsLinearDepth(s, source.spec) ? 1 : 0);
     glProgramUniform2f(p, kNearFar, s.cameraNear, s.cameraFar);
     glProgramUniform1i(p, kHighlight, s.highlightSpecial ? 1 : 0);
     glProgramUniform1i(p, kGrid, grid ? 1 : 0);

@@ -24,8 +24,8 @@ std::filesystem::path inspectorFilePath(const std::filesystem::path& dir, std::s
 Status saveViewPng(const TextureDisplay& display, const TextureSource& source, const ViewSettings& settings,
                    const std::filesystem::path& path) {
     if (!source.alive())
-        return Error{cat("cannot save '", source.info.label, "': it is not alive this frame")};
-    if (!display.ok()) return Error{cat("cannot save '", source.info.label, "': ", display.error())};
+        return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
+    if (!display.ok()) return Error{cat("cannot save '", source.name, "': ", display.error())};
     const int level = std::clamp(settings.level, 0, source.levels() - 1);
     const Size2D size = source.levelSize(level);
     DisplaySurface surface("ui.save png");
@@ -38,9 +38,9 @@ Status saveViewPng(const TextureDisplay& display, const TextureSource& source, c
 
 Status saveExactPfm(const TextureSource& source, int level, const std::filesystem::path& path) {
     if (!source.alive())
-        return Error{cat("cannot save '", source.info.label, "': it is not alive this frame")};
+        return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
     level = std::clamp(level, 0, source.levels() - 1);
-    FloatImage image = gl::readTexture(source.native, source.info, level);
+    FloatImage image = gl::readTexture(source.native, source.spec, level);
     if (auto written = writePfm(path, image); !written) return written;
     if (image.channels == 4) {
         FloatImage alpha = makeFloatImage(image.width, image.height, 1);

@@ -1,6 +1,8 @@
 #pragma once
 // A texture as the inspector sees it: its GL name (0 while the texture is not alive) and what GL
 // needs to read it. Built from the frame graph's view of a texture, or from a gl::Texture in tests.
+#include <string>
+
 #include "gl/texture.hpp"
 #include "render/graph_texture.hpp"
 
@@ -8,13 +10,12 @@ namespace fx {
 
 struct TextureSource {
     GLuint native = 0;
-    gl::TextureInfo info;  // label = the texture's name
+    TextureSpec spec;
+    std::string name;
 
     bool alive() const { return native != 0; }
-    int levels() const { return info.levels; }
-    Size2D levelSize(int level) const {
-        return {gl::mipSize(info.width, level), gl::mipSize(info.height, level)};
-    }
+    int levels() const { return spec.mipLevels; }
+    Size2D levelSize(int level) const { return spec.levelSize(level); }
 };
 
 TextureSource textureSource(const TextureView& view);

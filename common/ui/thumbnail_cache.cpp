@@ -14,7 +14,7 @@ void ThumbnailCache::refresh(const TextureDisplay& display, const TextureSource&
     int w = std::clamp(static_cast<int>(std::lround(size.width * scale)), 1, maxWidth);
     int h = std::clamp(static_cast<int>(std::lround(size.height * scale)), 1, maxHeight);
     auto [it, added] = thumbnails_.try_emplace(
-        source.info.label, Thumbnail{DisplaySurface("ui.thumbnail " + source.info.label)});
+        source.name, Thumbnail{DisplaySurface("ui.thumbnail " + source.name)});
     Thumbnail& t = it->second;
     t.surface.resize(w, h);
     t.width = w;

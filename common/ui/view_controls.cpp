@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/log.hpp"
+#include "gl/gl_formats.hpp"
 #include "image/plot_axis.hpp"
 #include "ui/pixel_probe.hpp"
 #include "ui/ui_style.hpp"
@@ -50,9 +51,8 @@ bool autoFitRange(ViewSettings& s, const TextureAnalysis& a) {
 }
 
 void drawViewControls(ViewSettings& s, const TextureSource& source, const TextureAnalysis* analysis) {
-    const GLenum format = source.info.internalFormat;
-    const bool depth = gl::isDepthFormat(format);
-    const int channels = gl::channelCount(format);
+    const bool depth = isDepth(source.spec.format);
+    const int channels = readbackChannelCount(source.spec.format);
 
     // Level, channels, transform, exposure; then the range. Items flow onto a new row when the
     // inspector is narrow.

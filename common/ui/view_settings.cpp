@@ -16,23 +16,23 @@ std::string_view toString(DisplayTransform transform) {
     return "?";
 }
 
-ViewSettings defaultViewSettings(const gl::TextureInfo& info) {
+ViewSettings defaultViewSettings(const TextureSpec& spec) {
     ViewSettings s;
-    if (gl::isDepthFormat(info.internalFormat)) {
+    if (isDepth(spec.format)) {
         s.transform = DisplayTransform::Direct;
         s.channels = {true, false, false, false};
-    } else if (gl::isFloatFormat(info.internalFormat) || info.internalFormat == GL_SRGB8_ALPHA8) {
+    } else if (isFloat(spec.format) || isSrgb(spec.format)) {
         // sRGB textures are decoded to linear light when fetched, so they need the encoding back.
         s.transform = DisplayTransform::Srgb;
     }
     // Fitting the range is right for depth (a narrow band near 1) and harmless for colour only when
     // asked; colour starts at [0, 1] so that a dark picture looks dark.
-    s.autoFitPending = gl::isDepthFormat(info.internalFormat);
+    s.autoFitPending = isDepth(spec.format);
     return s;
 }
 
-bool showsLinearDepth(const ViewSettings& settings, const gl::TextureInfo& info) {
-    return settings.linearDepth && gl::isDepthFormat(info.internalFormat);
+bool showsLinearDepth(const ViewSettings& settings, const TextureSpec& spec) {
+    return settings.linearDepth && isDepth(spec.format);
 }
 
 }  // namespace fx

@@ -5,7 +5,7 @@
 #include <array>
 #include <string_view>
 
-#include "gl/texture.hpp"
+#include "base/texture_spec.hpp"
 
 namespace fx {
 
@@ -34,9 +34,9 @@ struct ViewSettings {
 
 // What a texture of this format is best looked at with first: float colour as linear light, depth
 // linearised and fitted to its range, everything else as stored.
-ViewSettings defaultViewSettings(const gl::TextureInfo& info);
+ViewSettings defaultViewSettings(const TextureSpec& spec);
 
 // True when the transform and range make depth a distance (the probe says so next to the value).
-bool showsLinearDepth(const ViewSettings& settings, const gl::TextureInfo& info);
+bool showsLinearDepth(const ViewSettings& settings, const TextureSpec& spec);
 
 }  // namespace fx

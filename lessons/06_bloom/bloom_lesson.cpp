@@ -19,6 +19,12 @@ namespace {
 const TextureFormat kChainFormats[] = {TextureFormat::RGBA16F, TextureFormat::R11F_G11F_B10F,
                                        TextureFormat::RGBA32F, TextureFormat::RGBA8};
 
+std::vector<std::string> chainFormatNames() {
+    std::vector<std::string> names;
+    for (TextureFormat format : kChainFormats) names.emplace_back(toString(format));
+    return names;
+}
+
 std::string sizesText(const std::vector<BloomLevel>& levels) {
     std::string text;
     for (const BloomLevel& l : levels)
@@ -95,7 +101,7 @@ void BloomLesson::declareParams(ParamSet& params) {
     params.addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
                     "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)");
     Param& format =
-        params.addChoice("format", &format_, {"RGBA16F", "R11F_G11F_B10F", "RGBA32F", "RGBA8"},
+        params.addChoice("format", &format_, chainFormatNames(),
                          "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
     format.knob = Knob{{0, 1, 2, 3}, 2, "format"};
     params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)");

@@ -40,7 +40,7 @@ TEST_F(GeneratedAssets, TexturesUploadWithTheirSizes) {
     EXPECT_TRUE(textures.failures().empty());
     // The fire sprite's alpha survives the upload: the top-left texel is transparent, the base opaque.
     GLuint fire = textures.file(resourceDir() / "textures/fire_sprite.png");
-    gl::TextureInfo info{256, 256, 9, GL_SRGB8_ALPHA8, "fire"};
+    TextureSpec info{256, 256, TextureFormat::SRGB8_ALPHA8, 9};
     EXPECT_EQ(gl::readTexel(fire, info, 0, 0, 255).value[3], 0.0f);
     EXPECT_GT(gl::readTexel(fire, info, 0, 128, 70).value[3], 0.95f);  // v = 0.27: the round base
 }

@@ -67,11 +67,7 @@ protected:
         EXPECT_TRUE(graph.execute(pool, executor).ok());
         if (auto handle = graph.findTexture("shadow.map")) {
             const TextureView& view = graph.texture(*handle);
-            gl::TextureInfo info;
-            info.width = view.spec.width;
-            info.height = view.spec.height;
-            info.internalFormat = GL_DEPTH_COMPONENT32F;
-            FloatImage depth = gl::readTexture(view.native, info);
+            FloatImage depth = gl::readTexture(view.native, view.spec);
             run.minDepth = *std::min_element(depth.texels.begin(), depth.texels.end());
         }
         if (const PassRecord* pass = graph.report().findPass("shadow map")) run.inherited = pass->stateInherited;

@@ -15,7 +15,6 @@
 #include "gl/texture.hpp"
 #include "image/image.hpp"
 #include "render/frame_graph.hpp"
-#include "render_gl/gl_formats.hpp"
 #include "render_gl/gl_pass_executor.hpp"
 #include "render_gl/gl_texture_allocator.hpp"
 
@@ -55,7 +54,7 @@ public:
           height_(height),
           timer_(TimingMode::Off, ""),
           executor_(timer_, {0, true}),
-          output_(gl::Texture::create2D(GL_RGBA8, width, height, 1, "test.output")),
+          output_(gl::Texture::create2D(TextureFormat::RGBA8, width, height, 1, "test.output")),
           outputFbo_("test.output") {
         outputFbo_.attachColor(0, output_);
         outputFbo_.setDrawBuffers(1);
@@ -66,7 +65,7 @@ public:
     // Returns the texture `declare` names, read back as floats (empty when the graph failed).
     FloatImage run(const FloatImage& input, TextureFormat format, const Declare& declare) {
         gl::Texture texture =
-            gl::Texture::create2D(glInternalFormat(format), width_, height_, 1, "test.input");
+            gl::Texture::create2D(format, width_, height_, 1, "test.input");
         glTextureSubImage2D(texture.name(), 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, input.texels.data());
         storedInput = gl::readTexture(texture);
 
@@ -81,9 +80,7 @@ public:
         if (status) {
             const TextureView& view = graph.texture(result);
             if (view.native != 0 && view.origin != TextureOrigin::PresentedOutput) {
-                gl::TextureInfo info{view.spec.width, view.spec.height, 1, glInternalFormat(view.spec.format),
-                                     view.name};
-                out = gl::readTexture(view.native, info, 0);
+                out = gl::readTexture(view.native, view.spec, 0);
             }
             presented = gl::readFramebufferRgba8(outputFbo_.name(), width_, height_);
         }

@@ -29,7 +29,7 @@ struct Harness {
     TexturePool pool{allocator};
     PassTimer timer;
     GlPassExecutor executor;
-    gl::Texture output = gl::Texture::create2D(GL_RGBA8, 16, 16, 1, "test.output");
+    gl::Texture output = gl::Texture::create2D(TextureFormat::RGBA8, 16, 16, 1, "test.output");
     gl::Framebuffer outputFbo{"test.output"};
 
     explicit Harness(TimingMode mode = TimingMode::Fenced)
@@ -83,8 +83,7 @@ TEST_F(GraphOnGl, InspectingTheUnusedTextureBringsItsPassBack) {
     // The inspected texture is still held after execution, with what B cleared it to.
     const TextureView& b = graph.texture(*graph.findTexture("b"));
     ASSERT_NE(b.native, 0u);
-    gl::TextureInfo info{16, 16, 1, GL_RGBA16F, "b"};
-    FloatImage pixels = gl::readTexture(b.native, info);
+    FloatImage pixels = gl::readTexture(b.native, b.spec);
     EXPECT_EQ(pixels.texel(3, 3, 1), 1.0f);
     EXPECT_EQ(pixels.texel(3, 3, 0), 0.0f);
     graph.releaseTextures();

@@ -121,7 +121,7 @@ class Framebuffers : public GlTest {};
 TEST_F(Framebuffers, IncompleteFramebufferIsReportedByName) {
     gl::Framebuffer fbo("bloom.down[3]");
     // A depth texture on a colour attachment point is an incomplete attachment.
-    auto depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, 4, 4, 1, "depth");
+    auto depth = gl::Texture::create2D(TextureFormat::Depth32F, 4, 4, 1, "depth");
     fbo.attachColor(0, depth);
     fbo.setDrawBuffers(1);
     auto status = fbo.checkComplete();
@@ -138,8 +138,8 @@ TEST_F(Framebuffers, EmptyFramebufferIsMissingAttachment) {
 
 TEST_F(Framebuffers, CompleteFramebufferPasses) {
     gl::Framebuffer fbo("scene");
-    auto color = gl::Texture::create2D(GL_RGBA16F, 3, 2, 1, "scene.color");
-    auto depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, 3, 2, 1, "scene.depth");
+    auto color = gl::Texture::create2D(TextureFormat::RGBA16F, 3, 2, 1, "scene.color");
+    auto depth = gl::Texture::create2D(TextureFormat::Depth32F, 3, 2, 1, "scene.depth");
     fbo.attachColor(0, color);
     fbo.attachDepth(depth);
     fbo.setDrawBuffers(1);

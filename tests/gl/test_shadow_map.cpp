@@ -122,10 +122,10 @@ protected:
         Status status = graph.execute(pool, executor);
         EXPECT_TRUE(status.ok()) << (status.ok() ? "" : status.error());
         const TextureView& view = graph.texture(map.map);
-        result.map = gl::readTexture(view.native, {kMapSize, kMapSize, 1, GL_DEPTH_COMPONENT32F, "shadow.map"});
+        result.map = gl::readTexture(view.native, view.spec);
         if (withColor) {
             const TextureView& c = graph.texture(hdr.color);
-            result.color = gl::readTexture(c.native, {kOutput.width, kOutput.height, 1, GL_RGBA16F, "scene.color"});
+            result.color = gl::readTexture(c.native, c.spec);
         }
         graph.releaseTextures();
         glBindVertexArray(0);
@@ -334,7 +334,7 @@ TEST_F(ShadowMapTest, JointWeightsSummingToZeroOrNotToOneStayFiniteAndRenormalis
         std::vector<glm::mat4> palette{lift, lift};
         joints.upload(palette);
         joints.bind();
-        gl::Texture depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, 16, 16, 1, "test depth");
+        gl::Texture depth = gl::Texture::create2D(TextureFormat::Depth32F, 16, 16, 1, "test depth");
         gl::FramebufferName fbo = gl::createFramebuffer("test shadow fbo");
         glNamedFramebufferTexture(fbo.name(), GL_DEPTH_ATTACHMENT, depth.name(), 0);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
@@ -354,7 +354,7 @@ TEST_F(ShadowMapTest, JointWeightsSummingToZeroOrNotToOneStayFiniteAndRenormalis
         glUseProgram(program);
         mesh.drawSource();
         glFinish();
-        FloatImage read = gl::readTexture(depth.name(), {16, 16, 1, GL_DEPTH_COMPONENT32F, "test depth"});
+        FloatImage read = gl::readTexture(depth);
         glBindFramebuffer(GL_FRAMEBUFFER, context().presentFramebuffer());
         glBindVertexArray(0);
         glUseProgram(0);

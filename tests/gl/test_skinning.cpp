@@ -203,8 +203,8 @@ TEST_F(Skinning, PosedAndInShaderSkinningDrawTheSamePicture) {
 
     const int size = 96;
     auto render = [&](const gl::Program& program, SkinnedDraw mode) {
-        gl::Texture color = gl::Texture::create2D(GL_RGBA8, size, size, 1, "skinning.color");
-        gl::Texture depth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size, size, 1, "skinning.depth");
+        gl::Texture color = gl::Texture::create2D(TextureFormat::RGBA8, size, size, 1, "skinning.color");
+        gl::Texture depth = gl::Texture::create2D(TextureFormat::Depth32F, size, size, 1, "skinning.depth");
         gl::Framebuffer fbo("skinning.fbo");
         fbo.attachColor(0, color);
         fbo.attachDepth(depth);

@@ -28,7 +28,7 @@ struct UiHarness {
     FrameReport lastReport;
 
     UiHarness(int w, int h) : width(w), height(h) {
-        screen = gl::Texture::create2D(GL_RGBA8, w, h, 1, "test.screen");
+        screen = gl::Texture::create2D(TextureFormat::RGBA8, w, h, 1, "test.screen");
         screenFbo.attachColor(0, screen);
         screenFbo.setDrawBuffers(1);
         executor.setPresentFramebuffer(screenFbo.name());

@@ -236,7 +236,7 @@ TEST_F(UiOverlay, DocumentationPictureOfTheMipStrip) {
     inspector.select("scene.hdr");
     for (int i = 0; i < 6; ++i) h.frame(build, m);  // thumbnails are refreshed two textures a frame
     // The probe on the sun's rim, zoomed in around it on mip 3.
-    ViewSettings& s = inspector.settingsFor("scene.hdr", {1600, 900, 11, GL_RGBA16F, "scene.hdr"});
+    ViewSettings& s = inspector.settingsFor("scene.hdr", {1600, 900, TextureFormat::RGBA16F, 11});
     s.level = 3;
     s.transform = DisplayTransform::Reinhard;
     inspector.view().setZoom(2.0, 0.78, 0.72);

@@ -21,7 +21,7 @@ bool sameBits(float a, float b) {
 class UiProbe : public GlTest {};
 
 TEST_F(UiProbe, ReturnsTheExactFloatWrittenAtATexel) {
-    auto t = gl::Texture::create2D(GL_RGBA32F, 7, 5, 3, "test.probe");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA32F, 7, 5, 3, "test.probe");
     std::vector<float> zeros(7 * 5 * 4, 0.25f);
     glTextureSubImage2D(t.name(), 0, 0, 0, 7, 5, GL_RGBA, GL_FLOAT, zeros.data());
     const float inf = std::numeric_limits<float>::infinity();
@@ -39,7 +39,7 @@ TEST_F(UiProbe, ReturnsTheExactFloatWrittenAtATexel) {
 }
 
 TEST_F(UiProbe, ReadsNanAndOtherLevels) {
-    auto t = gl::Texture::create2D(GL_RGBA16F, 9, 9, 4, "test.probe levels");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA16F, 9, 9, 4, "test.probe levels");
     const float level2[4] = {std::nanf(""), 2.5f, -0.5f, 1.0f};
     glTextureSubImage2D(t.name(), 2, 1, 0, 1, 1, GL_RGBA, GL_FLOAT, level2);
     ProbeSample s = probeTexel(textureSource(t), 2, 1, 0);
@@ -51,7 +51,7 @@ TEST_F(UiProbe, ReadsNanAndOtherLevels) {
 }
 
 TEST_F(UiProbe, ReadsDepthAsStored) {
-    auto t = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, 4, 4, 1, "test.probe depth");
+    auto t = gl::Texture::create2D(TextureFormat::Depth32F, 4, 4, 1, "test.probe depth");
     std::vector<float> depth(16, 1.0f);
     depth[2 * 4 + 3] = 0.987654321f;
     glTextureSubImage2D(t.name(), 0, 0, 0, 4, 4, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
@@ -61,7 +61,7 @@ TEST_F(UiProbe, ReadsDepthAsStored) {
 }
 
 TEST_F(UiProbe, OutsideTheLevelReadsNothing) {
-    auto t = gl::Texture::create2D(GL_RGBA8, 4, 4, 1, "test.probe outside");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA8, 4, 4, 1, "test.probe outside");
     EXPECT_EQ(probeTexel(textureSource(t), 0, 4, 0).channels, 0);
     EXPECT_EQ(probeTexel(textureSource(t), 0, -1, 0).channels, 0);
     EXPECT_EQ(probeTexel(textureSource(t), 1, 0, 0).channels, 0);
@@ -69,10 +69,10 @@ TEST_F(UiProbe, OutsideTheLevelReadsNothing) {
 }
 
 TEST_F(UiProbe, FindsTheSameTexelInEveryLevelOfAChain) {
-    auto t = gl::Texture::create2D(GL_R32F, 1279, 719, 11, "test.probe chain");
+    auto t = gl::Texture::create2D(TextureFormat::R32F, 1279, 719, 11, "test.probe chain");
     // Each level holds its own number, so the value read says which level it came from.
     for (int level = 0; level < 11; ++level) {
-        int w = gl::mipSize(1279, level), h = gl::mipSize(719, level);
+        int w = mipLevelSize(1279, level), h = mipLevelSize(719, level);
         std::vector<float> fill(std::size_t(w) * h, float(level) + 0.5f);
         glTextureSubImage2D(t.name(), level, 0, 0, w, h, GL_RED, GL_FLOAT, fill.data());
     }
@@ -99,5 +99,5 @@ TEST(UiProbeText, ShortestExactFloats) {
     EXPECT_EQ(exactFloatText(1.0f / 3.0f), "0.33333334");
     EXPECT_EQ(exactFloatText(-std::numeric_limits<float>::infinity()), "-inf");
     EXPECT_EQ(exactFloatText(std::nanf("")), "nan");
-    EXPECT_EQ(storedValueText(128.0f / 255.0f, GL_RGBA8), "0.5019608 (128/255)");
+    EXPECT_EQ(storedValueText(128.0f / 255.0f, TextureFormat::RGBA8), "0.5019608 (128/255)");
 }

@@ -40,7 +40,7 @@ struct TempFolder {
 };
 
 gl::Texture awkwardTexture() {
-    auto t = gl::Texture::create2D(GL_RGBA32F, 5, 3, 2, "test.save");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA32F, 5, 3, 2, "test.save");
     const float inf = std::numeric_limits<float>::infinity();
     std::vector<float> v(5 * 3 * 4);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = float(i) * 0.37f - 3.0f;  // negative to above 1
@@ -98,14 +98,14 @@ TEST_F(UiSave, PfmOfAnotherLevelHasThatLevelsSize) {
 }
 
 TEST_F(UiSave, PngIsTheViewAtOnePixelPerTexelAndMatchesTheCaptures) {
-    auto t = gl::Texture::create2D(GL_RGBA16F, 6, 4, 1, "test.save png");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA16F, 6, 4, 1, "test.save png");
     std::vector<float> v(6 * 4 * 4);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = (i % 4 == 3) ? 1.0f : float(i % 11) * 0.13f - 0.2f;
     v[4] = std::nanf("");
     glTextureSubImage2D(t.name(), 0, 0, 0, 6, 4, GL_RGBA, GL_FLOAT, v.data());
     TextureDisplay display;
     ASSERT_TRUE(display.ok()) << display.error();
-    ViewSettings s = defaultViewSettings(t.info());  // float colour: linear -> sRGB, range [0, 1]
+    ViewSettings s = defaultViewSettings(t.spec());  // float colour: linear -> sRGB, range [0, 1]
     TempFolder folder("png");
     fs::path path = folder.path / "view.png";
     ASSERT_TRUE(saveViewPng(display, textureSource(t), s, path).ok());

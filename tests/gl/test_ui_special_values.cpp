@@ -28,7 +28,7 @@ const std::vector<Planted> kPlanted = {
 };
 
 gl::Texture plantedTexture() {
-    auto t = gl::Texture::create2D(GL_RGBA32F, 12, 12, 1, "test.special values");
+    auto t = gl::Texture::create2D(TextureFormat::RGBA32F, 12, 12, 1, "test.special values");
     std::vector<float> fill(12 * 12 * 4, 0.25f);
     for (std::size_t i = 3; i < fill.size(); i += 4) fill[i] = 1.0f;
     glTextureSubImage2D(t.name(), 0, 0, 0, 12, 12, GL_RGBA, GL_FLOAT, fill.data());
@@ -44,7 +44,7 @@ class UiSpecialValues : public GlTest {};
 TEST_F(UiSpecialValues, CountsMatchThePlantedTexels) {
     auto t = plantedTexture();
     TextureAnalyser analyser;
-    ViewSettings settings = defaultViewSettings(t.info());
+    ViewSettings settings = defaultViewSettings(t.spec());
     ASSERT_TRUE(analyser.update(textureSource(t), settings, 0.0));
     const TextureAnalysis& a = analyser.analysis();
     EXPECT_EQ(a.nanTexels, 3);
@@ -65,7 +65,7 @@ TEST_F(UiSpecialValues, TheViewMarksEachKindInItsColour) {
     ASSERT_TRUE(display.ok()) << display.error();
     DisplaySurface surface("test.special surface");
     surface.resize(12, 12);
-    ViewSettings s = defaultViewSettings(t.info());
+    ViewSettings s = defaultViewSettings(t.spec());
     s.highlightSpecial = true;
     display.draw(surface, textureSource(t), s, ViewWindow{});
     ByteImage shown = gl::readFramebufferRgba8(surface.framebuffer(), 12, 12);
@@ -92,10 +92,10 @@ TEST_F(UiSpecialValues, DepthIsLinearisedWithTheCameraPlanes) {
     EXPECT_FLOAT_EQ(linearizeDepth(1.0f, n, f), f);
     EXPECT_FLOAT_EQ(linearizeDepth(0.0f, n, f), n);
 
-    auto t = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, 2, 1, 1, "test.depth linear");
+    auto t = gl::Texture::create2D(TextureFormat::Depth32F, 2, 1, 1, "test.depth linear");
     float depth[2] = {stored(1.0f), stored(50.0f)};
     glTextureSubImage2D(t.name(), 0, 0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
-    ViewSettings s = defaultViewSettings(t.info());
+    ViewSettings s = defaultViewSettings(t.spec());
     s.cameraNear = n;
     s.cameraFar = f;
     TextureAnalyser analyser;

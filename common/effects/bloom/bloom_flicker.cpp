@@ -26,7 +26,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
         std::array<gl::Texture, 2> fresh;
         for (int i = 0; i < 2; ++i) {
             gl::Texture& t = fresh[std::size_t(i)];
-            t = gl::Texture::create2D(GL_RGBA32F, size.width, size.height, mips,
+            t = gl::Texture::create2D(TextureFormat::RGBA32F, size.width, size.height, mips,
                                       i == 0 ? "bloom.history (a)" : "bloom.history (b)");
             // texelFetch of level 0 only: NEAREST keeps the texture complete before its mips exist.
             glTextureParameteri(t.name(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);

@@ -13,7 +13,7 @@
 //                           then the ratio; the same 4 taps down; upsample with 4 axial taps at
 //                           2 x 0.5 texel (x1) and 4 diagonal at 0.5 texel (x2), / 12; composite:
 //                           scene + bloomScale Up(level 0), with bloomScale a shader uniform.
-#include "render/texture_format.hpp"
+#include "base/texture_format.hpp"
 
 namespace fx {
 

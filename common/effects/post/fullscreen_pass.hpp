@@ -4,8 +4,10 @@
 // that reads the pass's input textures. The triangle is wound counter-clockwise and the state below
 // turns culling off anyway, so a leaked glCullFace cannot make it vanish (Shader effects, hard case 15).
 //
-//   FullscreenPass copy("effects/post/colour_matrix.frag", "colour matrix");
-//   graph.addPass("colour matrix", [&](PassContext& ctx) { copy.draw({ctx.native(input)}); })
+//   // A member (copy_), built in init; the body runs after buildFrame returns, so it copies what
+//   // it uses: the pointer to the pass and the handle, never a reference to a local.
+//   const FullscreenPass* copy = &copy_;
+//   graph.addPass("colour matrix", [copy, input](PassContext& ctx) { copy->draw({ctx.native(input)}); })
 //       .read(input).writeColor(output).setState(FullscreenPass::state());
 #include <initializer_list>
 #include <string>

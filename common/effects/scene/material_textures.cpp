@@ -12,9 +12,8 @@ namespace fx {
 
 GLuint MaterialTextures::upload(const std::string& key, const std::string& label, int width, int height,
                                 const unsigned char* rgba) {
-    int levels = 1;
-    while ((std::max(width, height) >> levels) > 0) ++levels;
-    gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height, levels, label);
+    gl::Texture texture = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, width, height,
+                                                fullMipChainLength(width, height), label);
     glTextureSubImage2D(texture.name(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     glGenerateTextureMipmap(texture.name());
     glTextureParameteri(texture.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -26,7 +25,7 @@ GLuint MaterialTextures::upload(const std::string& key, const std::string& label
 
 GLuint MaterialTextures::white() {
     if (!white_) {
-        white_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, 1, 1, 1, "material.white");
+        white_ = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, 1, 1, 1, "material.white");
         const unsigned char texel[4] = {255, 255, 255, 255};
         glTextureSubImage2D(white_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
     }
@@ -61,11 +60,7 @@ GLuint MaterialTextures::encoded(const std::string& key, const std::vector<unsig
 
 std::uint64_t MaterialTextures::bytes() const {
     std::uint64_t total = 0;
-    for (const auto& [key, texture] : textures_) {
-        for (int level = 0; level < texture.info().levels; ++level)
-            total += std::uint64_t(gl::mipSize(texture.width(), level)) *
-                     std::uint64_t(gl::mipSize(texture.height(), level)) * 4u;
-    }
+    for (const auto& [key, texture] : textures_) total += textureBytes(texture.spec());
     return total;
 }
 

@@ -229,3 +229,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
                       BadFlag{{"--frames"}, "--frames: needs a value"},
                       BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
+
+
+TEST(RunOptions, GraphTakesTheDotFileToWrite) {
+    auto o = parseRunOptions({"--graph", "out/frame.dot"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->graphFile, "out/frame.dot");
+    auto missing = parseRunOptions({"--graph", ""});
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().find("--graph: needs a path"), std::string::npos) << missing.error();
+}

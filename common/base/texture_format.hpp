@@ -1,7 +1,8 @@
 #pragma once
-// The texture formats lessons render to, as plain data: what the frame graph needs to validate a
-// pass (can it be a colour attachment? a depth attachment?) and to count memory. The GL layer maps
-// each one to its internal format enum; nothing here knows GL.
+// The texture formats fxlab uses, and every fact about them, written once: the name printed
+// everywhere (reports, the inspector, errors), what the frame graph needs to validate a pass (can it
+// be a colour attachment? a depth attachment?), what memory it costs, and how the inspector shows it.
+// gl/gl_formats.hpp maps each one to GL's internal format enum; nothing here knows GL.
 #include <cstdint>
 #include <string_view>
 
@@ -32,6 +33,7 @@ struct TextureFormatInfo {
     bool depth;             // can be a depth attachment
     bool stencil;
     bool floatingPoint;    // stores floats (half, full or packed), not normalised integers
+    bool srgb;             // stores sRGB-encoded colour; sampling decodes it to linear light
     bool colorRenderable;  // can be a colour attachment
     bool storage;          // can be bound as an image for load/store (compute)
 };
@@ -55,6 +57,14 @@ inline bool hasStencil(TextureFormat format) {
 }
 inline bool isFloat(TextureFormat format) {
     return formatInfo(format).floatingPoint;
+}
+inline bool isSrgb(TextureFormat format) {
+    return formatInfo(format).srgb;
+}
+// 8-bit unsigned normalised colour channels: a stored value is a whole number of 255ths.
+inline bool isUnorm8(TextureFormat format) {
+    const TextureFormatInfo& info = formatInfo(format);
+    return !info.depth && !info.floatingPoint && info.bytesPerTexel == info.channels;
 }
 inline bool isColorRenderable(TextureFormat format) {
     return formatInfo(format).colorRenderable;

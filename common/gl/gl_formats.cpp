@@ -1,4 +1,4 @@
-#include "render_gl/gl_formats.hpp"
+#include "gl/gl_formats.hpp"
 
 namespace fx {
 
@@ -19,6 +19,20 @@ GLenum glInternalFormat(TextureFormat format) {
         case TextureFormat::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
     }
     return GL_RGBA8;
+}
+
+int readbackChannelCount(TextureFormat format) {
+    return isDepth(format) ? 1 : channelCount(format);
+}
+
+GLenum readbackPixelFormat(TextureFormat format) {
+    if (isDepth(format)) return GL_DEPTH_COMPONENT;
+    switch (channelCount(format)) {
+        case 1: return GL_RED;
+        case 2: return GL_RG;
+        case 3: return GL_RGB;
+        default: return GL_RGBA;
+    }
 }
 
 }  // namespace fx

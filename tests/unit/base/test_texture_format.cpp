@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "render/texture_format.hpp"
+#include "base/texture_format.hpp"
 
 namespace fx {
 namespace {
@@ -44,6 +44,28 @@ TEST(TextureFormat, RenderabilityDecidesWhatAPassMayWrite) {
     EXPECT_TRUE(isFloat(TextureFormat::R11F_G11F_B10F));
     EXPECT_FALSE(isStorageCompatible(TextureFormat::SRGB8_ALPHA8));
     EXPECT_TRUE(isStorageCompatible(TextureFormat::RGBA16F));
+}
+
+TEST(TextureFormat, HowTheInspectorShowsAFormat) {
+    EXPECT_TRUE(isSrgb(TextureFormat::SRGB8_ALPHA8));
+    EXPECT_FALSE(isSrgb(TextureFormat::RGBA8));
+    // Whole 255ths: 8-bit normalised colour, sRGB included (it stores them; sampling decodes).
+    EXPECT_TRUE(isUnorm8(TextureFormat::RGBA8));
+    EXPECT_TRUE(isUnorm8(TextureFormat::R8));
+    EXPECT_TRUE(isUnorm8(TextureFormat::SRGB8_ALPHA8));
+    EXPECT_FALSE(isUnorm8(TextureFormat::RGBA16F));
+    EXPECT_FALSE(isUnorm8(TextureFormat::Depth24));
+    EXPECT_FALSE(isUnorm8(TextureFormat::R11F_G11F_B10F));
+}
+
+TEST(TextureFormat, OneSpellingPerFormatAndNoNameTwice) {
+    for (int i = 0; i < kTextureFormatCount; ++i) {
+        for (int j = i + 1; j < kTextureFormatCount; ++j) {
+            EXPECT_NE(toString(static_cast<TextureFormat>(i)), toString(static_cast<TextureFormat>(j)));
+        }
+    }
+    EXPECT_EQ(toString(TextureFormat::Depth32F), "Depth32F");
+    EXPECT_EQ(toString(TextureFormat::Depth24), "Depth24");
 }
 
 TEST(TextureFormat, EveryFormatIsEitherColourOrDepthRenderableExceptRGB32F) {
