@@ -23,7 +23,7 @@ struct LessonInfo {
     int number = 0;
     std::string slug;          // "program-objects": the executable is fxlab-01-program-objects
     std::string title;         // "Program objects"
-    std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"
+    std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"; "": an empty scene
 };
 
 struct LessonStep {

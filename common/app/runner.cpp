@@ -108,6 +108,12 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
             return 2;
         }
     }
+    if (s.options.scene.empty() && lesson.info().defaultScene.empty()) {
+        // A lesson that names no scene runs with an empty one: the default camera and background,
+        // no objects or lights, and every pass that needs a scene feature not called for.
+        log::info(exe, ": this lesson names no scene (LessonInfo::defaultScene); running with an empty one");
+        return run(s);
+    }
     fs::path sceneFile = s.options.scene.empty() ? resourceDir() / lesson.info().defaultScene : s.options.scene;
     auto scene = loadScene(sceneFile);
     if (!scene) {
