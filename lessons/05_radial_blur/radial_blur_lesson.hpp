@@ -40,8 +40,10 @@ private:
     fx::RadialBlur blur_;
     fx::OutputTransformPass present_;
     fx::PassGroup blurGroup_ = fx::groupNeeding(fx::SceneFeature::radialBlur);
-    bool calledFor_ = true;  // the scene asks for a radial blur (as the last frame's graph said)
     fx::PointDrag centreDrag_;
+
+    // Whether both blur passes ran in the frame before `frame` (the scene asks for the blur).
+    bool blurRan(const fx::FrameInfo& frame) const;
 };
 
 }  // namespace lesson05
