@@ -109,7 +109,8 @@ TEST(PassNeeds, AMetRequirementChangesNothing) {
 TEST(PassNeeds, TheScenesReasonWinsOverTheStepsSwitch) {
     FrameGraph graph({.size = {64, 64}});
     graph.setUnmet("bloom", "scene has no bloom");
-    Pass& pass = graph.addPass("bloom").writeColor(graph.output()).needs("bloom").disable("disabled in step 1");
+    Pass& pass =
+        graph.addPass("bloom").writeColor(graph.output()).needs("bloom").disable("disabled in step 1");
     EXPECT_EQ(pass.switchState(), PassSwitch::NotCalledFor);
     EXPECT_EQ(pass.switchReason(), "scene has no bloom");
 }
