@@ -9,6 +9,7 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "gl/program.hpp"
 #include "image/image_compare.hpp"
 #include "image/plot.hpp"
 #include "image/png_file.hpp"
@@ -138,9 +139,10 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     frame.benchmark = true;
     std::string savedParams = params.toJson();
 
-    CopyFrame copy;
-    if (copy.init({})) result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
-    copy.shutdown();
+    {
+        CopyFrame copy;  // its GL objects go at the end of this block
+        if (copy.init({})) result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
+    }
 
     result.effectTexture = lesson.benchTexture();
     std::vector<std::string> effect;

@@ -18,6 +18,7 @@ RenderedFrame FrameRenderer::render(Lesson& lesson, const FrameInfo& frame, cons
     RenderedFrame out;
     executor_.setPresentFramebuffer(context_.presentFramebuffer());
     FrameGraph graph(OutputTarget{frame.size, "output", TextureFormat::RGBA8, 0});
+    if (work_) work_->describeTo(graph);
     lesson.buildFrame(graph, frame);
     for (auto& name : request.inspect) graph.inspect(name);
     if (request.readTextures) {

@@ -9,6 +9,7 @@
 #include "app/capture.hpp"
 #include "app/lesson.hpp"
 #include "base/timing_mode.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "platform/context.hpp"
 #include "render_gl/gl_pass_executor.hpp"
 #include "render_gl/gl_texture_allocator.hpp"
@@ -38,6 +39,10 @@ public:
     RenderedFrame render(Lesson& lesson, const FrameInfo& frame, const FrameRequest& request,
                          const WhileHeld& whileHeld = {});
 
+    // The scene's features: what it lacks is told to every frame's graph before the lesson declares,
+    // so passes that need it are not called for, with the scene's reason (Pass::needs).
+    void setSceneWork(const SceneWork* work) { work_ = work; }
+
     PassTimer& timer() { return timer_; }
     TexturePool& pool() { return pool_; }
 
@@ -48,6 +53,7 @@ private:
     PassTimer timer_;
     GlPassExecutor executor_;
     std::uint64_t destroyedSeen_ = 0;
+    const SceneWork* work_ = nullptr;
 };
 
 }  // namespace fx

@@ -2,13 +2,18 @@
 // What a lesson is: who it is, its steps (following the chapter), its parameters, and how it builds
 // the frame graph for the current step. Everything else (context, loop, overlay, capture, report)
 // is the runner's; a lesson's main() is one line: return fx::runLesson<MyLesson>(argc, argv);
+//
+// The runner owns the lesson's GL lifetime: the lesson object is destroyed while the context is
+// still current, on every way out of the run, so GL objects held in members (RAII) need no
+// shutdown code. Every gl::ReloadableProgram the lesson or its effects build joins the run's
+// gl::ProgramRegistry, which the runner reloads, checks after init and shows errors from.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "base/params.hpp"
 #include "base/result.hpp"
-#include "gl/program.hpp"
+#include "app/lesson_facts.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene.hpp"
 
@@ -18,7 +23,7 @@ struct LessonInfo {
     int number = 0;
     std::string slug;          // "program-objects": the executable is fxlab-01-program-objects
     std::string title;         // "Program objects"
-    std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"
+    std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"; "": an empty scene
 };
 
 struct LessonStep {
@@ -43,7 +48,8 @@ struct FrameInfo {
     int step = 0;  // 0-based
     std::uint32_t seed = 1;
     bool headless = false;
-    const FrameReport* previousFrame = nullptr;  // the last frame's passes and times, if any
+    // The last frame's passes and times, if any (in Lesson::facts after the run: the last frame's).
+    const FrameReport* previousFrame = nullptr;
     bool benchmark = false;  // a bench frame: leave out side-by-side views that only help people
     Pointer pointer;
 };
@@ -57,20 +63,24 @@ public:
     // Called once before the context exists, so --param and --list-params work without GL.
     virtual void declareParams(ParamSet& params) { (void)params; }
 
-    // The GL context is current and the scene loaded; create programs, meshes, buffers.
+    // The GL context is current and the scene loaded; create programs, meshes, buffers. A program
+    // that does not build fails the run after init, with its error; no need to check here.
     virtual Status init(const Scene& scene) = 0;
-    // Everything the lesson owns in GL goes here, before the context does.
-    virtual void shutdown() {}
 
     // Simulation for the frame (only what the scene has).
     virtual void update(const FrameInfo& frame) { (void)frame; }
     // Declares this frame's passes for the current step. Their bodies run after this returns, so
     // they capture handles and values by copy, never a local by reference (docs/frame-graph.md).
+    // A pass that exists for a scene feature
+    // says so (needs(pass, SceneFeature::bloom), effects/scene/scene_work.hpp): the graph then marks
+    // it not called for, with the scene's reason, when the scene lacks the feature.
     virtual void buildFrame(FrameGraph& graph, const FrameInfo& frame) = 0;
 
-    // Programs the runner reloads on F5 or when their files change, and whose errors it shows.
-    virtual std::vector<gl::ReloadableProgram*> programs() { return {}; }
-    // The lesson's own panel in the overlay (ImGui calls), under its steps and parameters.
+    // What the lesson computes or measures about `frame`, once: the overlay shows the list under
+    // the lesson's panel every frame, and the report writes it for the last frame of the run.
+    virtual void facts(Facts& out, const FrameInfo& frame) const { (void)out, (void)frame; }
+    // The lesson's own panel in the overlay (ImGui calls), under its steps, parameters and facts:
+    // explanations and widgets, not numbers (those are facts).
     virtual void drawPanel(const FrameInfo& frame) { (void)frame; }
     // The step (0-based) whose frame the bench measures, where the quality knobs matter; -1: the
     // step the run starts at.
@@ -85,8 +95,6 @@ public:
     // row per knob. Empty (the default): the reference is the knobs' reference setting.
     virtual std::string benchReferenceName() const { return {}; }
     virtual void setBenchReference(bool on) { (void)on; }
-    // Extra facts for the report ("uniform look-ups per frame": 1200).
-    virtual void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const { (void)facts; }
 };
 
 }  // namespace fx

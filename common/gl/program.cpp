@@ -113,47 +113,145 @@ GLint Program::uniformLocation(const std::string& uniform) const {
     return it != uniforms_.end() ? it->second : -1;
 }
 
-ReloadableProgram::ReloadableProgram(ProgramSources sources) : sources_(std::move(sources)) { (void)reload(); }
+struct ReloadableProgram::State {
+    ProgramSources sources;
+    Program program;
+    std::string error;
+    std::vector<fs::path> watched;
+    std::vector<fs::file_time_type> stamps;
+    int generation = 0;
 
-void ReloadableProgram::rememberStamps(const std::vector<fs::path>& files) {
-    watched_ = files;
-    stamps_.clear();
-    for (auto& f : watched_) {
-        std::error_code ec;
-        stamps_.push_back(fs::last_write_time(f, ec));
+    void rememberStamps(const std::vector<fs::path>& files) {
+        watched = files;
+        stamps.clear();
+        for (auto& f : watched) {
+            std::error_code ec;
+            stamps.push_back(fs::last_write_time(f, ec));
+        }
     }
+
+    Status reload() {
+        auto built = Program::build(sources);
+        if (!built) {
+            error = built.error();
+            log::error(error, program ? "(keeping the last good program)" : "");
+            // Watch the top-level files so that a fix is picked up; includes are watched once they built.
+            std::vector<fs::path> files = watched;
+            for (auto* p : {&sources.vertex, &sources.fragment, &sources.compute}) {
+                if (!p->empty()) files.push_back(resolveShaderPath(*p));
+            }
+            rememberStamps(files);
+            return Error{error};
+        }
+        program = std::move(*built);
+        error.clear();
+        ++generation;
+        rememberStamps(program.sourceFiles());
+        return Status::success();
+    }
+
+    bool reloadIfChanged() {
+        for (std::size_t i = 0; i < watched.size(); ++i) {
+            std::error_code ec;
+            auto stamp = fs::last_write_time(watched[i], ec);
+            if (ec || stamp != stamps[i]) {
+                (void)reload();
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+namespace {
+
+thread_local ProgramRegistry* openRegistry = nullptr;
+
+const ReloadableProgram::State& emptyState() {
+    static const ReloadableProgram::State empty;
+    return empty;
+}
+
+}  // namespace
+
+ReloadableProgram::ReloadableProgram(ProgramSources sources) : state_(std::make_shared<State>()) {
+    state_->sources = std::move(sources);
+    (void)state_->reload();
+    if (openRegistry) openRegistry->programs_.push_back(state_);
 }
 
 Status ReloadableProgram::reload() {
-    auto built = Program::build(sources_);
-    if (!built) {
-        error_ = built.error();
-        log::error(error_, usable() ? "(keeping the last good program)" : "");
-        // Watch the top-level files so that a fix is picked up; includes are watched once they built.
-        std::vector<fs::path> files = watched_;
-        for (auto* p : {&sources_.vertex, &sources_.fragment, &sources_.compute}) {
-            if (!p->empty()) files.push_back(resolveShaderPath(*p));
-        }
-        rememberStamps(files);
-        return Error{error_};
-    }
-    program_ = std::move(*built);
-    error_.clear();
-    ++generation_;
-    rememberStamps(program_.sourceFiles());
-    return Status::success();
+    if (!state_) return Error{"reload: this program was never given its sources"};
+    return state_->reload();
 }
 
 bool ReloadableProgram::reloadIfChanged() {
-    for (std::size_t i = 0; i < watched_.size(); ++i) {
-        std::error_code ec;
-        auto stamp = fs::last_write_time(watched_[i], ec);
-        if (ec || stamp != stamps_[i]) {
-            (void)reload();
-            return true;
-        }
+    return state_ && state_->reloadIfChanged();
+}
+
+const Program& ReloadableProgram::program() const {
+    return (state_ ? *state_ : emptyState()).program;
+}
+
+const std::string& ReloadableProgram::error() const {
+    return (state_ ? *state_ : emptyState()).error;
+}
+
+const ProgramSources& ReloadableProgram::sources() const {
+    return (state_ ? *state_ : emptyState()).sources;
+}
+
+int ReloadableProgram::generation() const {
+    return state_ ? state_->generation : 0;
+}
+
+ProgramRegistry::ProgramRegistry() : outer_(openRegistry) {
+    openRegistry = this;
+}
+
+ProgramRegistry::~ProgramRegistry() {
+    openRegistry = outer_;
+}
+
+ProgramRegistry* ProgramRegistry::open() {
+    return openRegistry;
+}
+
+std::vector<std::shared_ptr<ReloadableProgram::State>> ProgramRegistry::live() const {
+    std::vector<std::shared_ptr<ReloadableProgram::State>> out;
+    for (const auto& weak : programs_) {
+        if (auto p = weak.lock()) out.push_back(std::move(p));
     }
-    return false;
+    return out;
+}
+
+void ProgramRegistry::reloadAll() {
+    std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
+    for (auto& p : live()) (void)p->reload();
+}
+
+void ProgramRegistry::reloadChanged() {
+    std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
+    for (auto& p : live()) p->reloadIfChanged();
+}
+
+std::vector<std::string> ProgramRegistry::errors() const {
+    std::vector<std::string> out;
+    for (auto& p : live()) {
+        if (!p->error.empty()) out.push_back(p->error);
+    }
+    return out;
+}
+
+std::optional<std::string> ProgramRegistry::firstUnusable() const {
+    for (auto& p : live()) {
+        if (!p->program) return p->error.empty() ? "a program did not build" : p->error;
+    }
+    return std::nullopt;
+}
+
+std::size_t ProgramRegistry::size() const {
+    return live().size();
 }
 
 }  // namespace fx::gl

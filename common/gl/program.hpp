@@ -3,6 +3,8 @@
 // file name and line, a program knows its active uniforms (looked up once, not per draw), and a
 // ReloadableProgram keeps the last good program when an edited source fails.
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -52,7 +54,12 @@ private:
 class ReloadableProgram {
 public:
     ReloadableProgram() = default;
+    // Builds at once, and joins the ProgramRegistry open on this thread, if any.
     explicit ReloadableProgram(ProgramSources sources);
+    ReloadableProgram(ReloadableProgram&&) noexcept = default;
+    ReloadableProgram& operator=(ReloadableProgram&&) noexcept = default;
+    ReloadableProgram(const ReloadableProgram&) = delete;
+    ReloadableProgram& operator=(const ReloadableProgram&) = delete;
 
     // Builds from the current files. On failure the last good program stays in use and error()
     // says why.
@@ -60,23 +67,51 @@ public:
     // Reloads when a source file (or an include) changed on disk since the last attempt.
     bool reloadIfChanged();
 
-    const Program& program() const { return program_; }
-    GLuint name() const { return program_.name(); }
-    bool usable() const { return static_cast<bool>(program_); }
-    const std::string& error() const { return error_; }
-    const ProgramSources& sources() const { return sources_; }
+    const Program& program() const;
+    GLuint name() const { return program().name(); }
+    bool usable() const { return static_cast<bool>(program()); }
+    const std::string& error() const;
+    const ProgramSources& sources() const;
     // Builds so far that succeeded, for the overlay.
-    int generation() const { return generation_; }
+    int generation() const;
+
+    // The program itself, shared with the registry it joined, so that moving a ReloadableProgram
+    // (effects are made by value and moved into place) leaves the registry's entry valid.
+    struct State;
 
 private:
-    ProgramSources sources_;
-    Program program_;
-    std::string error_;
-    std::vector<std::filesystem::path> watched_;
-    std::vector<std::filesystem::file_time_type> stamps_;
-    int generation_ = 0;
+    friend class ProgramRegistry;
+    std::shared_ptr<State> state_;
+};
 
-    void rememberStamps(const std::vector<std::filesystem::path>& files);
+// The programs made while it is open, wherever they were made (a lesson, the effects it uses): the
+// runner opens one for a lesson, reloads every program in it on F5 or when a file changes, and shows
+// their errors, so no lesson keeps a list. Programs join when built and leave when destroyed.
+class ProgramRegistry {
+public:
+    // Opens this registry on the calling thread until it is destroyed (the one open before is open
+    // again then).
+    ProgramRegistry();
+    ~ProgramRegistry();
+    ProgramRegistry(const ProgramRegistry&) = delete;
+    ProgramRegistry& operator=(const ProgramRegistry&) = delete;
+
+    void reloadAll();
+    void reloadChanged();
+    // The errors of the programs whose last build failed, in the order they were made.
+    std::vector<std::string> errors() const;
+    // The error of the first program that never built (no last good program to draw with), if any.
+    std::optional<std::string> firstUnusable() const;
+    // Programs alive now.
+    std::size_t size() const;
+
+    static ProgramRegistry* open();
+
+private:
+    friend class ReloadableProgram;
+    std::vector<std::shared_ptr<ReloadableProgram::State>> live() const;
+    std::vector<std::weak_ptr<ReloadableProgram::State>> programs_;
+    ProgramRegistry* outer_ = nullptr;
 };
 
 }  // namespace fx::gl

@@ -27,6 +27,8 @@ TextureHandle FrameGraph::declareTexture(std::string name, const TextureDesc& de
     texture.desc = desc;
     texture.view.spec = resolve(desc, outputSize_);
     textures_.push_back(std::move(texture));
+    textureGroups_.resize(textures_.size(), 0);
+    textureGroups_.back() = openGroup_ ? openGroup_->id() : 0;
     compiled_ = false;
     return TextureHandle{static_cast<std::uint32_t>(textures_.size() - 1)};
 }
@@ -35,6 +37,8 @@ TextureHandle FrameGraph::importTexture(std::string name, const TextureSpec& spe
     GraphTexture texture;
     texture.view = {std::move(name), spec, native, TextureOrigin::Imported};
     textures_.push_back(std::move(texture));
+    textureGroups_.resize(textures_.size(), 0);
+    textureGroups_.back() = openGroup_ ? openGroup_->id() : 0;
     compiled_ = false;
     return TextureHandle{static_cast<std::uint32_t>(textures_.size() - 1)};
 }
@@ -42,8 +46,32 @@ TextureHandle FrameGraph::importTexture(std::string name, const TextureSpec& spe
 Pass& FrameGraph::addPass(std::string name, Pass::Body body) {
     auto index = static_cast<std::uint32_t>(passes_.size());
     passes_.push_back(std::unique_ptr<Pass>(new Pass(*this, index, std::move(name), std::move(body))));
+    if (openGroup_) passes_.back()->joinGroup(*openGroup_);
     compiled_ = false;
     return *passes_.back();
+}
+
+void FrameGraph::setUnmet(std::string requirement, std::string reason) {
+    for (auto& [name, why] : unmet_) {
+        if (name == requirement) {
+            why = std::move(reason);
+            return;
+        }
+    }
+    unmet_.emplace_back(std::move(requirement), std::move(reason));
+}
+
+const std::string* FrameGraph::unmetReason(std::string_view requirement) const {
+    for (const auto& [name, why] : unmet_) {
+        if (name == requirement) return &why;
+    }
+    return nullptr;
+}
+
+const PassGroup* FrameGraph::openGroup(const PassGroup* group) {
+    const PassGroup* outer = openGroup_;
+    openGroup_ = group;
+    return outer;
 }
 
 void FrameGraph::inspect(std::string textureName) {
@@ -179,6 +207,7 @@ void FrameGraph::buildReport() {
         record.name = pass.name();
         record.declaredIndex = p;
         record.tag = pass.tag();
+        record.group = pass.group();
         if (p < compiledGraph_.verdicts.size()) {
             record.status = compiledGraph_.verdicts[p].status;
             record.reason = compiledGraph_.verdicts[p].reason;
@@ -204,6 +233,7 @@ void FrameGraph::buildReport() {
         record.bytes = textureBytes(texture.view.spec);
         record.inspected = texture.inspected;
         record.captured = texture.captured;
+        record.group = t < textureGroups_.size() ? textureGroups_[t] : 0;
         std::optional<std::uint32_t> producer;
         if (t < compiledGraph_.producer.size()) producer = compiledGraph_.producer[t];
         if (producer) record.producer = passes_[*producer]->name();

@@ -26,6 +26,7 @@
 #include "render/pass.hpp"
 #include "render/pass_context.hpp"
 #include "render/pass_executor.hpp"
+#include "render/pass_group.hpp"
 #include "render/texture_pool.hpp"
 
 namespace fx {
@@ -57,6 +58,16 @@ public:
     // that writes it is never culled for "output unused".
     TextureHandle importTexture(std::string name, const TextureSpec& spec, NativeTexture native);
     Pass& addPass(std::string name, Pass::Body body = {});
+
+    // Tells the graph that `requirement` (see Pass::needs) cannot be met this frame, and why; the
+    // runner does this for the scene features the scene lacks, before the lesson declares anything.
+    void setUnmet(std::string requirement, std::string reason);
+    // Why `requirement` cannot be met; nullptr when it can (everything is met unless told otherwise).
+    const std::string* unmetReason(std::string_view requirement) const;
+    bool meets(std::string_view requirement) const { return unmetReason(requirement) == nullptr; }
+    // Passes and textures declared from now on join `group` (nullptr: none), and passes need what
+    // it needs; returns the group that was open. PassGroup::Scope calls this.
+    const PassGroup* openGroup(const PassGroup* group);
 
     // Keeps a texture's producers alive and the texture itself held until releaseTextures(), so the
     // overlay can show it. By name, because the overlay chooses before the lesson declares; a name
@@ -113,6 +124,9 @@ private:
     PassList passes_;
     std::vector<std::string> inspectNames_;
     std::vector<std::string> captureNames_;
+    std::vector<std::pair<std::string, std::string>> unmet_;  // requirement, reason
+    const PassGroup* openGroup_ = nullptr;
+    std::vector<std::uint32_t> textureGroups_;  // per texture: the group open when it was declared
 
     bool compiled_ = false;
     bool compileOk_ = false;

@@ -6,6 +6,12 @@
 
 namespace fx {
 
+double FrameReport::timedMs() const {
+    double total = 0;
+    for (const PassRecord& p : passes) total += p.timeMs.value_or(0.0);
+    return total;
+}
+
 const PassRecord* FrameReport::findPass(std::string_view name) const {
     auto it = std::find_if(passes.begin(), passes.end(), [&](const PassRecord& p) { return p.name == name; });
     return it == passes.end() ? nullptr : &*it;

@@ -34,6 +34,7 @@ struct PassRecord {
     std::string name;
     std::uint32_t declaredIndex = 0;
     std::int64_t tag = 0;
+    std::uint32_t group = 0;  // PassGroup::id() of the group it was declared in; 0: none
     PassStatus status = PassStatus::Runs;
     bool executed = false;
     std::string reason;                    // empty when it runs
@@ -60,6 +61,7 @@ struct TextureRecord {
     std::string reason;       // why it was not allocated (the producer's reason), empty otherwise
     bool inspected = false;
     bool captured = false;
+    std::uint32_t group = 0;  // PassGroup::id() of the group it was declared in; 0: none
 };
 
 struct FrameReport {
@@ -73,6 +75,8 @@ struct FrameReport {
     PoolStats pool{};                         // after execution, before retained textures go back
 
     const PassRecord* findPass(std::string_view name) const;
+    // The summed time of every timed pass.
+    double timedMs() const;
     const TextureRecord* findTexture(std::string_view name) const;
 };
 

@@ -37,6 +37,7 @@ Pass& Pass::setState(const PassState& state) {
 }
 
 Pass& Pass::disable(std::string reason) {
+    if (switch_ == PassSwitch::NotCalledFor) return *this;  // the scene's reason is the stronger one
     switch_ = PassSwitch::Disabled;
     switchReason_ = std::move(reason);
     return *this;
@@ -45,6 +46,17 @@ Pass& Pass::disable(std::string reason) {
 Pass& Pass::notCalledFor(std::string reason) {
     switch_ = PassSwitch::NotCalledFor;
     switchReason_ = std::move(reason);
+    return *this;
+}
+
+Pass& Pass::needs(std::string requirement) {
+    if (const std::string* reason = graph_.unmetReason(requirement)) notCalledFor(*reason);
+    return *this;
+}
+
+Pass& Pass::joinGroup(const PassGroup& group) {
+    group_ = group.id();
+    if (!group.requirement().empty()) needs(group.requirement());
     return *this;
 }
 

@@ -16,6 +16,7 @@ namespace fx {
 
 class FrameGraph;
 class PassContext;
+class PassGroup;
 
 // Why a pass the lesson declared may be off before the graph even looks at its outputs.
 enum class PassSwitch {
@@ -48,6 +49,12 @@ public:
     // The pass is declared but does not run, whatever reads its outputs; the reason is shown as is.
     Pass& disable(std::string reason);
     Pass& notCalledFor(std::string reason);
+    // Something outside the graph the pass exists for (a scene feature, named by the layer that knows
+    // it). When the graph was told this frame cannot meet it (FrameGraph::setUnmet), the pass is not
+    // called for, with the graph's reason, whatever the lesson's step says.
+    Pass& needs(std::string requirement);
+    // Joins `group` (and needs what it needs), as if declared inside a PassGroup::Scope.
+    Pass& joinGroup(const PassGroup& group);
     // Runs even when nothing the graph knows reads its outputs (it has effects the graph cannot see).
     Pass& keepAlive();
     // Any number the lesson or executor wants back in the report (a step, an effect id).
@@ -57,6 +64,8 @@ public:
     const std::string& name() const { return name_; }
     std::uint32_t declaredIndex() const { return index_; }
     std::int64_t tag() const { return tag_; }
+    // The PassGroup open on the graph when the pass was added; 0: none.
+    std::uint32_t group() const { return group_; }
     const PassState& state() const { return state_; }
     const Body& body() const { return body_; }
     // One entry per texture, in the order first declared.
@@ -86,6 +95,7 @@ private:
     PassState state_;
     std::vector<TextureAccess> accesses_;
     std::int64_t tag_ = 0;
+    std::uint32_t group_ = 0;
     bool keepAlive_ = false;
     PassSwitch switch_ = PassSwitch::On;
     std::string switchReason_;

@@ -86,16 +86,7 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
     skinParenthesised_ = gl::ReloadableProgram(
         {shader("skinning.vert"), shader("lit.frag"), {}, "#define PARENTHESISED 1", "skinning T*(J*p)"});
     copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "copy"});
-    for (auto* p : programs()) {
-        if (p != &brokenAttempt_ && !p->usable()) return Error{p->error()};
-    }
     return Status::success();
-}
-
-void ProgramObjectsLesson::shutdown() { *this = ProgramObjectsLesson(); }
-
-std::vector<gl::ReloadableProgram*> ProgramObjectsLesson::programs() {
-    return {&lit_, &unlit_, &normals_, &skinGrouped_, &skinParenthesised_, &copy_, &brokenAttempt_};
 }
 
 void ProgramObjectsLesson::updateBrokenAttempt() {
@@ -178,11 +169,13 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
                          .faceCulling = true, .cullFace = CullFace::Back,
                          .clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f}, .clearDepth = 1.0f};
     TextureHandle grouped[2], parenthesised[2];
-    auto& a = graph.addPass("skinning (T*J)*p", [this, drawSphere](PassContext&) { drawSphere(skinGrouped_.name()); });
+    auto& a = graph.addPass("skinning (T*J)*p", [this, drawSphere](PassContext&) { drawSphere(skinGrouped_.name()); })
+                  .joinGroup(groupedPass_);
     grouped[0] = a.create("skinning.grouped.color", colorDesc, TextureUsage::ColorAttachment);
     grouped[1] = a.create("skinning.grouped.depth", depthDesc, TextureUsage::DepthAttachment);
     a.setState(sceneState);
-    auto& b = graph.addPass("skinning T*(J*p)", [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); });
+    auto& b = graph.addPass("skinning T*(J*p)", [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); })
+                  .joinGroup(parenthesisedPass_);
     parenthesised[0] = b.create("skinning.parenthesised.color", colorDesc, TextureUsage::ColorAttachment);
     parenthesised[1] = b.create("skinning.parenthesised.depth", depthDesc, TextureUsage::DepthAttachment);
     b.setState(sceneState);
@@ -202,10 +195,6 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         .read(shown)
         .writeColor(graph.output())
         .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
-    if (frame.previousFrame) {
-        if (auto* p = frame.previousFrame->findPass("skinning (T*J)*p"); p && p->timeMs) grouped_ms_ = *p->timeMs;
-        if (auto* p = frame.previousFrame->findPass("skinning T*(J*p)"); p && p->timeMs) parenthesised_ms_ = *p->timeMs;
-    }
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -246,36 +235,36 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
                 ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
             }
             break;
-        case CachedLocations:
-            ImGui::Text("draws: %d, uniform look-ups this frame: %d", gridSize_ * gridSize_, lookupsLastFrame_);
-            ImGui::Text("time spent in glGetUniformLocation: %.3f ms", lookupMsLastFrame_);
-            break;
-        case Parentheses: {
-            auto vertices = double(denseSphere_.vertexCount());
-            vertices *= double(std::lround(std::sqrt(double(spheres_))) * std::lround(std::sqrt(double(spheres_))));
-            ImGui::Text("vertices: %.0f", vertices);
-            ImGui::Text("(T*J)*p: %d mul + %d add per vertex = %.1f M ops, %.3f ms", kGrouped.mul, kGrouped.add,
-                        vertices * (kGrouped.mul + kGrouped.add) / 1e6, grouped_ms_);
-            ImGui::Text("T*(J*p): %d mul + %d add per vertex = %.1f M ops, %.3f ms", kParenthesised.mul,
-                        kParenthesised.add, vertices * (kParenthesised.mul + kParenthesised.add) / 1e6, parenthesised_ms_);
-            break;
-        }
         case LiveReload:
             ImGui::Text("lit program: build %d", lit_.generation());
             for (auto& f : lit_.program().sourceFiles()) ImGui::BulletText("%s", f.filename().string().c_str());
             if (!lit_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", lit_.error().c_str());
             break;
+        default: break;
     }
 }
 
-void ProgramObjectsLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
-    facts.emplace_back("uniformLookupsLastFrame", std::to_string(lookupsLastFrame_));
-    facts.emplace_back("uniformLookupMs", std::to_string(lookupMsLastFrame_));
-    facts.emplace_back("brokenShaderLog", brokenAttempt_.error());
-    facts.emplace_back("denseSphereVertices", std::to_string(denseSphere_.vertexCount()));
-    facts.emplace_back("spheres", std::to_string(spheres_));
-    facts.emplace_back("opsGroupedPerVertex", std::to_string(kGrouped.mul + kGrouped.add));
-    facts.emplace_back("opsParenthesisedPerVertex", std::to_string(kParenthesised.mul + kParenthesised.add));
+void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
+    // Every fact goes in the report; the panel shows those of the step on screen.
+    auto fact = [&](bool shown, std::string name, std::string value, std::string label) {
+        if (shown) out.add(std::move(name), std::move(value), std::move(label));
+        else out.check(std::move(name), std::move(value));
+    };
+    const bool lookups = frame.step == CachedLocations, products = frame.step == Parentheses;
+    fact(lookups, "uniformLookupsLastFrame", std::to_string(lookupsLastFrame_),
+         cat("uniform look-ups this frame (", gridSize_ * gridSize_, " draws)"));
+    fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_), "time spent in glGetUniformLocation (ms)");
+    out.check("brokenShaderLog", brokenAttempt_.error());  // the panel shows it in colour
+    fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()), "vertices per sphere");
+    fact(products, "spheres", std::to_string(spheres_), "spheres");
+    fact(products, "opsGroupedPerVertex", std::to_string(kGrouped.mul + kGrouped.add),
+         cat("(T*J)*p: ", kGrouped.mul, " mul + ", kGrouped.add, " add per vertex"));
+    fact(products, "opsParenthesisedPerVertex", std::to_string(kParenthesised.mul + kParenthesised.add),
+         cat("T*(J*p): ", kParenthesised.mul, " mul + ", kParenthesised.add, " add per vertex"));
+    if (products && frame.previousFrame) {
+        out.add("groupedMs", cat(groupedPass_.timeMs(*frame.previousFrame)), "(T*J)*p pass (ms)");
+        out.add("parenthesisedMs", cat(parenthesisedPass_.timeMs(*frame.previousFrame)), "T*(J*p) pass (ms)");
+    }
 }
 
 }  // namespace lesson01

@@ -15,12 +15,10 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return Parentheses; }
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { CopyPasted, CheckedPrograms, CachedLocations, Parentheses, LiveReload };
     enum Broken { NotBroken, SyntaxError, UndeclaredName, LinkError };
@@ -53,7 +51,8 @@ private:
     // Step 3's measurements (CPU side, per frame).
     int lookupsLastFrame_ = 0;
     double lookupMsLastFrame_ = 0;
-    double grouped_ms_ = 0, parenthesised_ms_ = 0;
+    // Step 4's two skinning passes, timed side by side.
+    fx::PassGroup groupedPass_, parenthesisedPass_;
 
     void drawScene(GLuint program, const fx::FrameInfo& frame) const;
     void drawGrid(GLuint program, const fx::FrameInfo& frame);

@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
+#include "base/log.hpp"
+
 
 namespace lesson02 {
 
@@ -16,12 +18,6 @@ namespace {
 // Crowd spacing: characters a little more than a shoulder width apart, rows behind one another.
 constexpr float kCrowdSpacingX = 1.1f;
 constexpr float kCrowdSpacingZ = 1.3f;
-
-double passMs(const FrameInfo& frame, const char* name, double previous) {
-    if (!frame.previousFrame) return previous;
-    const auto* pass = frame.previousFrame->findPass(name);
-    return (pass && pass->timeMs) ? *pass->timeMs : previous;
-}
 
 }  // namespace
 
@@ -82,21 +78,7 @@ Status SkinnedShadowsLesson::init(const Scene& scene) {
     shadows_ = ShadowMap::create();
     lit_ = ShadowLitPass::create();
     present_ = OutputTransformPass::create();
-    for (auto* p : programs()) {
-        if (!p->usable()) return Error{p->error()};
-    }
     return Status::success();
-}
-
-void SkinnedShadowsLesson::shutdown() {
-    *this = SkinnedShadowsLesson();
-}
-
-std::vector<gl::ReloadableProgram*> SkinnedShadowsLesson::programs() {
-    std::vector<gl::ReloadableProgram*> out = shadows_.programs();
-    out.push_back(lit_.reloadable());
-    out.push_back(present_.reloadable());
-    return out;
 }
 
 std::vector<glm::mat4> SkinnedShadowsLesson::crowdPlacements(int count) {
@@ -141,7 +123,6 @@ void SkinnedShadowsLesson::update(const FrameInfo& frame) {
 }
 
 void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    lastStep_ = frame.step;
     const Scene& scene = *scene_;
     ShadowSettings settings = sceneShadow_;
     settings.casts = true;
@@ -150,6 +131,7 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
 
     ShadowPassOptions options = shadowOptionsForStep(frame.step, frame.benchmark);
     DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, options);
+    if (map.pass) map.pass->joinGroup(shadowPass_);
 
     // Step 3: the other product draws the same crowd into its own map, so both times stand side by
     // side every frame. A bench frame measures the chosen one alone.
@@ -162,63 +144,56 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         other.stats = &otherStats_;
         DeclaredShadowMap compared =
             shadows_.declare(graph, scene, meshes_, frame.seconds, settings, map.lookup.light, other);
-        compared.pass->keepAlive();
+        if (compared.pass) compared.pass->keepAlive().joinGroup(otherProductPass_);
     }
 
     HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
     shadows_.declareDepthView(graph, map);
     lit_.declareLightView(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
     present_.declare(graph, hdr.color);
-
-    shadowMs_ = passMs(frame, "shadow map", shadowMs_);
-    otherMs_ = passMs(frame, "shadow map (other product)", otherMs_);
 }
 
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
-    const ShadowPassStats& s = stats_;
-    ImGui::Text("shadow map: %dx%d Depth32F, %d PCF taps, pass %.3f ms", mapSize_, mapSize_, filterTaps_, shadowMs_);
-    ImGui::Text("draws: %zu static, %zu skinned; program switches: %d", s.staticDraws, s.skinnedDraws,
-                s.programSwitches);
     if (frame.step == ProductOrder) {
-        auto line = [&](SkinningProduct p, double ms) {
-            OperationCount c = operationCount(p);
-            double vertices = double(s.skinnedVertices);
-            ImGui::Text("%s: %d mul + %d add a vertex, %.2f M ops over %.0f vertices, %.3f ms",
-                        p == SkinningProduct::grouped ? "(T*J)*p" : "T*(J*p)", c.mul, c.add,
-                        vertices * (c.mul + c.add) / 1e6, vertices, ms);
-        };
-        bool groupedShown = productOrder_ == 0;
-        line(SkinningProduct::grouped, groupedShown ? shadowMs_ : otherMs_);
-        line(SkinningProduct::parenthesised, groupedShown ? otherMs_ : shadowMs_);
-        ImGui::TextWrapped("Both include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, which "
-                           "the parentheses do not change.");
+        ImGui::TextWrapped("Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, "
+                           "which the parentheses do not change.");
     }
     if (frame.step == ErrorFlood) {
-        ImGui::Text("GL errors from the skinned shadow draws this frame: %lld", static_cast<long long>(s.glErrors));
         ImGui::TextWrapped("material upload: %s", materialUpload_ == 0
                                                       ? "always (GL_INVALID_OPERATION per upload: the flood)"
                                                       : "only if the program has the uniform (none here: no errors)");
     }
 }
 
-void SkinnedShadowsLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
-    facts.emplace_back("shadowMapSize", std::to_string(mapSize_));
-    facts.emplace_back("filterTaps", std::to_string(filterTaps_));
-    facts.emplace_back("staticShadowDraws", std::to_string(stats_.staticDraws));
-    facts.emplace_back("skinnedShadowDraws", std::to_string(stats_.skinnedDraws));
-    facts.emplace_back("shadowProgramSwitches", std::to_string(stats_.programSwitches));
-    facts.emplace_back("skinnedShadowVertices", std::to_string(stats_.skinnedVertices));
-    facts.emplace_back("shadowPassGlErrorsLastFrame", std::to_string(stats_.glErrors));
-    if (lastStep_ == ProductOrder) {
-        facts.emplace_back("opsGroupedPerVertex", std::to_string(operationCount(SkinningProduct::grouped).mul +
-                                                                 operationCount(SkinningProduct::grouped).add));
-        facts.emplace_back("opsParenthesisedPerVertex",
-                           std::to_string(operationCount(SkinningProduct::parenthesised).mul +
-                                          operationCount(SkinningProduct::parenthesised).add));
+void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
+    const ShadowPassStats& s = stats_;
+    out.add("shadowMapSize", std::to_string(mapSize_), "shadow map size (Depth32F, square)");
+    out.add("filterTaps", std::to_string(filterTaps_), "PCF taps");
+    out.add("staticShadowDraws", std::to_string(s.staticDraws), "static draws");
+    out.add("skinnedShadowDraws", std::to_string(s.skinnedDraws), "skinned draws");
+    out.add("shadowProgramSwitches", std::to_string(s.programSwitches), "program switches");
+    out.add("skinnedShadowVertices", std::to_string(s.skinnedVertices), "skinned vertices");
+    if (frame.step == ErrorFlood) {
+        out.add("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors), "GL errors from the skinned shadow draws");
+    } else {
+        out.check("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors));
+    }
+    double shadowMs = frame.previousFrame ? shadowPass_.timeMs(*frame.previousFrame) : 0;
+    double otherMs = frame.previousFrame ? otherProductPass_.timeMs(*frame.previousFrame) : 0;
+    if (frame.step == ProductOrder) {
+        const bool groupedShown = productOrder_ == 0;
+        for (SkinningProduct p : {SkinningProduct::grouped, SkinningProduct::parenthesised}) {
+            const bool grouped = p == SkinningProduct::grouped;
+            OperationCount c = operationCount(p);
+            out.add(grouped ? "opsGroupedPerVertex" : "opsParenthesisedPerVertex", std::to_string(c.mul + c.add),
+                    cat(grouped ? "(T*J)*p" : "T*(J*p)", ": ", c.mul, " mul + ", c.add, " add per vertex; pass ",
+                        grouped == groupedShown ? shadowMs : otherMs, " ms"));
+        }
+    } else if (frame.previousFrame) {
+        out.add("shadowMs", cat(shadowMs), "shadow pass (ms)");
     }
     // Step 4 exists to show GL errors (counted as expected); the smoke test checks that it does.
-    bool flood = lastStep_ == ErrorFlood && materialUpload_ == 0;
-    facts.emplace_back("expectErrorsInStep", flood ? "true" : "false");
+    out.check("expectErrorsInStep", frame.step == ErrorFlood && materialUpload_ == 0);
 }
 
 }  // namespace lesson02

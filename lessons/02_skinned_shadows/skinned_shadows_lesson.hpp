@@ -18,13 +18,11 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood };
 
@@ -52,8 +50,8 @@ private:
     // Filled while the frame executes (the pass bodies write them), read by the panel and report.
     mutable fx::ShadowPassStats stats_;
     fx::ShadowPassStats otherStats_;
-    int lastStep_ = 0;
-    double shadowMs_ = 0, otherMs_ = 0;
+    // The shadow pass, and in step 3 the one drawing with the other product: timed side by side.
+    fx::PassGroup shadowPass_, otherProductPass_;
 };
 
 }  // namespace lesson02

@@ -84,24 +84,8 @@ Status FboPipelineLesson::init(const Scene& scene) {
     copyToWindow_ = FullscreenPass("common/copy.frag", "to the window");
     outputTransform_ = OutputTransformPass::create();
     uiQueue_ = UiQueuePass::create();
-    for (auto* p : programs()) {
-        if (!p->usable()) return Error{p->error()};
-    }
     noShadowReason_ = shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
     return Status::success();
-}
-
-void FboPipelineLesson::shutdown() {
-    *this = FboPipelineLesson();
-}
-
-std::vector<gl::ReloadableProgram*> FboPipelineLesson::programs() {
-    std::vector<gl::ReloadableProgram*> all = shadows_.programs();
-    for (auto* p : {litScene_.reloadable(), copyToWindow_.reloadable(), outputTransform_.reloadable(),
-                    uiQueue_.reloadable()}) {
-        all.push_back(p);
-    }
-    return all;
 }
 
 void FboPipelineLesson::update(const FrameInfo& frame) {
@@ -109,16 +93,6 @@ void FboPipelineLesson::update(const FrameInfo& frame) {
 }
 
 void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    lastStep_ = frame.step;
-    if (frame.previousFrame) {
-        lastExecuted_.clear();
-        for (const PassRecord& p : frame.previousFrame->passes) {
-            if (p.executed) lastExecuted_.push_back(p.name);
-        }
-        if (const PassRecord* shadow = frame.previousFrame->findPass("shadow map")) {
-            shadowInherited_ = shadow->stateInherited;
-        }
-    }
     ShadowSettings settings;
     if (const Light* sun = shadowCastingLight(*scene_)) settings = sun->shadow;
     ShadowPassOptions options;
@@ -130,10 +104,12 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
         setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
         DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+        if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
         return;
     }
     DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+    if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
         setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
@@ -188,21 +164,35 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
     uiQueue_.declare(graph, frame.size);
 }
 
-void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
-    if (!noShadowReason_.empty()) ImGui::TextWrapped("shadow map not run: %s", noShadowReason_.c_str());
-    if (shadowInherited_.empty()) {
-        ImGui::TextWrapped("shadow pass inherits: nothing (it declares all the state it depends on)");
-    } else {
-        ImGui::TextWrapped("shadow pass inherits: %s", joined(shadowInherited_).c_str());
+namespace {
+
+// The passes that ran in `report`, in order.
+std::vector<std::string> executedPasses(const FrameReport* report) {
+    std::vector<std::string> names;
+    if (!report) return names;
+    for (const PassRecord& p : report->passes) {
+        if (p.executed) names.push_back(p.name);
     }
-    ImGui::Separator();
+    return names;
+}
+
+}  // namespace
+
+std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* report) const {
+    if (!report) return {};
+    std::vector<const PassRecord*> shadow = shadowPass_.records(*report);
+    return shadow.empty() ? std::vector<std::string>{} : shadow.front()->stateInherited;
+}
+
+void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
+    const std::vector<std::string> executed = executedPasses(frame.previousFrame);
     ImGui::TextUnformatted("Frame order");
     if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
     ImGui::TableSetupColumn("the chapter's Render(), by hand");
     ImGui::TableSetupColumn("the graph's order, derived");
     ImGui::TableHeadersRow();
     const std::vector<ChapterLine>& lines = chapterOrder(frame.step);
-    std::size_t rows = std::max(lines.size(), lastExecuted_.size());
+    std::size_t rows = std::max(lines.size(), executed.size());
     for (std::size_t i = 0; i < rows; ++i) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -211,7 +201,7 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
                                lines[i].pass.c_str(), lines[i].pass.empty() ? "" : "]");
         }
         ImGui::TableNextColumn();
-        if (i < lastExecuted_.size()) ImGui::Text("%d. %s", int(i) + 1, lastExecuted_[i].c_str());
+        if (i < executed.size()) ImGui::Text("%d. %s", int(i) + 1, executed[i].c_str());
     }
     ImGui::EndTable();
     ImGui::TextWrapped(
@@ -220,11 +210,15 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
         "inherits; the pass table lists it.");
 }
 
-void FboPipelineLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
-    facts.emplace_back("chapterPassOrder", joined(chapterPassOrder(lastStep_)));
-    facts.emplace_back("executedPassOrder", joined(lastExecuted_));
-    facts.emplace_back("shadowPassInherits", joined(shadowInherited_));
-    if (!noShadowReason_.empty()) facts.emplace_back("shadowMapNotRun", noShadowReason_);
+void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
+    // The two orders are the panel's table; the report has them for the draw-order check.
+    out.check("chapterPassOrder", joined(chapterPassOrder(frame.step)));
+    out.check("executedPassOrder", joined(executedPasses(frame.previousFrame)));
+    std::vector<std::string> inherited = shadowInherited(frame.previousFrame);
+    out.add("shadowPassInherits", joined(inherited),
+            inherited.empty() ? "shadow pass inherits (nothing: it declares all the state it depends on)"
+                              : "shadow pass inherits");
+    if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_, "shadow map not run");
 }
 
 }  // namespace lesson03

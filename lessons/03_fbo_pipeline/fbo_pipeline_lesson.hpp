@@ -20,12 +20,10 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { StraightToWindow, Reordered, EachPassSetsItsState, FloatTarget, OneOutputTransform };
 
@@ -42,10 +40,11 @@ private:
     fx::OutputTransformPass outputTransform_;
     UiQueuePass uiQueue_;
 
-    int lastStep_ = 0;
-    std::vector<std::string> lastExecuted_;      // the passes that ran last frame, in order
-    std::vector<std::string> shadowInherited_;   // the shadow pass's inherited state last frame
-    std::string noShadowReason_;                  // why there is no shadow pass, if there is none
+    fx::PassGroup shadowPass_;    // the shadow map pass: what state it inherited last frame
+    std::string noShadowReason_;  // why there is no shadow pass, if there is none
+
+    // The shadow pass's inherited state in `report`.
+    std::vector<std::string> shadowInherited(const fx::FrameReport* report) const;
 
     void declareStraightToWindow(fx::FrameGraph& graph, const fx::FrameInfo& frame,
                                  const fx::DeclaredShadowMap& shadow);

@@ -31,7 +31,6 @@ public:
 
     bool usable() const { return program_.usable(); }
     const std::string& error() const { return program_.error(); }
-    fx::gl::ReloadableProgram* reloadable() { return &program_; }
 
     // Into the graph's output (the window). `scene`, `meshes` and `shadow` must outlive the frame.
     fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,

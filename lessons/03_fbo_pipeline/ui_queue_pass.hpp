@@ -17,7 +17,6 @@ public:
 
     bool usable() const { return pass_.usable(); }
     const std::string& error() const { return pass_.error(); }
-    fx::gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
 
     // Draws the panel over the graph's output (`size` is the output's size this frame).
     fx::Pass& declare(fx::FrameGraph& graph, fx::Size2D size) const;

@@ -7,7 +7,6 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
-#include "scene/scene_features.hpp"
 
 namespace lesson04 {
 
@@ -98,21 +97,7 @@ Status ColourMatrixLesson::init(const Scene& scene) {
     scenePass_ = HdrScenePass::create();
     grading_ = ColourMatrixPass::create();
     present_ = OutputTransformPass::create();
-    SceneFeatures sceneFeatures = features(scene);
-    calledFor_ = sceneFeatures.has(SceneFeature::colorMatrix);
-    notCalledReason_ = sceneFeatures.missingReason(SceneFeature::colorMatrix);
-    for (auto* p : programs()) {
-        if (!p->usable()) return Error{p->error()};
-    }
     return Status::success();
-}
-
-void ColourMatrixLesson::shutdown() {
-    *this = ColourMatrixLesson();
-}
-
-std::vector<gl::ReloadableProgram*> ColourMatrixLesson::programs() {
-    return {scenePass_.reloadable(), grading_.reloadable(), present_.reloadable()};
 }
 
 ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
@@ -154,32 +139,24 @@ ColourTransform ColourMatrixLesson::selected(int step) const {
 }
 
 void ColourMatrixLesson::update(const FrameInfo& frame) {
-    // Dragging moves the divider: a press that starts on the picture (not on the overlay) and holds.
-    const Pointer& p = frame.pointer;
-    bool down = p.present && p.leftDown;
-    if (down && !wasDown_ && !p.overUi) dragging_ = true;
-    if (!down) dragging_ = false;
-    wasDown_ = down;
-    if (dragging_ && splitView_ && frame.size.width > 0) {
-        divider_ = std::clamp(p.x / float(frame.size.width), 0.0f, 1.0f);
-    }
+    // Dragging moves the divider.
+    if (auto at = dividerDrag_.update(frame); at && splitView_) divider_ = std::clamp(at->x, 0.0f, 1.0f);
 }
 
 void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    lastStep_ = frame.step;
     // Exercise 02: the lesson chooses a transform value and hands it to the one setter.
     grading_.setTransform(blendFromIdentity(selected(frame.step), amount_));
 
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
-    DeclaredPass graded = grading_.declare(graph, hdr.color);
-    TextureHandle shown = graded.output;
-    if (!calledFor_) {
-        graded.pass.notCalledFor(notCalledReason_);
-        shown = hdr.color;
-    }
+    DeclaredPass graded = [&] {
+        PassGroup::Scope in(graph, gradingGroup_);  // runs only when the scene asks for a colour matrix
+        return grading_.declare(graph, hdr.color);
+    }();
+    const bool calledFor = !lacks(graph, SceneFeature::colorMatrix);
+    TextureHandle shown = calledFor ? graded.output : hdr.color;
     // The split view is for people; a bench frame measures the effect alone.
     std::optional<SplitView> split;
-    if (splitView_ && calledFor_ && !frame.benchmark) split = SplitView{hdr.color, divider_};
+    if (splitView_ && calledFor && !frame.benchmark) split = SplitView{hdr.color, divider_};
     present_.declare(graph, shown, split);
 }
 
@@ -221,21 +198,16 @@ void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
                        editable ? "edit any cell: the preset becomes custom" : "editable in step 4");
     ImGui::TextUnformatted(t.linear() ? "no offset: a 3x3 matrix can do this"
                                       : "has an offset: a 3x3 matrix cannot do this");
-    ColourTransform used = grading_.transform();
-    ImGui::Text("white -> %s", vec3Text(used.apply(glm::vec3(1.0f))).c_str());
-    ImGui::Text("red   -> %s", vec3Text(used.apply(glm::vec3(1, 0, 0))).c_str());
-    ImGui::Text("black -> %s", vec3Text(used.apply(glm::vec3(0.0f))).c_str());
-    if (!calledFor_) ImGui::TextWrapped("colour matrix not run: %s", notCalledReason_.c_str());
 }
 
-void ColourMatrixLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
+void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
     ColourTransform used = grading_.transform();
-    facts.emplace_back("transform", equations(used));
-    facts.emplace_back("needsOffset", used.linear() ? "false" : "true");
-    facts.emplace_back("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))));
-    facts.emplace_back("redMapsTo", vec3Text(used.apply(glm::vec3(1, 0, 0))));
-    facts.emplace_back("blackMapsTo", vec3Text(used.apply(glm::vec3(0.0f))));
-    facts.emplace_back("step", std::to_string(lastStep_ + 1));
+    out.add("transform", equations(used));
+    out.add("needsOffset", !used.linear(), "needs an offset (not a 3x3 matrix)");
+    out.add("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))), "white ->");
+    out.add("redMapsTo", vec3Text(used.apply(glm::vec3(1, 0, 0))), "red ->");
+    out.add("blackMapsTo", vec3Text(used.apply(glm::vec3(0.0f))), "black ->");
+    out.check("step", std::to_string(frame.step + 1));
 }
 
 }  // namespace lesson04

@@ -1,6 +1,8 @@
 #pragma once
 // Lesson 04: colour matrix (the Shader effects chapter, §3.4, §3.5, hard cases 5 to 8, Exercise 02).
 #include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "effects/post/colour_matrix.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
@@ -14,12 +16,10 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { Identity, Grayscale, Sepia, Affine };
     // The presets of step 4 (the `preset` parameter), in the order of its choices.
@@ -54,11 +54,8 @@ private:
     fx::ColourMatrixPass grading_;
     fx::OutputTransformPass present_;
     fx::ColourTransform custom_;  // the matrix edited in the overlay (preset "custom")
-    bool calledFor_ = true;       // the scene asks for a colour matrix
-    std::string notCalledReason_;
-    int lastStep_ = 0;
-    bool dragging_ = false;
-    bool wasDown_ = false;
+    fx::PassGroup gradingGroup_ = fx::groupNeeding(fx::SceneFeature::colorMatrix);
+    fx::PointDrag dividerDrag_;
 
     // The transform the step (and, in step 4, the preset) selects, before `amount`.
     fx::ColourTransform selected(int step) const;

@@ -7,7 +7,6 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
-#include "scene/scene_features.hpp"
 
 namespace lesson05 {
 
@@ -90,21 +89,7 @@ Status RadialBlurLesson::init(const Scene& scene) {
     scenePass_ = HdrScenePass::create();
     blur_ = RadialBlur::create();
     present_ = OutputTransformPass::create();
-    SceneFeatures sceneFeatures = features(scene);
-    calledFor_ = sceneFeatures.has(SceneFeature::radialBlur);
-    notCalledReason_ = sceneFeatures.missingReason(SceneFeature::radialBlur);
-    for (auto* p : programs()) {
-        if (!p->usable()) return Error{p->error()};
-    }
     return Status::success();
-}
-
-void RadialBlurLesson::shutdown() {
-    *this = RadialBlurLesson();
-}
-
-std::vector<gl::ReloadableProgram*> RadialBlurLesson::programs() {
-    return {scenePass_.reloadable(), blur_.blurProgram(), blur_.offsetProgram(), present_.reloadable()};
 }
 
 RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
@@ -134,77 +119,58 @@ RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
 }
 
 void RadialBlurLesson::update(const FrameInfo& frame) {
-    // Dragging moves the centre: a press that starts on the picture (not on the overlay) and holds.
-    const Pointer& p = frame.pointer;
-    bool down = p.present && p.leftDown;
-    if (down && !wasDown_ && !p.overUi) dragging_ = true;
-    if (!down) dragging_ = false;
-    wasDown_ = down;
-    if (dragging_ && !frame.size.empty()) {
-        centreX_ = std::clamp(p.x / float(frame.size.width), kCentreMin, kCentreMax);
-        centreY_ = std::clamp(p.y / float(frame.size.height), kCentreMin, kCentreMax);
+    // Dragging moves the centre.
+    if (auto at = centreDrag_.update(frame)) {
+        centreX_ = std::clamp(at->x, kCentreMin, kCentreMax);
+        centreY_ = std::clamp(at->y, kCentreMin, kCentreMax);
     }
 }
 
 void RadialBlurLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    lastStep_ = frame.step;
-    lastSize_ = frame.size;
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
-    RadialBlur::Declared blurred = blur_.declare(graph, hdr.color, paramsForStep(frame.step));
-    TextureHandle shown = blurred.blur.output;
-    if (!calledFor_) {
-        blurred.blur.pass.notCalledFor(notCalledReason_);
-        blurred.offsets.pass.notCalledFor(notCalledReason_);
-        shown = hdr.color;
-    }
-    present_.declare(graph, shown);
-    if (frame.previousFrame) {
-        if (auto* pass = frame.previousFrame->findPass("radial blur"); pass && pass->timeMs)
-            blurMs_ = *pass->timeMs;
-    }
+    RadialBlur::Declared blurred = [&] {
+        PassGroup::Scope in(graph, blurGroup_);  // runs only when the scene asks for a radial blur
+        return blur_.declare(graph, hdr.color, paramsForStep(frame.step));
+    }();
+    present_.declare(graph, lacks(graph, SceneFeature::radialBlur) ? hdr.color : blurred.blur.output);
+}
+
+bool RadialBlurLesson::blurRan(const FrameInfo& frame) const {
+    if (!frame.previousFrame) return false;
+    auto passes = blurGroup_.records(*frame.previousFrame);
+    return std::all_of(passes.begin(), passes.end(), [](const PassRecord* p) { return p->executed; }) &&
+           !passes.empty();
 }
 
 void RadialBlurLesson::drawPanel(const FrameInfo& frame) {
+    const RadialBlurFormulaInfo& info = describe(paramsForStep(frame.step).formula);
+    ImGui::TextWrapped("%s", info.formula.data());
+}
+
+void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
     RadialBlurParams p = paramsForStep(frame.step);
     const RadialBlurFormulaInfo& info = describe(p.formula);
-    ImGui::TextWrapped("formula: %s%s", info.name.data(), info.deliberateBug ? " (deliberate bug)" : "");
-    ImGui::TextWrapped("%s", info.formula.data());
-    glm::vec2 centre = radialBlurCentrePixels(p, frame.size);
-    ImGui::Text("centre: %s in pixels%s", vec2Text(centre).c_str(),
-                p.centreOnPixel ? " (on a pixel centre)" : "");
+    out.add("formula", std::string(info.name));
+    out.add("deliberateBug", info.deliberateBug, "deliberate bug");
+    out.add("samples", std::to_string(p.samples));
+    out.add("centrePixels", vec2Text(radialBlurCentrePixels(p, frame.size)),
+            p.centreOnPixel ? "centre in pixels (on a pixel centre)" : "centre in pixels");
     glm::vec2 pixel;
     if (centrePixel(p, frame.size, pixel)) {
         glm::vec2 v = radialBlurTapOffset(p, frame.size, pixel);
-        ImGui::Text("offset v at the pixel %s: %s", vec2Text(pixel).c_str(), vec2Text(v).c_str());
-    } else {
-        ImGui::TextUnformatted("the centre is off screen");
+        out.add("offsetAtCentrePixel", vec2Text(v), cat("offset v at the pixel ", vec2Text(pixel)));
+        // The step that keeps the chapter's 0/0: its NaN is the lesson, so the smoke check lets these
+        // textures hold it (and checks that they do).
+        if (info.deliberateBug && blurRan(frame) && p.length > 0 && !(std::isfinite(v.x) && std::isfinite(v.y))) {
+            out.check("expectNonFiniteIn", "blur.offset, blur.result");
+        }
     }
     // The farthest tap from the top-right corner, in pixels: how long the longest streak is.
     glm::vec2 corner(float(frame.size.width) - 0.5f, float(frame.size.height) - 0.5f);
     glm::vec2 reach =
         radialBlurTapOffset(p, frame.size, corner) * 7.0f * glm::vec2(frame.size.width, frame.size.height);
-    ImGui::Text("streak at the top-right corner: %.1f px", double(std::hypot(reach.x, reach.y)));
-    ImGui::Text("samples: %d, radial blur pass: %.3f ms", p.samples, blurMs_);
-    if (!calledFor_) ImGui::TextWrapped("radial blur not run: %s", notCalledReason_.c_str());
-}
-
-void RadialBlurLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
-    RadialBlurParams p = paramsForStep(lastStep_);
-    const RadialBlurFormulaInfo& info = describe(p.formula);
-    facts.emplace_back("formula", std::string(info.name));
-    facts.emplace_back("deliberateBug", info.deliberateBug ? "true" : "false");
-    facts.emplace_back("samples", std::to_string(p.samples));
-    facts.emplace_back("centrePixels", vec2Text(radialBlurCentrePixels(p, lastSize_)));
-    glm::vec2 pixel;
-    if (centrePixel(p, lastSize_, pixel)) {
-        glm::vec2 v = radialBlurTapOffset(p, lastSize_, pixel);
-        facts.emplace_back("offsetAtCentrePixel", vec2Text(v));
-        // The step that keeps the chapter's 0/0: its NaN is the lesson, so the smoke check lets these
-        // textures hold it (and checks that they do).
-        if (info.deliberateBug && calledFor_ && p.length > 0 && !(std::isfinite(v.x) && std::isfinite(v.y))) {
-            facts.emplace_back("expectNonFiniteIn", "blur.offset, blur.result");
-        }
-    }
+    out.add("streakAtCornerPixels", cat(std::hypot(reach.x, reach.y)), "streak at the top-right corner (px)");
+    if (frame.previousFrame) out.add("blurMs", cat(blurGroup_.timeMs(*frame.previousFrame)), "radial blur passes (ms)");
 }
 
 }  // namespace lesson05

@@ -1,6 +1,8 @@
 #pragma once
 // Lesson 05: radial blur (the Shader effects chapter, §3.6, hard cases 1 to 4, Exercises 03, 04).
 #include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/post/radial_blur.hpp"
@@ -14,13 +16,11 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return SampleCount; }
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { FirstVersion, ChapterStart, Guarded, SampleCount };
 
@@ -39,13 +39,11 @@ private:
     fx::HdrScenePass scenePass_;
     fx::RadialBlur blur_;
     fx::OutputTransformPass present_;
-    bool calledFor_ = true;
-    std::string notCalledReason_;
-    int lastStep_ = 0;
-    fx::Size2D lastSize_;
-    bool dragging_ = false;
-    bool wasDown_ = false;
-    double blurMs_ = 0;
+    fx::PassGroup blurGroup_ = fx::groupNeeding(fx::SceneFeature::radialBlur);
+    fx::PointDrag centreDrag_;
+
+    // Whether both blur passes ran in the frame before `frame` (the scene asks for the blur).
+    bool blurRan(const fx::FrameInfo& frame) const;
 };
 
 }  // namespace lesson05

@@ -6,7 +6,6 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
-#include "scene/scene_features.hpp"
 
 namespace lesson06 {
 
@@ -122,25 +121,7 @@ Status BloomLesson::init(const Scene& scene) {
     reference_glow_ = BloomReference::create();
     flicker_ = BloomFlicker::create();
     present_ = OutputTransformPass::create();
-    SceneFeatures sceneFeatures = features(scene);
-    calledFor_ = sceneFeatures.has(SceneFeature::bloom);
-    notCalledReason_ = sceneFeatures.missingReason(SceneFeature::bloom);
-    for (auto* p : programs()) {
-        if (!p->usable()) return Error{p->error()};
-    }
     return Status::success();
-}
-
-void BloomLesson::shutdown() {
-    *this = BloomLesson();
-}
-
-std::vector<gl::ReloadableProgram*> BloomLesson::programs() {
-    std::vector<gl::ReloadableProgram*> list{scenePass_.reloadable(), composite_.reloadable(),
-                                             present_.reloadable(), flicker_.reloadable()};
-    for (auto* p : chain_.programs()) list.push_back(p);
-    for (auto* p : reference_glow_.programs()) list.push_back(p);
-    return list;
 }
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
@@ -177,8 +158,6 @@ float BloomLesson::uniformGain(int step, Size2D size) const {
 }
 
 void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    lastStep_ = frame.step;
-    lastSize_ = frame.size;
     const int step = frame.step;
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds, sceneFormat);
@@ -189,107 +168,90 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // shows what is still to come.
     const int chainStep = step < Chapter000 ? Chapter001 : step;
     BloomChainSettings settings = chainFor(chainStep);
-    std::string off;
-    if (step < Chapter000) off = cat("disabled in step ", step + 1, ": no bloom yet");
-    if (!calledFor_) off = notCalledReason_;
+    // Every bloom pass is in bloomGroup_: without bloom in the scene the graph marks them all not
+    // called for, with the scene's reason, and the picture is the scene alone.
+    const bool calledFor = !lacks(graph, SceneFeature::bloom);
+    const bool runs = calledFor && step >= Chapter000;
+    const std::string off = cat("disabled in step ", step + 1, ": no bloom yet");
+    {
+        PassGroup::Scope in(graph, bloomGroup_);
 
-    if (showsReference(step)) {
-        // The reference: what the chain approximates, computed directly (effects/bloom/bloom_reference.hpp).
-        std::vector<BloomLevel> levels = bloomLevels(graph.outputSize(), 2, levels_);
-        BloomReferenceSettings r{
-            threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};
-        for (const BloomLevel& l : levels)
-            r.sigmas.push_back(bloomLevelSigma(l.index, downOffset_, upOffset_));
-        BloomReference::Declared d = reference_glow_.declare(graph, hdr.color, r);
-        if (!d.empty()) {
-            DeclaredPass result = composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
-            if (!calledFor_) {
-                for (Pass* p : d.passes) p->notCalledFor(off);
-                result.pass.notCalledFor(off);
-            } else {
-                shown = result.output;
+        if (showsReference(step)) {
+            // The reference: what the chain approximates, computed directly (effects/bloom/bloom_reference.hpp).
+            std::vector<BloomLevel> levels = bloomLevels(graph.outputSize(), 2, levels_);
+            BloomReferenceSettings r{
+                threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};
+            for (const BloomLevel& l : levels)
+                r.sigmas.push_back(bloomLevelSigma(l.index, downOffset_, upOffset_));
+            BloomReference::Declared d = reference_glow_.declare(graph, hdr.color, r);
+            if (!d.empty()) {
+                DeclaredPass result = composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
+                if (calledFor) shown = result.output;
+            }
+        } else {
+            BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
+            if (!d.empty()) {
+                int n = int(d.levels.size());
+                BloomCompositeSettings c{settings.filters, settings.upOffset, compositeScale(chainStep, n)};
+                DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
+                if (!runs) {
+                    for (Pass* p : d.passes) p->disable(off);  // a scene without bloom has said why already
+                    result.pass.disable(off);
+                } else {
+                    shown = result.output;
+                    // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
+                    // Another step or Karis setting is a change of chain, not flicker: start over.
+                    bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
+                    flickerStep_ = step;
+                    flickerKaris_ = settings.karisAverage;
+                    flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
+                }
             }
         }
-    } else {
-        BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
-        if (!d.empty()) {
-            int n = int(d.levels.size());
-            BloomCompositeSettings c{settings.filters, settings.upOffset, compositeScale(chainStep, n)};
-            DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
-            if (!off.empty()) {
-                for (Pass* p : d.passes) calledFor_ ? p->disable(off) : p->notCalledFor(off);
-                calledFor_ ? result.pass.disable(off) : result.pass.notCalledFor(off);
-            } else {
-                shown = result.output;
-                // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
-                // Another step or Karis setting is a change of chain, not flicker: start over.
-                bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
-                flickerStep_ = step;
-                flickerKaris_ = settings.karisAverage;
-                flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
-            }
-        }
-    }
+    }  // the present pass is no part of the bloom group
     present_.declare(graph, shown, std::nullopt, curve);
-
-    if (frame.previousFrame) {
-        double bloom = 0, total = 0;
-        for (const PassRecord& p : frame.previousFrame->passes) {
-            if (!p.timeMs) continue;
-            total += *p.timeMs;
-            if (p.name.rfind("bloom", 0) == 0) bloom += *p.timeMs;
-        }
-        bloomMs_ = bloom;
-        frameMs_ = total;
-    }
 }
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {
     const int step = frame.step;
     if (step < Chapter000) {
-        ImGui::TextWrapped("scene.color: %s. Inspect it and look at the range: %s",
-                           step == EightBit ? "RGBA8" : "RGBA16F",
+        ImGui::TextWrapped("Inspect scene.color and look at the range: %s",
                            step == EightBit ? "nothing above 1." : "the sun's disc holds thousands.");
+        return;
+    }
+    if (flicker_.stats().measured && !showsReference(step)) {
+        ImGui::TextWrapped("Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
+                           "frame's|.%s",
+                           step == Beyond ? " Switch karis off to see the firefly flicker." : "");
+    }
+}
+
+void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
+    const int step = frame.step;
+    if (step < Chapter000) {
+        out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
         return;
     }
     BloomChainSettings s = chainFor(step);
     std::vector<BloomLevel> levels = bloomLevels(frame.size, firstLevelDivisor(s.filters), s.levels);
-    int n = int(levels.size());
-    ImGui::TextWrapped("chain (%s): %d of %d levels: %s", toString(s.format).data(), n, s.levels,
-                       sizesText(levels).c_str());
-    ImGui::Text("composite scale: %.4g", double(compositeScale(step, std::max(n, 1))));
-    ImGui::TextWrapped("a uniform grey area v comes out as v + %.4g * max(v - %.3g, 0)",
-                       double(uniformGain(step, frame.size)), double(threshold_));
+    out.add("chainFormat", std::string(toString(s.format)), "chain format");
+    out.add("levels", std::to_string(levels.size()), cat("levels (of ", s.levels, " asked for)"));
+    out.add("levelSizes", sizesText(levels), "level sizes");
+    out.add("compositeScale", cat(compositeScale(step, std::max(int(levels.size()), 1))), "composite scale");
+    out.add("uniformGain", cat(uniformGain(step, frame.size)),
+            cat("a uniform grey v comes out as v + gain * max(v - ", threshold_, ", 0); gain"));
     if (step == Beyond) {
-        ImGui::Text("tone curve: %s%s", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))),
-                    showsReference(step) ? ", showing the reference Gaussian" : "");
+        out.add("toneCurve", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))), "tone curve");
+        out.add("reference", showsReference(step), "showing the reference Gaussian");
     }
     const BloomFlicker::Stats& f = flicker_.stats();
     if (f.measured && !showsReference(step)) {
-        ImGui::Text("glow change since last frame: %.2f %% (last %d frames: mean %.2f %%, max %.2f %%)",
-                    f.changePercent, BloomFlicker::kWindow, f.meanPercent, f.maxPercent);
-        ImGui::TextWrapped("Inspect bloom.flicker to see where: |this frame's glow - last frame's|.%s",
-                           step == Beyond ? " Switch karis off to see the firefly flicker." : "");
+        out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
+        out.add("glowChangeMaxPercent", cat(f.maxPercent), cat("largest change over the last ", BloomFlicker::kWindow, " frames (%)"));
     }
-    ImGui::Text("bloom passes: %.3f ms of %.3f ms", bloomMs_, frameMs_);
-    if (!calledFor_) ImGui::TextWrapped("bloom not run: %s", notCalledReason_.c_str());
-}
-
-void BloomLesson::reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const {
-    if (lastStep_ < Chapter000) {
-        facts.emplace_back("sceneFormat", lastStep_ == EightBit ? "RGBA8" : "RGBA16F");
-        return;
-    }
-    BloomChainSettings s = chainFor(lastStep_);
-    std::vector<BloomLevel> levels = bloomLevels(lastSize_, firstLevelDivisor(s.filters), s.levels);
-    facts.emplace_back("chainFormat", std::string(toString(s.format)));
-    facts.emplace_back("levels", std::to_string(levels.size()));
-    facts.emplace_back("levelSizes", sizesText(levels));
-    facts.emplace_back("compositeScale", cat(compositeScale(lastStep_, std::max(int(levels.size()), 1))));
-    facts.emplace_back("uniformGain", cat(uniformGain(lastStep_, lastSize_)));
-    if (lastStep_ == Beyond) {
-        facts.emplace_back("toneCurve", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))));
-        facts.emplace_back("reference", showsReference(lastStep_) ? "true" : "false");
+    if (frame.previousFrame) {
+        out.add("bloomMs", cat(bloomGroup_.timeMs(*frame.previousFrame)), "bloom passes (ms)");
+        out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
     }
 }
 

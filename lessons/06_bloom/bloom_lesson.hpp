@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/lesson.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/bloom/bloom_flicker.hpp"
@@ -21,15 +22,13 @@ public:
     std::vector<fx::LessonStep> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void shutdown() override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
-    std::vector<fx::gl::ReloadableProgram*> programs() override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return Beyond; }
     std::string benchTexture() const override { return "bloom.result"; }
     std::string benchReferenceName() const override { return "Gaussian"; }
     void setBenchReference(bool on) override { benchReference_ = on; }
-    void reportFacts(std::vector<std::pair<std::string, std::string>>& facts) const override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond };
 
@@ -68,11 +67,8 @@ private:
     int flickerStep_ = -1;      // the step and Karis setting the flicker measure last compared
     bool flickerKaris_ = false;
     fx::OutputTransformPass present_;
-    bool calledFor_ = true;
-    std::string notCalledReason_;
-    int lastStep_ = 0;
-    fx::Size2D lastSize_;
-    double bloomMs_ = 0, frameMs_ = 0;
+    // Every bloom pass (chain, composite, flicker view, reference): its time, and the scene's say.
+    fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
 };
 
 }  // namespace lesson06

@@ -145,3 +145,45 @@ TEST_F(Framebuffers, CompleteFramebufferPasses) {
     fbo.setDrawBuffers(1);
     EXPECT_TRUE(fbo.checkComplete().ok());
 }
+
+// The registry collects programs where they are built, follows them when they move, forgets them when
+// they are destroyed, and answers for all of them: what the runner does instead of a lesson's list.
+TEST_F(Programs, RegistryCollectsProgramsWhereverTheyAreBuiltAndFollowsMoves) {
+    auto vert = goodVertex();
+    auto frag = write("ok.frag", "#version 450 core\nout vec4 c;\nvoid main(){ c = vec4(1); }\n");
+    auto broken = write("broken.frag", "#version 450 core\nout vec4 c;\nvoid main(){ c = nope; }\n");
+    gl::ReloadableProgram outside(sources(vert, frag));  // built before: not in the registry
+    gl::ProgramRegistry registry;
+    EXPECT_EQ(gl::ProgramRegistry::open(), &registry);
+    gl::ReloadableProgram kept;
+    {
+        gl::ReloadableProgram made(sources(vert, frag));
+        kept = std::move(made);  // as an effect's create() result moves into a lesson member
+    }
+    EXPECT_EQ(registry.size(), 1u);
+    EXPECT_FALSE(registry.firstUnusable());
+    EXPECT_TRUE(registry.errors().empty());
+    {
+        gl::ReloadableProgram failing(sources(vert, broken));
+        EXPECT_EQ(registry.size(), 2u);
+        ASSERT_TRUE(registry.firstUnusable());
+        EXPECT_NE(registry.firstUnusable()->find("broken.frag"), std::string::npos) << *registry.firstUnusable();
+        EXPECT_EQ(registry.errors().size(), 1u);
+    }
+    EXPECT_EQ(registry.size(), 1u) << "a destroyed program leaves the registry";
+    EXPECT_FALSE(registry.firstUnusable());
+    // A reload through the registry reaches the moved program.
+    int before = kept.generation();
+    registry.reloadAll();
+    EXPECT_EQ(kept.generation(), before + 1);
+    EXPECT_EQ(outside.generation(), 1) << "a program built before the registry opened is not in it";
+}
+
+TEST_F(Programs, RegistriesNestAndCloseInOrder) {
+    gl::ProgramRegistry outer;
+    {
+        gl::ProgramRegistry inner;
+        EXPECT_EQ(gl::ProgramRegistry::open(), &inner);
+    }
+    EXPECT_EQ(gl::ProgramRegistry::open(), &outer);
+}

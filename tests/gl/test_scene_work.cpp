@@ -48,10 +48,10 @@ struct TestLesson {
         auto sceneDepth = graph.declareTexture("scene.depth", kDepth);
 
         // Skinning writes buffers the graph does not track, so it is kept alive, and gated.
-        work.require(graph.addPass("skinning", body("skinning")).keepAlive(), SceneFeature::skinnedMeshes);
+        needs(graph.addPass("skinning", body("skinning")).keepAlive(), SceneFeature::skinnedMeshes);
 
         auto shadowMap = graph.declareTexture("shadow.map", kShadowMap);
-        work.require(graph.addPass("shadow map", body("shadow map")).writeDepth(shadowMap),
+        needs(graph.addPass("shadow map", body("shadow map")).writeDepth(shadowMap),
                      SceneFeature::shadows);
 
         auto& scene = graph.addPass("scene", body("scene")).writeColor(sceneColor).writeDepth(sceneDepth);
@@ -60,8 +60,8 @@ struct TestLesson {
         auto& clouds = graph.addPass("clouds", body("clouds"));
         auto cloudColor = clouds.create("clouds.color", kHalfHdr, TextureUsage::ColorAttachment);
         clouds.read(sceneDepth);
-        work.require(clouds, SceneFeature::clouds);
-        work.require(graph.addPass("clouds composite", body("clouds composite"))
+        needs(clouds, SceneFeature::clouds);
+        needs(graph.addPass("clouds composite", body("clouds composite"))
                          .read(cloudColor)
                          .modify(sceneColor, TextureUsage::ColorAttachment),
                      SceneFeature::clouds);
@@ -69,8 +69,8 @@ struct TestLesson {
         auto& particles = graph.addPass("particles", body("particles"));
         auto particleColor = particles.create("particles.color", kHalfHdr, TextureUsage::ColorAttachment);
         particles.read(sceneDepth);
-        work.require(particles, SceneFeature::particles);
-        work.require(graph.addPass("particles composite", body("particles composite"))
+        needs(particles, SceneFeature::particles);
+        needs(graph.addPass("particles composite", body("particles composite"))
                          .read(particleColor)
                          .modify(sceneColor, TextureUsage::ColorAttachment),
                      SceneFeature::particles);
@@ -78,7 +78,7 @@ struct TestLesson {
         auto& bloom = graph.addPass("bloom", body("bloom"));
         auto bloomChain = bloom.create("bloom.chain", kBloomChain, TextureUsage::ColorAttachment);
         bloom.read(sceneColor);
-        work.require(bloom, SceneFeature::bloom);
+        needs(bloom, SceneFeature::bloom);
 
         auto& tonemap = graph.addPass("tonemap", body("tonemap")).read(sceneColor).writeColor(graph.output());
         if (work.has(SceneFeature::bloom)) tonemap.read(bloomChain);
@@ -123,6 +123,7 @@ protected:
         lesson.work.update(1.0, 1.0 / 60.0);
 
         FrameGraph graph(OutputTarget{kOutput, "output", TextureFormat::RGBA8, 0});
+        lesson.work.describeTo(graph);  // what the runner does before a lesson declares
         lesson.build(graph);
         Status status = graph.execute(pool, executor);
         EXPECT_TRUE(status.ok()) << status.error();

@@ -51,10 +51,6 @@ std::string BloomChain::error() const {
     return {};
 }
 
-std::vector<gl::ReloadableProgram*> BloomChain::programs() {
-    return {extract_.reloadable(), down_.reloadable(), up_.reloadable()};
-}
-
 BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
                                          const BloomChainSettings& settings) const {
     Declared d;

@@ -55,7 +55,6 @@ public:
 
     bool usable() const { return extract_.usable() && down_.usable() && up_.usable(); }
     std::string error() const;
-    std::vector<gl::ReloadableProgram*> programs();
 
     struct Declared {
         BloomChainSettings settings;

@@ -37,7 +37,6 @@ public:
 
     bool usable() const { return pass_.usable(); }
     const std::string& error() const { return pass_.error(); }
-    gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
 
     // "bloom composite": scene + scale * Up(glow) -> bloom.result.
     DeclaredPass declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,

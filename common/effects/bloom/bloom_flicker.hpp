@@ -27,7 +27,6 @@ public:
 
     bool usable() const { return pass_.usable(); }
     const std::string& error() const { return pass_.error(); }
-    gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
 
     // `glow` is this frame's glow, `size` its size. `restart`: last frame's glow is no measure for this
     // one (another step, another chain), so this frame counts as a first frame.

@@ -33,7 +33,6 @@ public:
 
     bool usable() const { return extract_.usable() && gaussian_.usable(); }
     std::string error() const { return extract_.usable() ? gaussian_.error() : extract_.error(); }
-    std::vector<gl::ReloadableProgram*> programs() { return {extract_.reloadable(), gaussian_.reloadable()}; }
 
     struct Declared {
         TextureHandle bright;

@@ -95,7 +95,6 @@ public:
 
     bool usable() const { return pass_.usable(); }
     const std::string& error() const { return pass_.error(); }
-    gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
 
     // Exercise 02: the one way to choose the conversion. The initial state is the identity.
     void setTransform(const ColourTransform& transform) { transform_ = transform; }

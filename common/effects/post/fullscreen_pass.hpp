@@ -33,8 +33,6 @@ public:
     bool usable() const { return program_.usable(); }
     const std::string& error() const { return program_.error(); }
     GLuint program() const { return program_.name(); }
-    // For the runner's reload list (F5 and saved files).
-    gl::ReloadableProgram* reloadable() { return &program_; }
 
     // Binds `textures` to units 0, 1, ... in order, then draws the triangle with the program. The
     // caller has set the program's uniforms (glProgramUniform*, no bind needed).

@@ -46,7 +46,6 @@ public:
 
     bool usable() const { return pass_.usable(); }
     const std::string& error() const { return pass_.error(); }
-    gl::ReloadableProgram* reloadable() { return pass_.reloadable(); }
 
     // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,

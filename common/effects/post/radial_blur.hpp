@@ -67,8 +67,6 @@ public:
 
     bool usable() const { return blur_.usable() && offsets_.usable(); }
     std::string error() const { return blur_.error().empty() ? offsets_.error() : blur_.error(); }
-    gl::ReloadableProgram* blurProgram() { return blur_.reloadable(); }
-    gl::ReloadableProgram* offsetProgram() { return offsets_.reloadable(); }
 
     struct Declared {
         DeclaredPass blur;     // "radial blur" -> blur.result (the format asked for, the output's size)

@@ -38,7 +38,6 @@ public:
 
     bool usable() const { return program_.usable(); }
     const std::string& error() const { return program_.error(); }
-    gl::ReloadableProgram* reloadable() { return &program_; }
 
     // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
     // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs

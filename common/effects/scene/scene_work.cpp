@@ -1,5 +1,7 @@
 #include "effects/scene/scene_work.hpp"
 
+#include "base/log.hpp"
+
 namespace fx {
 
 std::string_view toString(Simulation simulation) {
@@ -30,16 +32,40 @@ SceneFeature featureOf(Simulation simulation) {
     return SceneFeature::skinnedMeshes;
 }
 
-bool SceneWork::require(Pass& pass, SceneFeature feature) const {
-    if (has(feature)) return true;
-    pass.notCalledFor(missingReason(feature));
-    return false;
+namespace {
+
+constexpr SceneFeature kEveryFeature[] = {
+    SceneFeature::skinnedMeshes, SceneFeature::shadows,      SceneFeature::particles,
+    SceneFeature::clouds,        SceneFeature::hdrEmissive,  SceneFeature::physicalLens,
+    SceneFeature::manyLights,    SceneFeature::movingObjects, SceneFeature::bloom,
+    SceneFeature::colorMatrix,   SceneFeature::radialBlur,   SceneFeature::depthOfField,
+    SceneFeature::toneMap,
+};
+
+}  // namespace
+
+std::string requirementName(SceneFeature feature) {
+    return cat("scene feature ", static_cast<int>(feature));
 }
 
-bool SceneWork::requireAll(Pass& pass, std::initializer_list<SceneFeature> features) const {
-    for (SceneFeature feature : features)
-        if (!require(pass, feature)) return false;
-    return true;
+Pass& needs(Pass& pass, SceneFeature feature) {
+    return pass.needs(requirementName(feature));
+}
+
+PassGroup groupNeeding(SceneFeature feature) {
+    PassGroup group;
+    group.needing(requirementName(feature));
+    return group;
+}
+
+const std::string* lacks(const FrameGraph& graph, SceneFeature feature) {
+    return graph.unmetReason(requirementName(feature));
+}
+
+void SceneWork::describeTo(FrameGraph& graph) const {
+    for (SceneFeature feature : kEveryFeature) {
+        if (!has(feature)) graph.setUnmet(requirementName(feature), missingReason(feature));
+    }
 }
 
 void SceneWork::onUpdate(Simulation simulation, std::string name,

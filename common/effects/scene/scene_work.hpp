@@ -4,22 +4,36 @@
 // overlay lists it) but marked "not called for" with the scene's reason, which means it does not run
 // and nothing it would create is allocated. A simulation the scene does not call for is never called.
 //
+// The runner makes one SceneWork for the lesson's scene and tells every frame's graph what the scene
+// lacks (describeTo) before the lesson declares; a pass declares what it is for, and the graph does
+// the rest:
+//
 //   SceneWork work(scene);
 //   work.onUpdate(Simulation::particles, "fire", [&](const SimulationStep& s) { fire.update(s); });
 //   work.update(frame.seconds, frame.deltaSeconds);          // in Lesson::update
 //   ...
-//   auto& pass = graph.addPass("particles", drawParticles).modify(hdr, TextureUsage::ColorAttachment);
-//   work.require(pass, SceneFeature::particles);             // "scene has no particle emitter"
+//   work.describeTo(graph);                                  // the runner, every frame
+//   needs(graph.addPass("particles", draw).modify(hdr, TextureUsage::ColorAttachment),
+//         SceneFeature::particles);                          // "scene has no particle emitter"
 //   if (work.runs(Simulation::particles)) fire.allocate();   // buffers only when there is fire
 #include <functional>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
-#include "render/pass.hpp"
+#include "render/frame_graph.hpp"
 #include "scene/scene_features.hpp"
 
 namespace fx {
+
+// The name a pass gives the graph for a feature it needs ("scene:bloom").
+std::string requirementName(SceneFeature feature);
+// The pass exists for `feature`: when the graph was told the scene lacks it, the pass is not called
+// for, with the scene's reason.
+Pass& needs(Pass& pass, SceneFeature feature);
+// A pass group whose passes all need `feature` (PassGroup::needing).
+PassGroup groupNeeding(SceneFeature feature);
+// Why the frame's scene lacks `feature` (as told to the graph); nullptr when it has it.
+const std::string* lacks(const FrameGraph& graph, SceneFeature feature);
 
 // The per-frame simulations a scene can need.
 enum class Simulation {
@@ -57,10 +71,8 @@ public:
     std::string missingReason(SceneFeature feature) const { return features_.missingReason(feature); }
 
     // --- Passes ---
-    // Marks `pass` not called for when the scene lacks `feature`; returns whether it is called for.
-    bool require(Pass& pass, SceneFeature feature) const;
-    // The same for a pass that needs every feature listed; the first one missing gives the reason.
-    bool requireAll(Pass& pass, std::initializer_list<SceneFeature> features) const;
+    // Tells the graph every feature the scene lacks, with its reason (FrameGraph::setUnmet).
+    void describeTo(FrameGraph& graph) const;
 
     // --- Simulations ---
     bool runs(Simulation simulation) const { return has(featureOf(simulation)); }

@@ -26,7 +26,6 @@ public:
 
     bool usable() const { return program_.usable(); }
     const std::string& error() const { return program_.error(); }
-    gl::ReloadableProgram* reloadable() { return &program_; }
     GLuint program() const { return program_.name(); }
 
     // Declares "scene" (scene.color RGBA16F, scene.depth Depth32F, the output's size). Skinned objects

@@ -149,10 +149,6 @@ std::string ShadowMap::error() const {
     return {};
 }
 
-std::vector<gl::ReloadableProgram*> ShadowMap::programs() {
-    return {&static_, &skinned_, &skinnedGrouped_, &depthView_};
-}
-
 const gl::Program& ShadowMap::skinnedProgram(SkinningProduct product) const {
     return product == SkinningProduct::parenthesised ? skinned_.program() : skinnedGrouped_.program();
 }

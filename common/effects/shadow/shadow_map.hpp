@@ -124,7 +124,6 @@ public:
 
     bool usable() const;
     std::string error() const;
-    std::vector<gl::ReloadableProgram*> programs();
 
     // Declares the shadow pass. `settings` comes from the light's shadow block (a lesson may override
     // mapSize and filterTaps: mapSize is clamped to [1, 8192], filterTaps to [1, 64]). The light view

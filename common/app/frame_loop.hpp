@@ -1,0 +1,60 @@
+#pragma once
+// The frames of a run: input, reload, the lesson's update and frame, the overlay on top, screenshots,
+// and what the last frame leaves for the captures and the report.
+#include <chrono>
+#include <vector>
+
+#include "app/frame_renderer.hpp"
+#include "app/run_report.hpp"
+#include "app/run_session.hpp"
+#include "app/window_input.hpp"
+#include "gl/program.hpp"
+#include "ui/overlay.hpp"
+
+namespace fx {
+
+// What the run has seen, for the captures and the report.
+struct RunRecord {
+    RunFacts facts;
+    FrameReport lastReport;
+    std::vector<CapturedTexture> lastTextures;
+    ByteImage lastFinalBytes;
+    FloatImage lastFinal;
+    FrameInfo lastFrame;  // the last frame the lesson built (its facts go in the report)
+};
+
+class FrameLoop {
+public:
+    // overlay: nullptr when the run draws none.
+    FrameLoop(RunSession& session, const RunPlan& plan, Context& context, FrameRenderer& renderer,
+              WindowInput& input, Overlay* overlay, gl::ProgramRegistry& programs);
+
+    // Runs plan.frames frames, or until the window closes when that is 0.
+    void run();
+    RunRecord& record() { return record_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    void takeKeys(Clock::time_point now);
+    FrameInfo frameInfo(std::uint64_t index, double delta, Size2D extent) const;
+    void drawOverlay(const FrameInfo& frame, const FrameGraph& graph, const FrameReport& report,
+                     double delta);
+    void keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bool screenshot);
+
+    RunSession& s_;
+    const RunPlan& plan_;
+    Context& context_;
+    FrameRenderer& renderer_;
+    WindowInput& input_;
+    Overlay* overlay_;
+    gl::ProgramRegistry& programs_;
+    bool overlayVisible_ = false;
+    bool screenshotAsked_ = false;
+    bool inspectChecked_ = false;  // --inspect names are checked against the first frame's graph
+    int screenshotCount_ = 0;
+    Clock::time_point lastReloadCheck_;
+    RunRecord record_;
+};
+
+}  // namespace fx

@@ -1,0 +1,37 @@
+#pragma once
+// What a lesson computes or measures about its frame, in one list: the overlay shows it under the
+// lesson's panel and the run report writes it under "facts". A lesson fills it once
+// (Lesson::facts); no fact is computed twice.
+#include <string>
+#include <vector>
+
+namespace fx {
+
+struct Fact {
+    std::string name;   // the report's key ("uniformLookupsLastFrame"); smoke scripts read some
+    std::string value;  // "true" and "false" become JSON booleans in the report
+    std::string label;  // the panel's words; empty: the name
+    bool shown = true;  // false: for the report and the smoke checks only
+};
+
+class Facts {
+public:
+    // A fact shown in the panel (as "label: value") and written to the report.
+    void add(std::string name, std::string value, std::string label = {});
+    void add(std::string name, const char* value, std::string label = {}) {
+        add(std::move(name), std::string(value), std::move(label));
+    }
+    void add(std::string name, bool value, std::string label = {});
+    // A fact for the report and the smoke checks only ("expectErrorsInStep").
+    void check(std::string name, std::string value);
+    void check(std::string name, const char* value) { check(std::move(name), std::string(value)); }
+    void check(std::string name, bool value);
+
+    const std::vector<Fact>& list() const { return facts_; }
+    const std::string* find(const std::string& name) const;
+
+private:
+    std::vector<Fact> facts_;
+};
+
+}  // namespace fx
