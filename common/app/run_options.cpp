@@ -140,6 +140,12 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args) {
                 else return Error{cat("--timing: expected one of gpu, fenced, off, auto; got \"", v, "\"")};
                 return Status::success();
             });
+        } else if (flag == "--lang") {
+            status = withValue([&](const std::string& v) -> Status {
+                if (v != "en" && v != "ja") return Error{cat("--lang: expected en or ja, got \"", v, "\"")};
+                o.language = v;
+                return Status::success();
+            });
         } else {
             status = Error{cat("unknown option \"", flag, "\" (see --help)")};
         }
@@ -173,7 +179,10 @@ std::string runOptionsHelp(const std::string& program) {
   --bench-frames N      with --bench: measured frames per setting (default 5; the median is kept)
   --bench-values N      with --bench: only the first N values of each knob
   --bench-out DIR       with --bench: where the results go
-  --list-steps          print the lesson's steps and exit
+  --lang LANG           the language of the lesson's text: en (lesson.md, the default) or ja
+                        (lesson.ja.md, English for a step it lacks)
+  --list-steps          print the lesson's steps with their text from lesson.md and exit (an error
+                        when lesson.md does not match the steps; with --lang ja, lesson.ja.md too)
   --list-params         print the lesson's parameters with their ranges and exit
   --help                this text
 

@@ -36,6 +36,7 @@ struct RunOptions {
     int benchFrames = 5;                  // --bench-frames N: measured frames per setting
     int benchValues = 0;                  // --bench-values N: only the first N values of each knob
     std::filesystem::path benchOut;       // --bench-out DIR (default out/bench/<NN-name>)
+    std::string language = "en";          // --lang en|ja: the lesson text's language
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

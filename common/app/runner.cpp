@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 
@@ -11,6 +12,7 @@
 #include "app/capture.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/lesson_listing.hpp"
+#include "app/lesson_text_files.hpp"
 #include "app/window_input.hpp"
 #include "app/run_options.hpp"
 #include "app/run_report.hpp"
@@ -114,6 +116,12 @@ int run(Session& s, const std::string& exe) {
         std::unique_ptr<Overlay> overlay;
         if (!headless || o.overlayHeadless) overlay = std::make_unique<Overlay>(context->window());
         bool overlayVisible = headless ? o.overlayHeadless : o.overlay;
+        // The steps' text from lesson.md (or lesson.ja.md), for the overlay; read again when saved.
+        std::optional<LessonTextFiles> lessonText;
+        if (overlay) {
+            lessonText.emplace(lessonSourceFolder(s.lesson.info()), s.lesson.steps(), o.language);
+            (void)lessonText->reloadIfChanged();
+        }
         if (overlay && !o.inspect.empty()) {
             // --inspect NAME with the overlay shows that texture in the inspector from the start.
             overlay->inspector().setOpen(true);
@@ -159,6 +167,7 @@ int run(Session& s, const std::string& exe) {
             if (!headless && frameStart - lastReloadCheck > std::chrono::milliseconds(500)) {
                 lastReloadCheck = frameStart;
                 for (auto* p : s.lesson.programs()) p->reloadIfChanged();
+                if (lessonText) (void)lessonText->reloadIfChanged();
             }
             if (reloadNow) {
                 for (auto* p : s.lesson.programs()) (void)p->reload();
@@ -200,7 +209,14 @@ int run(Session& s, const std::string& exe) {
                 glViewport(0, 0, extent.width, extent.height);
                 OverlayModel model;
                 model.title = cat(s.lesson.info().number, ". ", s.lesson.info().title);
-                for (auto& st : s.lesson.steps()) model.steps.push_back({st.title, st.text});
+                if (lessonText) {
+                    model.steps = lessonText->steps();
+                    model.textError = lessonText->error();
+                    model.textRevision = lessonText->revision();
+                    model.language = lessonText->language();
+                    model.languages = lessonText->available();
+                    model.setLanguage = [&](const std::string& language) { (void)lessonText->setLanguage(language); };
+                }
                 model.step = &s.step;
                 model.params = &s.params;
                 model.frame = &report;
@@ -263,7 +279,7 @@ int run(Session& s, const std::string& exe) {
         facts.size = {extent.width, extent.height};
         facts.step = s.step + 1;
         auto steps = s.lesson.steps();
-        facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)].title : "";
+        facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)] : "";
         facts.glErrors = gl::debugCounters().errors;
         facts.glExpectedErrors = gl::debugCounters().expectedErrors;
         facts.glWarnings = gl::debugCounters().warnings;
@@ -314,8 +330,9 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
         return 0;
     }
     if (s.options.listSteps) {
-        printSteps(lesson.steps());
-        return 0;
+        LessonTextFiles text(lessonSourceFolder(lesson.info()), lesson.steps(), s.options.language);
+        (void)text.reloadIfChanged();
+        return printSteps(text) ? 0 : 1;
     }
     if (s.options.listParams) {
         printParams(s.params);
