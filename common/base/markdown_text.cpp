@@ -98,6 +98,15 @@ bool breaksAnywhere(char32_t c) {
     return (c >= 0x2E80 && c <= 0x9FFF) || (c >= 0xF900 && c <= 0xFAFF) || (c >= 0xFF00 && c <= 0xFFEF);
 }
 
+// Japanese text broken over two lines joins with no space between the lines; words do.
+bool joinsWithoutSpace(std::string_view before, std::string_view after) {
+    std::size_t last = before.size() - 1;
+    while (last > 0 && (static_cast<unsigned char>(before[last]) & 0xC0) == 0x80) --last;
+    std::size_t length = 0;
+    return !after.empty() && breaksAnywhere(decodeUtf8(before, last, length)) &&
+           breaksAnywhere(decodeUtf8(after, 0, length));
+}
+
 }  // namespace
 
 char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length) {
@@ -270,7 +279,7 @@ std::vector<Block> parseBlocks(std::string_view text) {
             current.kind = BlockKind::Paragraph;
             open = true;
         }
-        if (!pending.empty()) pending += ' ';
+        if (!pending.empty() && !joinsWithoutSpace(pending, content)) pending += ' ';
         pending += content;
     }
     if (inCode) blocks.push_back({BlockKind::CodeBlock, {}, 0, {{Style::Plain, code}}});

@@ -49,6 +49,13 @@ TEST(Markdown, BlocksOfAStep) {
     EXPECT_EQ(styles(blocks[7].spans), "[P:][  |  c]");
 }
 
+TEST(Markdown, JapaneseLinesJoinWithoutASpace) {
+    auto blocks = parseBlocks("大きい\nレベルに足し込みます。\nRGBA8 に\n書く。\nA\nB");
+    ASSERT_EQ(blocks.size(), 1u);
+    // Between Japanese and a Latin word the line break stays a space, as the text writes it inside a line.
+    EXPECT_EQ(blocks[0].spans[0].text, "大きいレベルに足し込みます。 RGBA8 に書く。 A B");
+}
+
 TEST(Markdown, EmptyTextHasNoBlocks) {
     EXPECT_TRUE(parseBlocks("").empty());
     EXPECT_TRUE(parseBlocks("\n\n  \n").empty());
