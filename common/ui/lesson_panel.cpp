@@ -46,9 +46,11 @@ void drawParams(ParamSet& params) {
 namespace {
 
 // The step's text scrolls in a region of its own, so the parameters under it stay in reach: as tall
-// as the text was last frame, at most about half the window.
-void drawStepText(const std::string& text) {
+// as the text was last frame, at most about half the window. Each step has its own region, so a new
+// step starts at the top of its text.
+void drawStepText(const std::string& text, int step) {
     if (text.empty()) return;
+    ImGui::PushID(step);
     ImGuiStorage* storage = ImGui::GetStateStorage();
     const ImGuiID key = ImGui::GetID("step text height");
     const float wanted = storage->GetFloat(key, 8.0f * ImGui::GetTextLineHeightWithSpacing());
@@ -57,6 +59,7 @@ void drawStepText(const std::string& text) {
     drawMarkdown(text);
     storage->SetFloat(key, ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y);
     ImGui::EndChild();
+    ImGui::PopID();
 }
 
 }  // namespace
@@ -83,7 +86,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         ImGui::PopStyleColor();
         if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
         ImGui::PopTextWrapPos();
-        drawStepText(s.text);
+        drawStepText(s.text, step);
     }
     if (!m.textError.empty()) {
         ImGui::TextColored(ui_style::kError, "Lesson text (the steps show what was read before, or titles only):");

@@ -8,6 +8,7 @@
 
 #include "base/log.hpp"
 #include "gl/gl.hpp"
+#include "gl/object.hpp"
 #include "ui/gl_state_scope.hpp"
 #include "ui/lesson_panel.hpp"
 #include "ui/pass_table.hpp"
@@ -101,6 +102,11 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
     if (m.textRevision != fontsForRevision_) prepareFonts(m);
     ImGuiIO& io = ImGui::GetIO();
     ImGui_ImplOpenGL3_NewFrame();
+    if (!fontTextureLabelled_ && io.Fonts->TexID) {
+        // The backend makes the font texture in its first NewFrame; overlay_fonts labels later ones.
+        gl::labelObject(GL_TEXTURE, GLuint(reinterpret_cast<std::uintptr_t>(io.Fonts->TexID)), "ui.font_atlas");
+        fontTextureLabelled_ = true;
+    }
     if (window_) {
         ImGui_ImplGlfw_NewFrame();
     } else {

@@ -55,6 +55,7 @@ private:
     OverlayFonts fonts_;
     int fontsForRevision_ = -1;   // the text revision the font atlas was made for
     std::string fontError_;       // shown in the lesson window while it stands
+    bool fontTextureLabelled_ = false;
     std::optional<bool> requestFrameOpen_;
     bool requestCostTab_ = false;
 };
