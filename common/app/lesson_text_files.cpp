@@ -104,8 +104,8 @@ void LessonTextFiles::read() {
                 translation_[i] = *(*byStep)[i];
                 hasTranslation_[i] = true;
             }
-            log::info("lesson text: ", translated.string(), " translates ", sections->size(), " of ", titles_.size(),
-                      " steps; the others show lesson.md's English");
+            log::info("lesson text: ", translated.string(), " translates ", sections->size(), " of ",
+                      titles_.size(), " steps; the others show lesson.md's English");
         }
     }
 

@@ -42,7 +42,8 @@ TEST(LessonTextFiles, ReadsTheStepsAndKeepsTheLastGoodTextOnAnError) {
     const int revision = text.revision();
     write(dir.path() / "lesson.md", "## Step 1: First\n\nOne, edited.\n");  // step 2 gone
     EXPECT_TRUE(text.reloadIfChanged());
-    EXPECT_NE(text.error().find("lesson.md: step 2 (\"Second\") has no section"), std::string::npos) << text.error();
+    EXPECT_NE(text.error().find("lesson.md: step 2 (\"Second\") has no section"), std::string::npos)
+        << text.error();
     EXPECT_EQ(text.steps()[0].text, "One.");  // what was read before stays
     EXPECT_GT(text.revision(), revision);
 
@@ -92,7 +93,8 @@ TEST(LessonTextFiles, ABrokenTranslationIsAnErrorNamingItsFile) {
     write(dir.path() / "lesson.ja.md", "## Step 3: 三\n\n三。\n");
     LessonTextFiles text(dir.path(), kTitles, "ja");
     (void)text.reloadIfChanged();
-    EXPECT_NE(text.error().find("lesson.ja.md:1: step 3: the lesson has 2 steps"), std::string::npos) << text.error();
+    EXPECT_NE(text.error().find("lesson.ja.md:1: step 3: the lesson has 2 steps"), std::string::npos)
+        << text.error();
     EXPECT_EQ(text.steps()[1].text, "Two.");  // English, with the note
 }
 

@@ -52,12 +52,14 @@ TEST(LessonText, NoSectionsNamesTheFirstStep) {
 }
 
 TEST(LessonText, AMissingLastStepIsNamed) {
-    EXPECT_NE(lessonError("## Step 1: First\na\n## Step 2: Second\nb\n").find("step 3 (\"Third\") has no section"),
-              std::string::npos);
+    EXPECT_NE(
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n").find("step 3 (\"Third\") has no section"),
+        std::string::npos);
 }
 
 TEST(LessonText, DuplicateStep) {
-    std::string e = lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 2: Second\nc\n## Step 3: Third\nd\n");
+    std::string e =
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 2: Second\nc\n## Step 3: Third\nd\n");
     EXPECT_EQ(e, "lesson.md:5: step 2 comes again after step 2; each step has one section, in order");
 }
 
@@ -67,8 +69,11 @@ TEST(LessonText, OutOfOrderStep) {
 }
 
 TEST(LessonText, ExtraStep) {
-    std::string e = lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 3: Third\nc\n## Step 4: Fourth\nd\n");
-    EXPECT_EQ(e, "lesson.md:7: step 4: the lesson has 3 steps; remove this section or add the step to the lesson's code");
+    std::string e =
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 3: Third\nc\n## Step 4: Fourth\nd\n");
+    EXPECT_EQ(e,
+              "lesson.md:7: step 4: the lesson has 3 steps; remove this section or add the step to the "
+              "lesson's code");
 }
 
 TEST(LessonText, EmptyText) {
@@ -82,8 +87,8 @@ TEST(LessonText, TitleDifferentFromTheCode) {
 }
 
 TEST(LessonText, MalformedHeadingsNameTheLine) {
-    for (const char* heading : {"## Step two: x", "## Step 2 x", "## Step 2:", "## Step 0: x", "## Steps 2: x",
-                                "## Step 2a: x"}) {
+    for (const char* heading :
+         {"## Step two: x", "## Step 2 x", "## Step 2:", "## Step 0: x", "## Steps 2: x", "## Step 2a: x"}) {
         auto sections = parseStepSections(std::string("Intro\n") + heading + "\ntext\n", "l.md");
         ASSERT_FALSE(sections.ok()) << heading;
         EXPECT_NE(sections.error().find("l.md:2: "), std::string::npos) << sections.error();

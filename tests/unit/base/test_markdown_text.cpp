@@ -24,14 +24,16 @@ TEST(Markdown, InlineStyles) {
     EXPECT_EQ(styles(parseSpans("a **bold** and `T*J*p` and *soft* [link](x.md) ![pic](p.png) \\*x")),
               "[a ][B:bold][ and ][C:T*J*p][ and ][I:soft][ link ][P:pic][ *x]");
     // A star inside a product is not emphasis; an unclosed mark stays as it is.
-    EXPECT_EQ(styles(parseSpans("T*J and (T*J)*p cost `64` **open")), "[T*J and (T*J)*p cost ][C:64][ **open]");
+    EXPECT_EQ(styles(parseSpans("T*J and (T*J)*p cost `64` **open")),
+              "[T*J and (T*J)*p cost ][C:64][ **open]");
     // Bold drops the marks inside it: it is one colour.
     EXPECT_EQ(styles(parseSpans("**Seed `000`'s bloom.**")), "[B:Seed 000's bloom.]");
 }
 
 TEST(Markdown, BlocksOfAStep) {
     auto blocks = parseBlocks(
-        "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  kept\n```\n### Sub\n"
+        "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  "
+        "kept\n```\n### Sub\n"
         "| a | b |\n|---|---|\n| ![](x.png) | c |\n");
     ASSERT_EQ(blocks.size(), 8u);
     EXPECT_EQ(blocks[0].kind, BlockKind::Paragraph);
