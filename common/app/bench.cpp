@@ -28,7 +28,7 @@ double median(std::vector<double> values) {
 class CopyFrame final : public Lesson {
 public:
     LessonInfo info() const override { return {0, "copy", "one full-screen copy", ""}; }
-    std::vector<LessonStep> steps() const override { return {{"copy", ""}}; }
+    std::vector<std::string> steps() const override { return {"copy"}; }
     Status init(const Scene&) override {
         copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "bench copy"});
         vao_ = gl::createVertexArray("bench copy triangle");

@@ -6,6 +6,7 @@
 
 #include "app/bench.hpp"
 #include "app/facts_panel.hpp"
+#include "app/lesson_listing.hpp"
 #include "app/run_options.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
@@ -34,6 +35,11 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
     facts.timingMethod = std::string(toString(renderer.timer().method()));
     facts.timingReason = renderer.timer().reason();
     facts.scene = s_.scene.file.string();
+    // The steps' text from lesson.md (or lesson.ja.md), for the overlay; read again when saved.
+    if (overlay_) {
+        lessonText_.emplace(lessonSourceFolder(s_.lesson->info()), s_.lesson->steps(), s_.options.language);
+        (void)lessonText_->reloadIfChanged();
+    }
 }
 
 void FrameLoop::run() {
@@ -115,6 +121,7 @@ void FrameLoop::takeKeys(Clock::time_point now) {
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
         lastReloadCheck_ = now;
         programs_.reloadChanged();
+        if (lessonText_) (void)lessonText_->reloadIfChanged();
     }
     if (keys.reload) {
         programs_.reloadAll();
@@ -142,7 +149,14 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
     Lesson& lesson = *s_.lesson;
     OverlayModel model;
     model.title = cat(lesson.info().number, ". ", lesson.info().title);
-    for (auto& st : lesson.steps()) model.steps.push_back({st.title, st.text});
+    if (lessonText_) {
+        model.steps = lessonText_->steps();
+        model.textError = lessonText_->error();
+        model.textRevision = lessonText_->revision();
+        model.language = lessonText_->language();
+        model.languages = lessonText_->available();
+        model.setLanguage = [this](const std::string& language) { (void)lessonText_->setLanguage(language); };
+    }
     model.step = &s_.step;
     model.params = &s_.params;
     model.frame = &report;

@@ -2,8 +2,10 @@
 // The frames of a run: input, reload, the lesson's update and frame, the overlay on top, screenshots,
 // and what the last frame leaves for the captures and the report.
 #include <chrono>
+#include <optional>
 #include <vector>
 
+#include "app/lesson_text_files.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/run_report.hpp"
 #include "app/run_session.hpp"
@@ -55,6 +57,7 @@ private:
     int screenshotCount_ = 0;
     Clock::time_point lastReloadCheck_;
     RunRecord record_;
+    std::optional<LessonTextFiles> lessonText_;  // with an overlay only: the steps' text
 };
 
 }  // namespace fx

@@ -26,11 +26,6 @@ struct LessonInfo {
     std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"; "": an empty scene
 };
 
-struct LessonStep {
-    std::string title;
-    std::string text;  // a few sentences: what this step shows and what to look at
-};
-
 // The mouse, in framebuffer pixels with the origin at the bottom left (as GL counts them).
 struct Pointer {
     bool present = false;   // a window with the cursor inside it
@@ -59,7 +54,10 @@ public:
     virtual ~Lesson() = default;
 
     virtual LessonInfo info() const = 0;
-    virtual std::vector<LessonStep> steps() const = 0;
+    // The steps' titles, in the chapter's order. The steps drive the code, so the list lives here;
+    // each step's text is its "## Step N: <title>" section of lesson.md (app/lesson_text_files.hpp),
+    // and a heading whose title differs from this one is an error.
+    virtual std::vector<std::string> steps() const = 0;
     // Called once before the context exists, so --param and --list-params work without GL.
     virtual void declareParams(ParamSet& params) { (void)params; }
 

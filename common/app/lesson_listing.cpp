@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "base/log.hpp"
+#include "base/paths.hpp"
 
 namespace fx {
 
@@ -15,10 +16,28 @@ std::string lessonFolderName(const LessonInfo& info) {
 
 std::string executableName(const LessonInfo& info) { return "fxlab-" + lessonFolderName(info); }
 
-void printSteps(const std::vector<LessonStep>& steps) {
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        std::cout << i + 1 << ". " << steps[i].title << "\n   " << steps[i].text << "\n";
+std::filesystem::path lessonSourceFolder(const LessonInfo& info) {
+    std::string folder = lessonFolderName(info);
+    for (char& c : folder) {
+        if (c == '-') c = '_';
     }
+    return projectRoot() / "lessons" / folder;
+}
+
+bool printSteps(const LessonTextFiles& text) {
+    const std::vector<LessonStep>& steps = text.steps();
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::cout << i + 1 << ". " << steps[i].title << "\n";
+        if (!steps[i].note.empty()) std::cout << "   (" << steps[i].note << ")\n";
+        std::size_t start = 0;
+        while (start < steps[i].text.size()) {
+            std::size_t end = steps[i].text.find('\n', start);
+            if (end == std::string::npos) end = steps[i].text.size();
+            std::cout << "   " << std::string_view(steps[i].text).substr(start, end - start) << "\n";
+            start = end + 1;
+        }
+    }
+    return text.error().empty();  // the error was logged when the files were read
 }
 
 void printParams(const ParamSet& params) {

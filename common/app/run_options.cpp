@@ -8,6 +8,7 @@
 #include <set>
 #include <string_view>
 
+#include "app/lesson_text_files.hpp"
 #include "app/window_input.hpp"
 #include "base/log.hpp"
 #include "render/frame_report.hpp"
@@ -149,6 +150,13 @@ Status addInspect(RunOptions& o, const FlagUse& use) {
     return Status::success();
 }
 
+// The languages lesson text comes in (lesson_text_files.hpp), each its own word.
+std::vector<Choice<std::string>> languageChoices() {
+    std::vector<Choice<std::string>> choices;
+    for (const std::string& language : lessonTextLanguages()) choices.push_back({language, language});
+    return choices;
+}
+
 // --- Every flag, once: the order here is the order of --help ---
 
 const std::vector<Flag>& flags() {
@@ -176,7 +184,7 @@ const std::vector<Flag>& flags() {
         {.name = "--lang",
          .value = "en|ja",
          .help = "the language of the lesson text: en English (default), ja Japanese",
-         .apply = oneOf<std::string>(&RunOptions::language, {{"en", "en"}, {"ja", "ja"}})},
+         .apply = oneOf<std::string>(&RunOptions::language, languageChoices())},
         {.name = "--param",
          .value = "NAME=VALUE",
          .help = "set a parameter, checked against its type and range (see --list-params)",

@@ -13,7 +13,7 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
     facts.size = context.framebufferSize();
     facts.step = s.step + 1;
     auto steps = s.lesson->steps();
-    facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)].title : "";
+    facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)] : "";
     facts.glErrors = gl::debugCounters().errors;
     facts.glExpectedErrors = gl::debugCounters().expectedErrors;
     facts.glWarnings = gl::debugCounters().warnings;

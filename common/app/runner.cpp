@@ -6,6 +6,7 @@
 #include "app/bench_mode.hpp"
 #include "app/frame_loop.hpp"
 #include "app/lesson_listing.hpp"
+#include "app/lesson_text_files.hpp"
 #include "app/run_context.hpp"
 #include "app/run_results.hpp"
 #include "base/file_io.hpp"
@@ -79,8 +80,9 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         return 0;
     }
     if (s.options.listSteps) {
-        printSteps(lesson.steps());
-        return 0;
+        LessonTextFiles text(lessonSourceFolder(lesson.info()), lesson.steps(), s.options.language);
+        (void)text.reloadIfChanged();
+        return printSteps(text) ? 0 : 1;
     }
     if (s.options.listParams) {
         printParams(s.params);

@@ -1,7 +1,11 @@
 #include "ui/lesson_panel.hpp"
 
+#include <algorithm>
+#include <string>
+
 #include <imgui.h>
 
+#include "ui/markdown_view.hpp"
 #include "ui/ui_style.hpp"
 
 namespace fx {
@@ -39,6 +43,27 @@ void drawParams(ParamSet& params) {
     }
 }
 
+namespace {
+
+// The step's text scrolls in a region of its own, so the parameters under it stay in reach: as tall
+// as the text was last frame, at most about half the window. Each step has its own region, so a new
+// step starts at the top of its text.
+void drawStepText(const std::string& text, int step) {
+    if (text.empty()) return;
+    ImGui::PushID(step);
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID key = ImGui::GetID("step text height");
+    const float wanted = storage->GetFloat(key, 8.0f * ImGui::GetTextLineHeightWithSpacing());
+    const float most = std::max(ImGui::GetWindowHeight() * 0.5f, 6.0f * ImGui::GetTextLineHeightWithSpacing());
+    ImGui::BeginChild("step text", ImVec2(0.0f, std::min(wanted, most)), false);
+    drawMarkdown(text);
+    storage->SetFloat(key, ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y);
+    ImGui::EndChild();
+    ImGui::PopID();
+}
+
+}  // namespace
+
 void drawLessonWindowContents(const OverlayModel& m) {
     if (m.step && !m.steps.empty()) {
         int& step = *m.step;
@@ -47,10 +72,26 @@ void drawLessonWindowContents(const OverlayModel& m) {
         if (ImGui::ArrowButton("prev", ImGuiDir_Left) && step > 0) --step;
         ImGui::SameLine();
         if (ImGui::ArrowButton("next", ImGuiDir_Right) && step + 1 < int(m.steps.size())) ++step;
-        const OverlayStep& s = m.steps[std::size_t(step)];
-        ImGui::TextColored(ui_style::kHeading, "%s", s.title.c_str());
+        if (m.languages.size() > 1 && m.setLanguage) {
+            // The text's language: lesson.md or its translation (--lang on the command line).
+            for (const std::string& language : m.languages) {
+                ImGui::SameLine();
+                if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
+            }
+        }
+        const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(s.text.c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
+        ImGui::TextUnformatted(s.title.c_str());
+        ImGui::PopStyleColor();
+        if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
+        ImGui::PopTextWrapPos();
+        drawStepText(s.text, step);
+    }
+    if (!m.textError.empty()) {
+        ImGui::TextColored(ui_style::kError, "Lesson text (the steps show what was read before, or titles only):");
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(m.textError.c_str());
         ImGui::PopTextWrapPos();
     }
     if (!m.shaderErrors.empty()) {

@@ -8,9 +8,11 @@
 
 #include "base/log.hpp"
 #include "gl/gl.hpp"
+#include "gl/object.hpp"
 #include "ui/gl_state_scope.hpp"
 #include "ui/lesson_panel.hpp"
 #include "ui/pass_table.hpp"
+#include "ui/ui_style.hpp"
 
 namespace fx {
 namespace {
@@ -67,6 +69,28 @@ void Overlay::showFramePanel(bool open, bool costTab) {
     requestCostTab_ = costTab;
 }
 
+void Overlay::prepareFonts(const OverlayModel& m) {
+    // Between frames: the atlas holds the glyphs of every step's text (so stepping needs no reload).
+    fontsForRevision_ = m.textRevision;
+    std::vector<std::string_view> texts;
+    for (const LessonStep& s : m.steps) {
+        texts.push_back(s.title);
+        texts.push_back(s.text);
+        texts.push_back(s.note);
+    }
+    texts.push_back(m.textError);
+    if (Status loaded = fonts_.prepare(texts); !loaded) {
+        log::error(loaded.error());
+        fontError_ = loaded.error();
+        if (m.language != "en" && m.setLanguage) {
+            fontError_ += "; showing the English text";
+            m.setLanguage("en");
+        }
+    } else {
+        fontError_.clear();
+    }
+}
+
 void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSeconds) {
     if (!ok() || width <= 0 || height <= 0) return;
     // A sweep renders frames of its own: it runs before this frame's ImGui frame starts, with the
@@ -75,8 +99,14 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         GlStateScope keep;
         cost_.runPending(m.measureKnobs);
     }
+    if (m.textRevision != fontsForRevision_) prepareFonts(m);
     ImGuiIO& io = ImGui::GetIO();
     ImGui_ImplOpenGL3_NewFrame();
+    if (!fontTextureLabelled_ && io.Fonts->TexID) {
+        // The backend makes the font texture in its first NewFrame; overlay_fonts labels later ones.
+        gl::labelObject(GL_TEXTURE, GLuint(reinterpret_cast<std::uintptr_t>(io.Fonts->TexID)), "ui.font_atlas");
+        fontTextureLabelled_ = true;
+    }
     if (window_) {
         ImGui_ImplGlfw_NewFrame();
     } else {
@@ -93,6 +123,7 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         ImGui::SetNextWindowSize(layout.lessonSize, ImGuiCond_FirstUseEver);
         ImGui::Begin(m.title.empty() ? "fxlab" : m.title.c_str());
         drawLessonWindowContents(m);
+        if (!fontError_.empty()) ImGui::TextColored(ui_style::kWarning, "%s", fontError_.c_str());
         ImGui::End();
 
         ImGui::SetNextWindowPos(layout.framePos, ImGuiCond_FirstUseEver);

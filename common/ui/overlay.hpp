@@ -15,6 +15,7 @@
 #include "ui/cost_panel.hpp"
 #include "ui/imgui_backend.hpp"
 #include "ui/inspector.hpp"
+#include "ui/overlay_fonts.hpp"
 #include "ui/overlay_model.hpp"
 
 struct GLFWwindow;
@@ -45,10 +46,16 @@ public:
     void showFramePanel(bool open, bool costTab = false);
 
 private:
+    void prepareFonts(const OverlayModel& model);
+
     GLFWwindow* window_;
     ImGuiBackends started_;
     std::unique_ptr<Inspector> inspector_;
     CostPanel cost_;
+    OverlayFonts fonts_;
+    int fontsForRevision_ = -1;   // the text revision the font atlas was made for
+    std::string fontError_;       // shown in the lesson window while it stands
+    bool fontTextureLabelled_ = false;
     std::optional<bool> requestFrameOpen_;
     bool requestCostTab_ = false;
 };

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/lesson_text.hpp"
 #include "base/params.hpp"
 #include "render/frame_graph.hpp"
 #include "render/frame_report.hpp"
@@ -13,14 +14,15 @@
 
 namespace fx {
 
-struct OverlayStep {
-    std::string title, text;
-};
-
 struct OverlayModel {
     std::string title;
-    std::vector<OverlayStep> steps;
-    int* step = nullptr;  // 0-based, the overlay may change it
+    std::vector<LessonStep> steps;  // title and markdown text of each, from lesson.md (or its translation)
+    int* step = nullptr;            // 0-based, the overlay may change it
+    std::string textError;          // what is wrong with lesson.md, shown until fixed
+    int textRevision = 0;           // changes when the steps' text does (the overlay loads glyphs then)
+    std::string language = "en";    // of the text shown; languages: those the lesson has a file for
+    std::vector<std::string> languages;
+    std::function<void(const std::string&)> setLanguage;
     ParamSet* params = nullptr;
     const FrameReport* frame = nullptr;
     // The frame's graph while its inspected textures are still held (the inspector reads them).

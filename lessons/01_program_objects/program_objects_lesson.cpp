@@ -33,26 +33,13 @@ LessonInfo ProgramObjectsLesson::info() const {
     return {1, "program-objects", "Program objects", "scenes/01_program_objects.json"};
 }
 
-std::vector<LessonStep> ProgramObjectsLesson::steps() const {
+std::vector<std::string> ProgramObjectsLesson::steps() const {
     return {
-        {"Copy-pasted programs",
-         "Programs (lit, unlit, normals) built by the same copy-pasted compile and link lines, with no "
-         "error checks. It works until a shader has a typo: then the object turns black and nothing says why."},
-        {"A program object with error checks",
-         "One owner builds every program: it checks compile and link status and reports the log with the real "
-         "file and line, also inside #include files. Pick a broken shader under Parameters (broken_shader) and "
-         "read its log here instead of staring at a black screen; the last good program keeps drawing."},
-        {"Look uniform locations up once",
-         "A grid of objects, each drawn with its own uniforms. glGetUniformLocation compares strings; asking it "
-         "for every draw costs CPU time every frame. Toggle lookup_every_draw and compare the time below with "
-         "the cached locations the program object found when it was built."},
-        {"Parentheses in the skinning product",
-         "T*J*p is evaluated left to right: (T*J)*p costs a mat4*mat4 (64 mul, 48 add) and a mat4*vec4 "
-         "(16 mul, 12 add) per vertex. T*(J*p) costs two mat4*vec4: 32 mul and 24 add, for the same result. Both "
-         "run on a sphere with many vertices; their pass times are in the pass table."},
-        {"Reload while running",
-         "Edit shaders/lessons/01_program_objects/lit.frag while the lesson runs: it reloads when saved (or on "
-         "F5). Break it and the last good program keeps running while its error shows here."},
+        "Copy-pasted programs",
+        "A program object with error checks",
+        "Look uniform locations up once",
+        "Parentheses in the skinning product",
+        "Reload while running",
     };
 }
 

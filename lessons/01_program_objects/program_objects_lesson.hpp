@@ -12,7 +12,7 @@ namespace lesson01 {
 class ProgramObjectsLesson final : public fx::Lesson {
 public:
     fx::LessonInfo info() const override;
-    std::vector<fx::LessonStep> steps() const override;
+    std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;

@@ -25,31 +25,12 @@ LessonInfo SkinnedShadowsLesson::info() const {
     return {2, "skinned-shadows", "Skeletal-mesh shadows", "scenes/02_skinned_shadows.json"};
 }
 
-std::vector<LessonStep> SkinnedShadowsLesson::steps() const {
+std::vector<std::string> SkinnedShadowsLesson::steps() const {
     return {
-        {"Only static meshes cast shadows",
-         "A low sun draws a depth-only shadow map (shadow.map, 2048x2048, 32-bit float depth) from a light "
-         "frustum fitted to the scene. The lit pass looks each pixel up in it: normal-offset bias against "
-         "acne, and PCF (filter_taps comparisons on a disc) for a soft edge. The boxes and pillars cast; the "
-         "walking character does not, because the shadow program cannot apply joint matrices, so skinned "
-         "objects are skipped. Inspect shadow.map and shadow.depth_metres: no character there."},
-        {"A shadow program for skinned meshes",
-         "A second shadow program: the static shadow vertex shader plus the skinning of the lit skeletal "
-         "shader (joints at attribute 3, weights at 4, joint matrices from the storage buffer at binding 0, "
-         "which every program sees because a buffer belongs to the context). The pass draws every static "
-         "caster first, then switches program once and draws the skinned ones. Depth-only drawing has no "
-         "blending, so the order does not change the map. The character's shadow walks on the ground."},
-        {"T*(J*p) against (T*J)*p, with a crowd",
-         "GLSL multiplies left to right: modelMatrix * J * p is (T*J)*p, a mat4*mat4 (64 mul, 48 add) and a "
-         "mat4*vec4 (16 mul, 12 add) a vertex. T*(J*p) is two mat4*vec4: 32 mul and 24 add, same result. A "
-         "crowd (crowd characters) makes vertex work visible: both products draw the crowd's shadow map every "
-         "frame, and their pass times are below and in the pass table. product_order picks the one shown."},
-        {"The GL error flood, and asking the program",
-         "The skinned draw path uploads the material (base colour, emissive) as it does for the lit shader. "
-         "The skinned shadow program has no such uniforms, so every upload raises GL_INVALID_OPERATION, every "
-         "draw, every frame: the overlay counts them. The fix (material_upload = ask_program) asks the program "
-         "whether it has them: its active uniforms were listed once when it was linked, not looked up by "
-         "string every draw. Location -1 is ignored silently; an unused uniform also reports -1."},
+        "Only static meshes cast shadows",
+        "A shadow program for skinned meshes",
+        "T*(J*p) against (T*J)*p, with a crowd",
+        "The GL error flood, and asking the program",
     };
 }
 

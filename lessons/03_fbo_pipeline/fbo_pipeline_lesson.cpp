@@ -39,34 +39,13 @@ LessonInfo FboPipelineLesson::info() const {
     return {3, "fbo-pipeline", "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json"};
 }
 
-std::vector<LessonStep> FboPipelineLesson::steps() const {
+std::vector<std::string> FboPipelineLesson::steps() const {
     return {
-        {"Straight to the window",
-         "The chapter's Render() before section 3.2: clear the window, set the draw state (depth test and "
-         "blending on), then create the shadow map, then draw 3D into the window. The shader ends with the "
-         "display encoding because the window is the last stop. Shadows work, but look at the pass table: "
-         "the shadow pass declares no state of its own and runs with what the frame set before it."},
-        {"Reordered: the shadows vanish",
-         "Section 3.2 moves the shadow map to the top of the frame, where it belongs: it must be finished "
-         "before the scene reads it. Now it runs before the draw state is set, with what the last frame "
-         "left: the UI queue switched the depth test off, and with the test off GL writes no depth at all. "
-         "The map stays at its clear value, every receiver is lit. The pass table names the state the "
-         "shadow pass inherited: depth test off."},
-        {"Each pass sets the state it depends on",
-         "Section 3.3's fix: the shadow pass enables the depth test and disables blending itself, after "
-         "binding its framebuffer and before clearing. The scene pass does the same for its draw. The "
-         "shadows are back, and the state check finds nothing inherited in any pass."},
-        {"Into a float target, one pass to the window",
-         "Section 3.4: the scene goes into fboMain, a 16-bit float colour target with a depth texture "
-         "(scene.color and scene.depth in the inspector), the size of the window. One full-screen pass "
-         "copies it to the window, and the UI queue draws after it, untouched by any image effect. The "
-         "picture is the same as step 3: the scene shader still encodes for the display, so the target "
-         "holds display values, none above 1."},
-        {"Double gamma, and one output transform",
-         "Image processing needs linear light, so the full-screen pass now encodes for the display. Left of "
-         "the divider the scene shader still encodes too: encoded twice, the picture is washed out and grey. "
-         "Right of it, the fix: the scene shader writes linear HDR (values above 1 survive in scene.color) "
-         "and the output transform at the end encodes once. Move the divider with washout_split."},
+        "Straight to the window",
+        "Reordered: the shadows vanish",
+        "Each pass sets the state it depends on",
+        "Into a float target, one pass to the window",
+        "Double gamma, and one output transform",
     };
 }
 

@@ -44,29 +44,12 @@ LessonInfo ColourMatrixLesson::info() const {
     return {4, "colour-matrix", "Colour matrix", "scenes/04_colour_matrix.json"};
 }
 
-std::vector<LessonStep> ColourMatrixLesson::steps() const {
+std::vector<std::string> ColourMatrixLesson::steps() const {
     return {
-        {"Render into a float target; one output transform",
-         "The scene is drawn in linear light into scene.color (RGBA16F, values above 1 kept), a full-screen "
-         "pass multiplies every pixel by the identity matrix into colour.graded, and one output transform "
-         "encodes for the display at the very end. The scene shader applies no gamma: encoding there as well "
-         "would give the chapter's washed-out double gamma. Left of the divider (drag it) is the picture "
-         "before the matrix, right of it after: here they are the same."},
-        {"Grayscale: Rec.709 luma",
-         "Every output channel becomes 0.2126 r + 0.7152 g + 0.0722 b. The weights add up to 1, so white "
-         "stays white; green comes out the brightest grey and blue the darkest. Pure red gives 0.2126 in "
-         "every channel (127 on screen with the sRGB curve; 126 with the chapter's 1/2.2 power). If red came "
-         "out (0.2126, 0.7152, 0.0722), the matrix was uploaded transposed."},
-        {"Sepia: the chapter's matrix",
-         "Rows (0.346, 0.678, 0.151), (0.278, 0.546, 0.124), (0.196, 0.385, 0.089): a luma-like weighting "
-         "times a warm tint. The rows add up to 1.175, 0.948 and 0.670, so white becomes (1.175, 0.948, "
-         "0.670) and shows as (255, 249, 214): red clips."},
-        {"Beyond a 3x3: an affine transform",
-         "A matrix maps black to black (M * 0 = 0), so no 3x3 can make a negative, which must map black to "
-         "white. Adding an offset does it: rgb' = M rgb + o, with invert = (-I, 1). Pick `preset`: "
-         "invert_3x3 (-I alone) turns everything black, invert works; saturation, hue rotation and channel "
-         "swap are plain matrices, brightness needs the offset. Edit the matrix in the panel below; negative "
-         "results are clamped to 0."},
+        "Render into a float target; one output transform",
+        "Grayscale: Rec.709 luma",
+        "Sepia: the chapter's matrix",
+        "Beyond a 3x3: an affine transform",
     };
 }
 

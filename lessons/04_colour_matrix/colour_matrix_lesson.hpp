@@ -13,7 +13,7 @@ namespace lesson04 {
 class ColourMatrixLesson final : public fx::Lesson {
 public:
     fx::LessonInfo info() const override;
-    std::vector<fx::LessonStep> steps() const override;
+    std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
     void update(const fx::FrameInfo& frame) override;

@@ -40,28 +40,12 @@ LessonInfo RadialBlurLesson::info() const {
     return {5, "radial-blur", "Radial blur", "scenes/05_radial_blur.json"};
 }
 
-std::vector<LessonStep> RadialBlurLesson::steps() const {
+std::vector<std::string> RadialBlurLesson::steps() const {
     return {
-        {"Zoom blur, first version",
-         "Every pixel averages 8 taps on the line toward the centre: tap i at uv + v*i (i = 0..7) with v = "
-         "(centre - uv) * length, each weighted 1/8. Far from the centre the taps spread wider, so the "
-         "colonnade streaks outward from the gate: a sense of speed, or a pointer to one spot. Drag the "
-         "centre with the mouse; length 0 switches the blur off (Exercise 03)."},
-        {"A sharp centre: the chapter's formula (deliberate bug)",
-         "The start distance keeps the middle sharp: v = d * (max(|d| - start, 0) / |d|) * length, which is "
-         "0 within `start` of the centre (an ellipse: distances are in texture coordinates). But the pixel "
-         "whose centre is the blur centre has |d| = 0, and 0/0 is NaN. This step puts the centre on a pixel "
-         "centre, as an odd-sized window does with (0.5, 0.5): blur.offset holds NaN there (the inspector's "
-         "NaN highlight finds it) and the taps sample at NaN positions, which GL leaves undefined."},
-        {"Guarded: the centre pixel defined",
-         "Where |d| <= 1e-6 the offset is set to 0: the centre pixel stays sharp, which is the limit the "
-         "formula approaches there. Same centre as step 2, and no NaN. The centre may be anywhere, even off "
-         "screen (centre_x = -3): taps that leave the screen read its edge (clamp to edge)."},
-        {"Sample count: what accuracy costs",
-         "`samples` taps spread over the same streak as the chapter's 8 (7 v long), each weighted 1/samples, "
-         "so the size and brightness of the blur stay and only its smoothness changes: few samples show "
-         "steps, more cost more time. The bench and the cost panel compare 4 to 64 samples with a 256-sample "
-         "reference."},
+        "Zoom blur, first version",
+        "A sharp centre: the chapter's formula (deliberate bug)",
+        "Guarded: the centre pixel defined",
+        "Sample count: what accuracy costs",
     };
 }
 

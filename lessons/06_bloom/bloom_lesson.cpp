@@ -37,46 +37,13 @@ LessonInfo BloomLesson::info() const {
     return {6, "bloom", "Bloom", "scenes/06_bloom.json"};
 }
 
-std::vector<LessonStep> BloomLesson::steps() const {
+std::vector<std::string> BloomLesson::steps() const {
     return {
-        {"An 8-bit target: everything bright clips",
-         "The scene drawn into RGBA8. Every value is cut to [0, 1] when it is stored, so the lamp (about 6) "
-         "and the "
-         "sun (about 3000) both store 1 and look alike; nothing is left to tell a bright-pass filter which "
-         "light is "
-         "strong. The inspector's range on scene.color never goes above 1."},
-        {"A 16-bit float target: values above 1 survive",
-         "The same scene in RGBA16F (largest finite value 65504). The picture on screen is the same, because "
-         "the "
-         "display still clips at 1, but scene.color now holds the lamp's 6 and the sun's 3000: the "
-         "inspector's "
-         "auto-fit range and histogram show them. This costs twice the memory and bandwidth of RGBA8."},
-        {"The Shader effects chapter's bloom: a quarter-size chain, averaged",
-         "The bright pass keeps max(b - threshold, 0) / b of each colour (b: its brightest channel, so the "
-         "hue "
-         "stays) on 4 taps at +-1 texel and shrinks to a quarter (bloom.down[0]). Five downsamples (centre "
-         "x4 plus "
-         "four diagonals, / 8) make six levels, the upsamples (9 taps, / 15) add each level onto the next "
-         "larger "
-         "(bloom.up[*]), and the composite adds 1/N of the result to the scene. A uniform area v becomes "
-         "v + intensity * max(v - 1, 0)."},
-        {"The Bloom chapter's chain: half size, summed, bloomScale",
-         "The bright pass averages 4 diagonal taps at +-0.75 texel (a [1 3 3 1]/8 binomial) into a half-size "
-         "level "
-         "and then applies the ratio; the same taps go down, and the upsample reads 4 axial taps at 1 texel "
-         "(weight 1) and 4 diagonal at 0.5 (weight 2), / 12. The levels are summed, not averaged, and the "
-         "composite scales by bloomScale (2; the exercise asks for 1) through a shader uniform, not the "
-         "blend "
-         "constant, so nothing clamps it: a uniform area gains N * bloomScale times its bright part."},
-        {"Beyond the chapters: Karis, soft knee, energy, tone curve",
-         "A Karis average (1 / (1 + luma) weights) on the first downsample tames single bright texels, a "
-         "soft knee "
-         "fades the threshold in, the composite scales by intensity / N so the glow's energy does not grow "
-         "with "
-         "the level count, and a tone curve (Reinhard or ACES-style filmic) replaces clipping: the sun's "
-         "glow now "
-         "outshines the lamp's. `reference` shows the direct full-resolution Gaussian the bench compares "
-         "against."},
+        "An 8-bit target: everything bright clips",
+        "A 16-bit float target: values above 1 survive",
+        "The Shader effects chapter's bloom: a quarter-size chain, averaged",
+        "The Bloom chapter's chain: half size, summed, bloomScale",
+        "Beyond the chapters: Karis, soft knee, energy, tone curve",
     };
 }
 

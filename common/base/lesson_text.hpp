@@ -1,0 +1,48 @@
+#pragma once
+// A lesson's prose has one home: its lesson.md, one section per step, headed "## Step N: <title>".
+// The lesson's code keeps the step list (the titles, since the steps drive the code); this reads a
+// lesson.md (or a translation such as lesson.ja.md) and matches its step sections with that list.
+// GL-free, so the unit tests, --list-steps and the overlay share it.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/result.hpp"
+
+namespace fx {
+
+// A step as the overlay shows it: its title, its text (the markdown of its section) and, where the
+// text is not in the language asked for, a short note saying so.
+struct LessonStep {
+    std::string title;
+    std::string text;
+    std::string note = {};
+};
+
+// One "## Step N: title" section of a lesson.md, as written.
+struct StepSection {
+    int number = 0;  // 1-based, as in the heading
+    std::string title;
+    std::string text;  // the lines up to the next heading of level 1 or 2, blank lines trimmed
+    int line = 0;      // the heading's line, for messages
+};
+
+// The step sections of a markdown file, in the order written, with nothing checked against a
+// lesson. Other sections ("## The frame") are prose around the steps and are skipped; headings inside
+// ``` code blocks are not headings. A heading that starts with "## Step" but is not "## Step N: title"
+// is an error naming the file and line.
+Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file);
+
+// The lesson's own text (lesson.md): exactly one section per step, in order, each with text, each
+// heading's title the same as the lesson's title for that step. Gives the text of every step.
+Result<std::vector<std::string>> matchLessonText(const std::vector<StepSection>& sections,
+                                                 const std::vector<std::string>& titles,
+                                                 const std::string& file);
+
+// A translation (lesson.ja.md): sections in order, no step twice, none the lesson lacks, each with
+// text; a step may be missing (it falls back to English). Titles are translated, so they are not
+// compared. Gives one entry per step, nullptr where the translation has no section.
+Result<std::vector<const StepSection*>> matchTranslation(const std::vector<StepSection>& sections,
+                                                         std::size_t stepCount, const std::string& file);
+
+}  // namespace fx

@@ -1,0 +1,39 @@
+#pragma once
+// The little markdown a lesson's step text uses, parsed for display: paragraphs, bullet and numbered
+// lists, ``` code blocks, ### headings, table rows, and inside text **bold**, *emphasis*, `code`,
+// [links](url) (their text) and ![pictures](file) (their alt text). Anything else is plain text.
+// GL-free: the overlay draws the blocks (ui/markdown_view), the tests check the parse.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fx::markdown {
+
+enum class Style { Plain, Strong, Emphasis, Code, Picture };
+
+struct Span {
+    Style style = Style::Plain;
+    std::string text;
+};
+
+enum class BlockKind { Paragraph, ListItem, Heading, CodeBlock };
+
+struct Block {
+    BlockKind kind = BlockKind::Paragraph;
+    std::string marker;       // list items: "-" or "3."
+    int indent = 0;           // list nesting, 0 for the outermost
+    std::vector<Span> spans;  // a code block: one Plain span, its lines joined with '\n'
+};
+
+std::vector<Block> parseBlocks(std::string_view text);
+std::vector<Span> parseSpans(std::string_view text);
+
+// Where a line of text may break: each piece is a word with the spaces after it, or one CJK
+// character (Japanese has no spaces; a line may break between any two characters, except before
+// closing punctuation such as 、。」), so a renderer wraps by measuring pieces.
+std::vector<std::string_view> breakPieces(std::string_view text);
+
+// The code point at text[i] (UTF-8), and how many bytes it takes; a broken byte reads as U+FFFD.
+char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length);
+
+}  // namespace fx::markdown

@@ -1,0 +1,122 @@
+// The step sections of a lesson.md: parsed as written, then matched with the lesson's step titles.
+#include <gtest/gtest.h>
+
+#include "base/lesson_text.hpp"
+
+namespace {
+
+using fx::matchLessonText;
+using fx::matchTranslation;
+using fx::parseStepSections;
+
+const std::vector<std::string> kTitles{"First", "Second", "Third"};
+
+// The error of matching `markdown` with kTitles ("" when it matched).
+std::string lessonError(const std::string& markdown) {
+    auto sections = parseStepSections(markdown, "lesson.md");
+    if (!sections) return sections.error();
+    auto texts = matchLessonText(*sections, kTitles, "lesson.md");
+    return texts ? std::string() : texts.error();
+}
+
+TEST(LessonText, StepSectionsBetweenOtherSectionsAndCode) {
+    const std::string md =
+        "# Lesson 09: test\n\nIntro.\n\n## The frame\n\n```\n## Step 9: inside code, not a heading\n```\n\n"
+        "## Step 1: First\n\nOne **bold** line.\n\n### A sub-heading stays inside\n\nMore.\n\n"
+        "## Step 2: Second\nTwo.\n\n\n## Step 3: Third\n\n- a\n- b\n\n## Tests\n\nNot a step.\n";
+    auto sections = parseStepSections(md, "lesson.md");
+    ASSERT_TRUE(sections.ok()) << sections.error();
+    ASSERT_EQ(sections->size(), 3u);
+    EXPECT_EQ((*sections)[0].number, 1);
+    EXPECT_EQ((*sections)[0].title, "First");
+    EXPECT_EQ((*sections)[0].text, "One **bold** line.\n\n### A sub-heading stays inside\n\nMore.");
+    EXPECT_EQ((*sections)[0].line, 11);
+    EXPECT_EQ((*sections)[1].text, "Two.");
+    EXPECT_EQ((*sections)[2].text, "- a\n- b");
+    auto texts = matchLessonText(*sections, kTitles, "lesson.md");
+    ASSERT_TRUE(texts.ok()) << texts.error();
+    EXPECT_EQ((*texts)[1], "Two.");
+}
+
+TEST(LessonText, WindowsLineEndingsAreRead) {
+    auto sections = parseStepSections("## Step 1: First\r\n\r\nText.\r\n", "lesson.md");
+    ASSERT_TRUE(sections.ok());
+    ASSERT_EQ(sections->size(), 1u);
+    EXPECT_EQ((*sections)[0].title, "First");
+    EXPECT_EQ((*sections)[0].text, "Text.");
+}
+
+TEST(LessonText, NoSectionsNamesTheFirstStep) {
+    EXPECT_EQ(lessonError("# Lesson\n\nOnly prose.\n"),
+              "lesson.md: step 1 (\"First\") has no section; write \"## Step 1: First\" and its text");
+}
+
+TEST(LessonText, AMissingLastStepIsNamed) {
+    EXPECT_NE(
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n").find("step 3 (\"Third\") has no section"),
+        std::string::npos);
+}
+
+TEST(LessonText, DuplicateStep) {
+    std::string e =
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 2: Second\nc\n## Step 3: Third\nd\n");
+    EXPECT_EQ(e, "lesson.md:5: step 2 comes again after step 2; each step has one section, in order");
+}
+
+TEST(LessonText, OutOfOrderStep) {
+    std::string e = lessonError("## Step 1: First\na\n## Step 3: Third\nc\n## Step 2: Second\nb\n");
+    EXPECT_EQ(e, "lesson.md: step 2 (\"Second\") has no section; \"## Step 3\" at line 3 comes first");
+}
+
+TEST(LessonText, ExtraStep) {
+    std::string e =
+        lessonError("## Step 1: First\na\n## Step 2: Second\nb\n## Step 3: Third\nc\n## Step 4: Fourth\nd\n");
+    EXPECT_EQ(e,
+              "lesson.md:7: step 4: the lesson has 3 steps; remove this section or add the step to the "
+              "lesson's code");
+}
+
+TEST(LessonText, EmptyText) {
+    std::string e = lessonError("## Step 1: First\na\n## Step 2: Second\n\n\n## Step 3: Third\nc\n");
+    EXPECT_EQ(e, "lesson.md:3: step 2 has no text");
+}
+
+TEST(LessonText, TitleDifferentFromTheCode) {
+    std::string e = lessonError("## Step 1: First\na\n## Step 2: Secnd\nb\n## Step 3: Third\nc\n");
+    EXPECT_EQ(e, "lesson.md:3: step 2: the heading's title \"Secnd\" is not the lesson's \"Second\"");
+}
+
+TEST(LessonText, MalformedHeadingsNameTheLine) {
+    for (const char* heading :
+         {"## Step two: x", "## Step 2 x", "## Step 2:", "## Step 0: x", "## Steps 2: x", "## Step 2a: x"}) {
+        auto sections = parseStepSections(std::string("Intro\n") + heading + "\ntext\n", "l.md");
+        ASSERT_FALSE(sections.ok()) << heading;
+        EXPECT_NE(sections.error().find("l.md:2: "), std::string::npos) << sections.error();
+        EXPECT_NE(sections.error().find("## Step N: title"), std::string::npos) << sections.error();
+    }
+}
+
+TEST(LessonText, TranslationMayLackStepsButNotRepeatOrReorderThem) {
+    auto sections = parseStepSections("## Step 1: 一\n一つ目。\n\n## Step 3: 三\n三つ目。\n", "lesson.ja.md");
+    ASSERT_TRUE(sections.ok());
+    auto byStep = matchTranslation(*sections, 3, "lesson.ja.md");
+    ASSERT_TRUE(byStep.ok()) << byStep.error();
+    ASSERT_EQ(byStep->size(), 3u);
+    EXPECT_EQ((*byStep)[0]->title, "一");
+    EXPECT_EQ((*byStep)[1], nullptr);
+    EXPECT_EQ((*byStep)[2]->text, "三つ目。");
+
+    auto error = [](const std::string& md) {
+        auto s = parseStepSections(md, "lesson.ja.md");
+        auto m = matchTranslation(*s, 3, "lesson.ja.md");
+        return m ? std::string() : m.error();
+    };
+    EXPECT_EQ(error("## Step 2: b\nx\n## Step 2: b\ny\n"),
+              "lesson.ja.md:3: step 2 comes after step 2; each step has at most one section, in order");
+    EXPECT_EQ(error("## Step 3: c\nx\n## Step 1: a\ny\n"),
+              "lesson.ja.md:3: step 1 comes after step 3; each step has at most one section, in order");
+    EXPECT_EQ(error("## Step 4: d\nx\n"), "lesson.ja.md:1: step 4: the lesson has 3 steps");
+    EXPECT_EQ(error("## Step 1: a\n\n## Step 2: b\nx\n"), "lesson.ja.md:1: step 1 has no text");
+}
+
+}  // namespace

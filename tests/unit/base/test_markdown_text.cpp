@@ -1,0 +1,94 @@
+// The markdown a step's text uses, as the overlay draws it.
+#include <gtest/gtest.h>
+
+#include "base/markdown_text.hpp"
+
+namespace {
+
+using namespace fx::markdown;
+
+std::string styles(const std::vector<Span>& spans) {
+    std::string out;
+    for (const Span& s : spans) {
+        const char* name = s.style == Style::Strong     ? "B"
+                           : s.style == Style::Emphasis ? "I"
+                           : s.style == Style::Code     ? "C"
+                           : s.style == Style::Picture  ? "P"
+                                                        : "";
+        out += std::string("[") + name + (name[0] ? ":" : "") + s.text + "]";
+    }
+    return out;
+}
+
+TEST(Markdown, InlineStyles) {
+    EXPECT_EQ(styles(parseSpans("a **bold** and `T*J*p` and *soft* [link](x.md) ![pic](p.png) \\*x")),
+              "[a ][B:bold][ and ][C:T*J*p][ and ][I:soft][ link ][P:pic][ *x]");
+    // A star inside a product is not emphasis; an unclosed mark stays as it is.
+    EXPECT_EQ(styles(parseSpans("T*J and (T*J)*p cost `64` **open")),
+              "[T*J and (T*J)*p cost ][C:64][ **open]");
+    // Bold drops the marks inside it: it is one colour.
+    EXPECT_EQ(styles(parseSpans("**Seed `000`'s bloom.**")), "[B:Seed 000's bloom.]");
+}
+
+TEST(Markdown, BlocksOfAStep) {
+    auto blocks = parseBlocks(
+        "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  "
+        "kept\n```\n### Sub\n"
+        "| a | b |\n|---|---|\n| ![](x.png) | c |\n");
+    ASSERT_EQ(blocks.size(), 8u);
+    EXPECT_EQ(blocks[0].kind, BlockKind::Paragraph);
+    EXPECT_EQ(styles(blocks[0].spans), "[First line continues.]");
+    EXPECT_EQ(blocks[1].kind, BlockKind::ListItem);
+    EXPECT_EQ(blocks[1].marker, "-");
+    EXPECT_EQ(styles(blocks[1].spans), "[one more]");
+    EXPECT_EQ(blocks[2].indent, 1);
+    EXPECT_EQ(blocks[3].marker, "3.");
+    EXPECT_EQ(blocks[4].kind, BlockKind::CodeBlock);
+    EXPECT_EQ(blocks[4].spans[0].text, "code ──►\n  kept");
+    EXPECT_EQ(blocks[5].kind, BlockKind::Heading);
+    EXPECT_EQ(styles(blocks[5].spans), "[Sub]");
+    EXPECT_EQ(styles(blocks[6].spans), "[a  |  b]");
+    EXPECT_EQ(styles(blocks[7].spans), "[P:][  |  c]");
+}
+
+TEST(Markdown, JapaneseLinesJoinWithoutASpace) {
+    auto blocks = parseBlocks("大きい\nレベルに足し込みます。\nRGBA8 に\n書く。\nA\nB");
+    ASSERT_EQ(blocks.size(), 1u);
+    // Between Japanese and a Latin word the line break stays a space, as the text writes it inside a line.
+    EXPECT_EQ(blocks[0].spans[0].text, "大きいレベルに足し込みます。 RGBA8 に書く。 A B");
+}
+
+TEST(Markdown, EmptyTextHasNoBlocks) {
+    EXPECT_TRUE(parseBlocks("").empty());
+    EXPECT_TRUE(parseBlocks("\n\n  \n").empty());
+}
+
+TEST(Markdown, BreakPiecesKeepSpacesWithWordsAndSplitJapanese) {
+    std::vector<std::string_view> words = breakPieces("two words  here");
+    ASSERT_EQ(words.size(), 3u);
+    EXPECT_EQ(words[0], "two ");
+    EXPECT_EQ(words[1], "words  ");
+    EXPECT_EQ(words[2], "here");
+    // Japanese: one character a piece, closing punctuation kept with the character before it;
+    // a Latin word inside Japanese stays whole.
+    std::vector<std::string_view> ja = breakPieces("明るい。RGBA8に");
+    ASSERT_EQ(ja.size(), 5u);
+    EXPECT_EQ(ja[0], "明");
+    EXPECT_EQ(ja[2], "い。");
+    EXPECT_EQ(ja[3], "RGBA8");
+    EXPECT_EQ(ja[4], "に");
+    std::string joined;
+    for (auto p : breakPieces("a 明るい b")) joined += p;
+    EXPECT_EQ(joined, "a 明るい b");
+}
+
+TEST(Markdown, DecodesUtf8AndReplacesBrokenBytes) {
+    std::size_t length = 0;
+    EXPECT_EQ(decodeUtf8("明", 0, length), U'明');
+    EXPECT_EQ(length, 3u);
+    EXPECT_EQ(decodeUtf8("\xE6\x98", 0, length), U'\uFFFD');  // cut short
+    EXPECT_EQ(length, 1u);
+    EXPECT_EQ(decodeUtf8("\xFF", 0, length), U'\uFFFD');
+}
+
+}  // namespace
