@@ -247,3 +247,26 @@ TEST_F(RadialBlurOnGl, GpuOffsetsMatchTheCpuReference) {
         }
     }
 }
+
+TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
+    // A centre off screen to the right sends the right edge's taps past it (up to 7 x 0.1 x 0.25 of
+    // the width). With CLAMP_TO_EDGE they read the dark right edge; REPEAT would bring in the bright
+    // column at the left edge (Shader effects: "REPEAT pulls in the opposite edge").
+    const int w = 64, h = 16;
+    EffectRunner runner(w, h);
+    FloatImage input = makeImage(w, h, [](int x, int) {
+        float v = x < 8 ? 50.0f : 0.25f;
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    RadialBlurParams params;
+    params.centre = {1.25f, 0.5f};
+    params.length = 0.1f;
+    params.start = 0.0f;
+    FloatImage out = blur(runner, effect, input, params, TextureFormat::RGBA32F);
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    for (int y = 0; y < h; ++y) {
+        for (int x = w - 4; x < w; ++x)
+            EXPECT_NEAR(out.texel(x, y, 0), 0.25f, 1e-5f)
+                << "pixel " << x << ", " << y << ": light wrapped round";
+    }
+}
