@@ -36,7 +36,7 @@ public:
         seen.contextAliveAtDestruction = gl::contextAlive();
     }
     LessonInfo info() const override { return {0, "probe", "Probe", ""}; }
-    std::vector<LessonStep> steps() const override { return {{"one", "the only step"}}; }
+    std::vector<std::string> steps() const override { return {"one"}; }
     void declareParams(ParamSet& params) override {
         params.addInt("samples", &samples_, 1, 8, "a knob, so that --bench has something").knob =
             Knob{{1, 2}, 2, "samples"};
