@@ -33,6 +33,11 @@ struct TextureAccess {
     bool reads = false;
     bool writes = false;
     TextureUsage usage = TextureUsage::Sampled;
+    // The pass samples it (Pass::read), as opposed to reading it only through blending or image
+    // loads (Pass::modify). Sampled and attached in one pass is a feedback loop the graph refuses...
+    bool sampled = false;
+    // ... unless the pass samples another mip level than the one it renders into (Pass::readOtherLevel).
+    bool otherLevel = false;
 
     bool creates() const { return writes && !reads; }  // writes without reading: creates or clears it
     bool modifies() const { return writes && reads; }

@@ -73,6 +73,17 @@ std::vector<std::string> validatePassTargets(const PassList& passes,
                 std::string error = formatError(pass, t, a.usage);
                 if (!error.empty()) errors.push_back(std::move(error));
             }
+            // GL leaves sampling a texture attached to the bound framebuffer undefined (a feedback
+            // loop): the draw may read what it is writing, or what it wrote a moment ago. A modify
+            // reads through blending, which is defined; only a sampled read is refused.
+            if (a.sampled && a.writes && !a.otherLevel &&
+                (a.usage == TextureUsage::ColorAttachment || a.usage == TextureUsage::DepthAttachment)) {
+                errors.push_back(cat("pass '", pass.name(), "' samples '", t.view.name,
+                                     "' and renders into it as its ", toString(a.usage),
+                                     ": a feedback loop, undefined in GL. Render into another texture, "
+                                     "or declare readOtherLevel if the pass samples another mip level "
+                                     "than it writes"));
+            }
             if (isWindowFramebuffer(t)) {
                 window = &t;
                 if (a.onlyReads()) {

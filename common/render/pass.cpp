@@ -11,7 +11,15 @@ Pass::Pass(FrameGraph& graph, std::uint32_t index, std::string name, Body body)
     : graph_(graph), index_(index), name_(std::move(name)), body_(std::move(body)) {}
 
 Pass& Pass::read(TextureHandle texture) {
-    addAccess(texture, true, false, TextureUsage::Sampled);
+    if (TextureAccess* a = addAccess(texture, true, false, TextureUsage::Sampled)) a->sampled = true;
+    return *this;
+}
+
+Pass& Pass::readOtherLevel(TextureHandle texture) {
+    if (TextureAccess* a = addAccess(texture, true, false, TextureUsage::Sampled)) {
+        a->sampled = true;
+        a->otherLevel = true;
+    }
     return *this;
 }
 
@@ -70,34 +78,35 @@ Pass& Pass::setTag(std::int64_t tag) {
     return *this;
 }
 
-void Pass::addAccess(TextureHandle texture, bool reads, bool writes, TextureUsage usage) {
+TextureAccess* Pass::addAccess(TextureHandle texture, bool reads, bool writes, TextureUsage usage) {
     if (!graph_.owns(texture)) {
         declarationErrors_.push_back(
             cat("pass '", name_, "' uses a texture handle this frame's graph did not declare"));
-        return;
+        return nullptr;
     }
     if (writes && usage == TextureUsage::Sampled) {
         declarationErrors_.push_back(
             cat("pass '", name_, "' writes '", graph_.texture(texture).name,
                 "' with usage 'sampled'; writes go through an attachment or storage"));
-        return;
+        return nullptr;
     }
     auto existing = std::find_if(accesses_.begin(), accesses_.end(),
                                  [&](const TextureAccess& a) { return a.texture == texture; });
     if (existing == accesses_.end()) {
         accesses_.push_back({texture, reads, writes, usage});
-        return;
+        return &accesses_.back();
     }
     existing->reads = existing->reads || reads;
-    if (!writes) return;
+    if (!writes) return &*existing;
     if (existing->writes && existing->usage != usage) {
         declarationErrors_.push_back(cat("pass '", name_, "' writes '", graph_.texture(texture).name,
                                          "' both as ", toString(existing->usage), " and as ",
                                          toString(usage)));
-        return;
+        return &*existing;
     }
     existing->writes = true;
     existing->usage = usage;
+    return &*existing;
 }
 
 std::vector<TextureHandle> Pass::colorAttachments() const {

@@ -30,8 +30,13 @@ public:
     using Body = std::function<void(PassContext&)>;
 
     // --- Declarations (each returns the pass, so they chain) ---
-    // Sampled read: the pass runs after every pass that writes the texture.
+    // Sampled read: the pass runs after every pass that writes the texture. A pass must not sample a
+    // texture it renders into (a feedback loop, undefined in GL): the graph refuses it.
     Pass& read(TextureHandle texture);
+    // Sampled read of another mip level than the one this pass renders into: a mip chain kept in one
+    // texture, level k sampled while level k+1 is attached. The one case where a pass may sample a
+    // texture it also writes; the pass body must make sure it samples only that level.
+    Pass& readOtherLevel(TextureHandle texture);
     // Write without reading: this pass creates (or clears) the texture and runs before its other users.
     Pass& write(TextureHandle texture, TextureUsage usage);
     Pass& writeColor(TextureHandle texture) { return write(texture, TextureUsage::ColorAttachment); }
@@ -86,7 +91,8 @@ public:
 private:
     friend class FrameGraph;
     Pass(FrameGraph& graph, std::uint32_t index, std::string name, Body body);
-    void addAccess(TextureHandle texture, bool reads, bool writes, TextureUsage usage);
+    // The pass's access to `texture` after this one is merged in; nullptr when it was refused.
+    TextureAccess* addAccess(TextureHandle texture, bool reads, bool writes, TextureUsage usage);
 
     FrameGraph& graph_;
     std::uint32_t index_;

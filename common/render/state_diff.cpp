@@ -69,8 +69,12 @@ std::vector<std::string> inheritedDependencies(const PassState& declared, const 
     GlStateSnapshot effective = applyPassState(inherited, declared, Size2D{});
     if (writes.depth) {
         add(declared.depthTest.has_value(), "depth test", onOff(inherited.depthTest));
-        if (effective.depthTest) {
+        // The depth clear obeys the depth mask as drawing does: a pass that clears depth with writes
+        // left off by the pass before keeps the old depth (stale depth), even if it never tests.
+        if (effective.depthTest || declared.clearDepth) {
             add(declared.depthWrite.has_value(), "depth write", onOff(inherited.depthWrite));
+        }
+        if (effective.depthTest) {
             add(declared.depthFunction.has_value(), "depth function", text(inherited.depthFunction));
         }
     }

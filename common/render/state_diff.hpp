@@ -27,7 +27,8 @@ struct PassWrites {
 
 // The state a pass depends on but leaves to whoever ran before it, with the value it inherited:
 // "depth test: off (inherited)". A pass writing depth depends on the depth test (and, while testing,
-// on depth writes and the depth function); a pass writing colour depends on blending (and, while
+// on depth writes and the depth function; when it clears depth, on depth writes too, since the clear
+// obeys the depth mask); a pass writing colour depends on blending (and, while
 // blending, on the blend function) and the colour mask; any drawing pass depends on face culling.
 // Empty when the pass declares all of it, which is the chapter's rule: each pass sets the state it
 // depends on (the Shader effects chapter, §3.3).

@@ -191,3 +191,26 @@ TEST_F(BloomHardCases, OddAndTinySizesMakeOnlyLevelsOfAtLeastOneTexel) {
         EXPECT_TRUE(allFinite(ref));
     }
 }
+
+TEST_F(BloomHardCases, BrightEdgeColumnDoesNotWrapRoundToTheOppositeEdge) {
+    // Bloom, hard case 11: the taps reach past the border, and REPEAT would fetch the opposite edge
+    // there. A bright column at the left edge of a dark scene then lights the right edge as brightly as
+    // its own neighbours. With CLAMP_TO_EDGE the right edge gets only what the coarsest levels carry
+    // across the whole width: far less than the column's neighbour two pixels away.
+    const int w = 512, h = 64;
+    EffectRunner runner(w, h);
+    FloatImage input = makeImage(w, h, [](int x, int) {
+        float v = x < 2 ? 20.0f : 0.0f;
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    for (const Chain& chain : lessonChains()) {
+        FloatImage out =
+            runBloom(runner, effects, input, TextureFormat::RGBA16F, chain.settings, chain.scale);
+        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        for (int y : {0, h / 2, h - 1}) {
+            float near = out.texel(3, y, 0), farEdge = out.texel(w - 1, y, 0);
+            ASSERT_GT(near, 0.0f) << chain.name;
+            EXPECT_LT(farEdge, 0.01f * near) << chain.name << ", row " << y << ": light wrapped round";
+        }
+    }
+}

@@ -2,6 +2,7 @@
 // Runs a bloom chain and its composite on a synthetic input through the frame graph on GL, as lesson 06
 // does, and reads the floats back (tests/gl/test_bloom*.cpp).
 #include <cmath>
+#include <functional>
 
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
@@ -31,6 +32,17 @@ inline FloatImage runBloom(EffectRunner& runner, const BloomEffects& fx, const F
         if (d.empty()) return in;
         if (std::string(which) == "glow") return d.glow();
         return fx.composite.declare(g, in, d.glow(), {settings.filters, settings.upOffset, scale}).output;
+    });
+}
+
+// What one texture of the chain holds after the chain ran: `pick` chooses it from what the chain
+// declared (bloom.down[0] is the bright pass's output, for instance). The composite is not declared.
+inline FloatImage runChain(EffectRunner& runner, const BloomEffects& fx, const FloatImage& input,
+                           TextureFormat inputFormat, const BloomChainSettings& settings,
+                           const std::function<TextureHandle(const BloomChain::Declared&)>& pick) {
+    return runner.run(input, inputFormat, [&](FrameGraph& g, TextureHandle in) {
+        BloomChain::Declared d = fx.chain.declare(g, in, settings);
+        return d.empty() ? in : pick(d);
     });
 }
 

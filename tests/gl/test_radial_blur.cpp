@@ -247,3 +247,158 @@ TEST_F(RadialBlurOnGl, GpuOffsetsMatchTheCpuReference) {
         }
     }
 }
+
+TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
+    // A centre off screen to the right sends the right edge's taps past it (up to 7 x 0.1 x 0.25 of
+    // the width). With CLAMP_TO_EDGE they read the dark right edge; REPEAT would bring in the bright
+    // column at the left edge (Shader effects: "REPEAT pulls in the opposite edge").
+    const int w = 64, h = 16;
+    EffectRunner runner(w, h);
+    FloatImage input = makeImage(w, h, [](int x, int) {
+        float v = x < 8 ? 50.0f : 0.25f;
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    RadialBlurParams params;
+    params.centre = {1.25f, 0.5f};
+    params.length = 0.1f;
+    params.start = 0.0f;
+    FloatImage out = blur(runner, effect, input, params, TextureFormat::RGBA32F);
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    for (int y = 0; y < h; ++y) {
+        for (int x = w - 4; x < w; ++x)
+            EXPECT_NEAR(out.texel(x, y, 0), 0.25f, 1e-5f)
+                << "pixel " << x << ", " << y << ": light wrapped round";
+    }
+}
+
+TEST_F(RadialBlurOnGl, NegativeLengthIsNoBlurAndNoOffset) {
+    // Shader effects, hard case 3: z <= 0 skips the blur. The effect clamps a negative length to 0
+    // itself (a scene file or a script need not go through the slider), so the offsets it shows are 0
+    // too, not taps pointing away from the centre.
+    EffectRunner runner(40, 30);
+    RadialBlurParams params;
+    params.start = 0.0f;
+    for (float length : {-0.05f, -INFINITY, NAN}) {
+        params.length = length;
+        FloatImage out = blur(runner, effect, patterned(40, 30), params, TextureFormat::RGBA32F);
+        FloatImage offsets = blur(runner, effect, patterned(40, 30), params, TextureFormat::RGBA32F, true);
+        ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastErrors;
+        std::size_t differing = 0, moved = 0;
+        for (std::size_t i = 0; i < out.texels.size(); ++i)
+            differing += !sameBits(out.texels[i], runner.storedInput.texels[i]);
+        for (float v : offsets.texels) moved += v != 0.0f;
+        EXPECT_EQ(differing, 0u) << "length " << length;
+        EXPECT_EQ(moved, 0u) << "length " << length << ": offsets drawn for a blur that does not run";
+        EXPECT_EQ(radialBlurTapOffset(params, {40, 30}, {3.5f, 3.5f}), glm::vec2(0.0f));
+    }
+}
+
+TEST_F(RadialBlurOnGl, NegativeStartIsStartZero) {
+    // Hard case 2: w < 0 makes |d| - w larger than |d|, more blur than any w >= 0 gives, and with the
+    // chapter's formula +x/0 at the centre pixel. The effect clamps it to 0: the same picture bit for bit.
+    EffectRunner runner(33, 17);
+    RadialBlurParams zero;
+    zero.start = 0.0f;
+    zero.length = 0.05f;
+    FloatImage expected = blur(runner, effect, patterned(33, 17), zero, TextureFormat::RGBA32F);
+    ASSERT_FALSE(expected.empty()) << runner.lastErrors;
+    for (float start : {-0.3f, NAN}) {
+        RadialBlurParams negative = zero;
+        negative.start = start;
+        FloatImage out = blur(runner, effect, patterned(33, 17), negative, TextureFormat::RGBA32F);
+        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < out.texels.size(); ++i)
+            differing += !sameBits(out.texels[i], expected.texels[i]);
+        EXPECT_EQ(differing, 0u) << "start " << start;
+    }
+}
+
+TEST_F(RadialBlurOnGl, LengthAboveOneSeventhOvershootsTheCentre) {
+    // Hard case 3: the farthest of the 8 taps sits 7 z |d| toward the centre (start 0), so it passes
+    // the centre once z > 1/7. Black left of the centre, 1 right of it, a pixel 0.4 of the width to the
+    // left: at z = 0.13 the farthest tap stops 0.036 short (all 8 read black); at z = 0.16 it lands
+    // 0.048 beyond (one tap of 8 reads the right half: 1/8) and the seventh, at 0.384, still falls short.
+    const int w = 128, h = 65;  // an odd height: the middle row's pixel centres lie on the centre's y
+    EffectRunner runner(w, h);
+    FloatImage input = makeImage(w, h, [](int x, int) {
+        float v = x < w / 2 ? 0.0f : 1.0f;
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    const int x = int(0.1f * w), y = h / 2;  // its centre is 0.4 of the width from the blur centre's
+    RadialBlurParams params;
+    params.start = 0.0f;
+    params.length = 0.13f;
+    FloatImage shortOf = blur(runner, effect, input, params, TextureFormat::RGBA32F);
+    params.length = 0.16f;
+    FloatImage past = blur(runner, effect, input, params, TextureFormat::RGBA32F);
+    ASSERT_FALSE(shortOf.empty() || past.empty()) << runner.lastErrors;
+    EXPECT_EQ(shortOf.texel(x, y, 0), 0.0f);
+    EXPECT_NEAR(past.texel(x, y, 0), 1.0f / 8.0f, 1e-6f) << "the farthest tap crossed to the other side";
+}
+
+TEST_F(RadialBlurOnGl, StartBeyondTheCornerDistanceBlursNothing) {
+    // Exercise 03's second answer: a centred blur's farthest pixel is about 0.7071 away (corner), so a
+    // start of 0.7072 leaves every pixel as it was; at 0.68 the corners blur.
+    EffectRunner runner(64, 48);
+    RadialBlurParams params;
+    params.length = 0.1f;
+    for (float start : {0.7072f, 0.68f}) {
+        params.start = start;
+        FloatImage out = blur(runner, effect, patterned(64, 48), params, TextureFormat::RGBA32F);
+        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < out.texels.size(); ++i)
+            differing += !sameBits(out.texels[i], runner.storedInput.texels[i]);
+        if (start > 0.7071f) {
+            EXPECT_EQ(differing, 0u) << "start " << start;
+        } else {
+            EXPECT_GT(differing, 0u) << "start " << start << ": the corners are farther than that";
+        }
+    }
+}
+
+TEST_F(RadialBlurOnGl, StartRadiusIsAnEllipseOnANonSquareTarget) {
+    // The start radius is measured in texture coordinates, so on a 4:1 target start 0.25 keeps 32
+    // pixels sharp horizontally and 8 vertically. Every pixel within 0.245 (texture units) is unchanged
+    // bit for bit, every one beyond 0.26 is blurred: 30 pixels to the right stays sharp, 9 below does not.
+    const int w = 128, h = 32;
+    EffectRunner runner(w, h);
+    RadialBlurParams params;
+    params.start = 0.25f;
+    params.length = 0.1f;
+    FloatImage out = blur(runner, effect, patterned(w, h), params, TextureFormat::RGBA32F);
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    auto unchanged = [&](int x, int y) {
+        bool same = true;
+        for (int c = 0; c < 4; ++c)
+            same = same && sameBits(out.texel(x, y, c), runner.storedInput.texel(x, y, c));
+        return same;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec2 d((0.5f * w - (x + 0.5f)) / w, (0.5f * h - (y + 0.5f)) / h);
+            float distance = glm::length(d);
+            if (distance < 0.245f) {
+                EXPECT_TRUE(unchanged(x, y)) << x << ", " << y << " is inside the ellipse";
+            } else if (distance > 0.26f) {
+                EXPECT_FALSE(unchanged(x, y)) << x << ", " << y << " is outside the ellipse";
+            }
+        }
+    EXPECT_TRUE(unchanged(64 + 30, 15));
+    EXPECT_FALSE(unchanged(63, 15 - 9));
+}
+
+TEST_F(RadialBlurOnGl, ChaptersFormulaHasNoNanOnAnEvenSizedTarget) {
+    // Hard case 1: with the centre (0.5, 0.5) on an even-sized target the centre is a pixel corner, so
+    // no pixel has d = 0 and the chapter's unguarded formula stays finite everywhere.
+    EffectRunner runner(64, 32);
+    RadialBlurParams params;  // the chapter's defaults
+    params.formula = RadialBlurFormula::chapter;
+    FloatImage out = blur(runner, effect, patterned(64, 32), params, TextureFormat::RGBA16F);
+    FloatImage offsets = blur(runner, effect, patterned(64, 32), params, TextureFormat::RGBA16F, true);
+    ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastErrors;
+    for (const ChannelStats& s : computeStats(out)) EXPECT_EQ(s.nanCount + s.infCount, 0);
+    for (const ChannelStats& s : computeStats(offsets)) EXPECT_EQ(s.nanCount + s.infCount, 0);
+    EXPECT_EQ(radialBlurCentrePixels(params, {64, 32}), glm::vec2(32.0f, 16.0f)) << "a pixel corner";
+}

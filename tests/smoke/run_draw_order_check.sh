@@ -27,6 +27,10 @@ if "depth test: on (inherited)" not in inherited(r1, "shadow map"):
     failures.append(f"step 1: the shadow pass should inherit the depth test on: {inherited(r1, 'shadow map')}")
 if "depth test: off (inherited)" not in inherited(r2, "shadow map"):
     failures.append(f"step 2: the shadow pass should inherit the depth test off: {inherited(r2, 'shadow map')}")
+# Its depth clear obeys the depth mask, so it depends on depth writes too (on, by luck, here).
+if "depth write: on (inherited)" not in inherited(r2, "shadow map"):
+    failures.append(f"step 2: the shadow pass clears depth and should name the depth mask it inherited: "
+                    f"{inherited(r2, 'shadow map')}")
 for step in (3, 4, 5):
     for p in report(step)["passes"]:
         if p["stateInherited"]:
@@ -39,7 +43,7 @@ for step in (1, 2, 3, 4):
 # --graph draws the same finding: step 2's shadow pass runs first and says what it inherited.
 with open(f"{work}/step-2.dot") as f:
     dot = f.read()
-if 'label="1. shadow map\\n(declared 1st)\\ninherits depth test: off"' not in dot:
+if 'label="1. shadow map\\n(declared 1st)\\ninherits depth test: off\\ndepth write: on"' not in dot:
     failures.append(f"step 2: the graph should show the shadow pass first, inheriting the depth test off:\n{dot}")
 for r, step in ((r1, 1), (r2, 2)):
     if r["glErrors"] != 0:

@@ -24,6 +24,7 @@ const RadialBlurFormulaInfo kFormulas[] = {
     {"guarded", "v = |d| > eps ? d * (max(|d| - start, 0) / |d|) * length : 0", false},
 };
 
+// `params` has been through clampedRadialBlurParams.
 void setUniforms(GLuint program, const RadialBlurParams& params, Size2D size) {
     glm::vec2 centre = radialBlurCentrePixels(params, size);
     glProgramUniform2f(program, kCentreLocation, centre.x, centre.y);
@@ -40,6 +41,13 @@ const RadialBlurFormulaInfo& describe(RadialBlurFormula formula) {
     return kFormulas[std::clamp(static_cast<int>(formula), 0, 2)];
 }
 
+RadialBlurParams clampedRadialBlurParams(RadialBlurParams params) {
+    if (!std::isfinite(params.length) || params.length < 0.0f) params.length = 0.0f;
+    if (std::isnan(params.start) || params.start < 0.0f) params.start = 0.0f;
+    params.samples = std::clamp(params.samples, 1, kRadialBlurMaxSamples);
+    return params;
+}
+
 glm::vec2 radialBlurCentrePixels(const RadialBlurParams& params, Size2D size) {
     double x = double(params.centre.x) * size.width, y = double(params.centre.y) * size.height;
     if (params.centreOnPixel) {
@@ -49,7 +57,8 @@ glm::vec2 radialBlurCentrePixels(const RadialBlurParams& params, Size2D size) {
     return {float(x), float(y)};
 }
 
-glm::vec2 radialBlurTapOffset(const RadialBlurParams& params, Size2D size, glm::vec2 pixel) {
+glm::vec2 radialBlurTapOffset(const RadialBlurParams& asked, Size2D size, glm::vec2 pixel) {
+    const RadialBlurParams params = clampedRadialBlurParams(asked);
     glm::vec2 extent(float(std::max(size.width, 1)), float(std::max(size.height, 1)));
     glm::vec2 d = (radialBlurCentrePixels(params, size) - pixel) / extent;
     if (params.formula == RadialBlurFormula::firstVersion) return d * params.length;
@@ -67,12 +76,12 @@ RadialBlur RadialBlur::create() {
 }
 
 RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
-                                         const RadialBlurParams& params, TextureFormat format) const {
+                                         const RadialBlurParams& asked, TextureFormat format) const {
+    const RadialBlurParams params = clampedRadialBlurParams(asked);
     const FullscreenPass* blur = &blur_;
     Pass& blurPass = graph.addPass("radial blur", [blur, input, params](PassContext& ctx) {
         setUniforms(blur->program(), params, ctx.targetSize());
-        glProgramUniform1i(blur->program(), kSamplesLocation,
-                           std::clamp(params.samples, 1, kRadialBlurMaxSamples));
+        glProgramUniform1i(blur->program(), kSamplesLocation, params.samples);
         blur->draw({ctx.native(input)});
     });
     TextureHandle result =

@@ -52,6 +52,17 @@ struct RadialBlurParams {
     bool centreOnPixel = false;
 };
 
+// The parameters the effect uses: what a slider or a scene file cannot be trusted to keep in range is
+// brought into it here, so the shader and the CPU reference see the same values.
+//   length   negative or not finite: 0, no blur (the chapter skips the blur for z <= 0; a negative z
+//            would point the taps away from the centre, and an infinite one has no taps left)
+//   start    negative or NaN: 0 (a negative w makes |d| - w > |d|: more blur than the formula's
+//            largest, and at the centre pixel of the chapter's formula a division by 0)
+//   samples  1 to kRadialBlurMaxSamples
+// Lengths above 1/7 stay: the far taps then overshoot the centre, as the chapter warns, and lesson 05
+// lets that be seen.
+RadialBlurParams clampedRadialBlurParams(RadialBlurParams params);
+
 // The centre in framebuffer pixels (bottom-left origin) for a target of `size`. The shader takes the
 // centre in pixels, so that a pixel whose centre is the blur centre gets d = 0 exactly.
 glm::vec2 radialBlurCentrePixels(const RadialBlurParams& params, Size2D size);

@@ -39,6 +39,22 @@ TEST(InheritedState, ADeclaredDepthTestStillLeavesWriteAndFunctionOpen) {
                             "face culling: off (inherited)"}));
 }
 
+TEST(InheritedState, APassThatClearsDepthInheritsTheDepthMaskOffEvenWithoutTesting) {
+    // glClear (and glClearBuffer) obey the depth mask: with writes left off by the pass before, the
+    // clear does nothing and the pass keeps last frame's depth. A pass that clears depth depends on the
+    // mask whether or not it tests, and the check names it as it names the depth test.
+    GlStateSnapshot before = afterUiQueue();
+    before.depthWrite = false;
+    PassState clearsOnly{.depthTest = false, .faceCulling = false, .clearDepth = 1.0f};
+    Names names = inheritedDependencies(clearsOnly, before, {.depth = true, .color = false});
+    EXPECT_EQ(names, (Names{"depth write: off (inherited)"}));
+    // Declared, it is named no more; and a pass that neither clears nor tests does not depend on it.
+    clearsOnly.depthWrite = true;
+    EXPECT_TRUE(inheritedDependencies(clearsOnly, before, {.depth = true, .color = false}).empty());
+    PassState neither{.depthTest = false, .faceCulling = false};
+    EXPECT_TRUE(inheritedDependencies(neither, before, {.depth = true, .color = false}).empty());
+}
+
 TEST(InheritedState, ColourPassInheritsBlendingAndItsFunction) {
     Names names = inheritedDependencies(PassState{.faceCulling = false}, afterUiQueue(),
                                         {.depth = false, .color = true});
