@@ -223,7 +223,7 @@ int run(Session& s, const std::string& exe) {
                     s.status = saved ? cat("saved ", presetPath.string()) : saved.error();
                 };
                 model.onLoadPreset = [&, presetPath] {
-                    auto text = readTextFile(presetPath);
+                    auto text = readFile(presetPath, file_limits::preset);
                     Status loaded = text ? s.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
                     s.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
                 };
@@ -330,7 +330,7 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
         s.step = *s.options.step - 1;
     }
     if (!s.options.presetFile.empty()) {
-        auto text = readTextFile(s.options.presetFile);
+        auto text = readFile(s.options.presetFile, file_limits::preset);
         Status loaded = text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});
         if (!loaded) {
             std::cerr << exe << ": --preset: " << loaded.error() << "\n";

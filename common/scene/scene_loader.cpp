@@ -11,6 +11,7 @@
 #include "base/paths.hpp"
 #include "scene/asset_path.hpp"
 #include "scene/json_document.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -36,21 +37,21 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     scene.camera = parseCamera(cameraReader);
 
     AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
-    reader.forEachObject("lights",
+    reader.forEachObject("lights", scene_limits::kMaxLights,
                          [&](JsonFieldReader& light) { scene.lights.push_back(parseLight(light)); });
     std::set<std::string> names;
-    reader.forEachObject("objects", [&](JsonFieldReader& object) {
+    reader.forEachObject("objects", scene_limits::kMaxObjects, [&](JsonFieldReader& object) {
         scene.objects.push_back(parseObject(object, assets));
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)
-            object.warn("name", cat("another object is already called \"", name, "\""));
+            object.warn("name", cat("another object is already called \"", scene_limits::excerpt(name), "\""));
     });
-    reader.forEachObject("emitters", [&](JsonFieldReader& emitter) {
+    reader.forEachObject("emitters", scene_limits::kMaxEmitters, [&](JsonFieldReader& emitter) {
         scene.emitters.push_back(parseEmitter(emitter, assets));
     });
     reader.forEachObject(
-        "clouds", [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
+        "clouds", scene_limits::kMaxClouds, [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
     if (reader.has("postEffects")) {
         auto postReader = reader.object("postEffects");
         scene.postEffects = parsePostEffects(postReader, scene.camera);
@@ -79,8 +80,8 @@ AssetRef AssetPathReader::required(JsonFieldReader& object, std::string_view key
     if (checkExists_) {
         std::error_code ec;
         if (!fs::is_regular_file(asset.resolved, ec))
-            object.fail(
-                key, cat("file not found: ", asset.resolved.string(), " (written as \"", asset.path, "\")"));
+            object.fail(key, cat("file not found: ", asset.resolved.string(), " (written as \"",
+                                 scene_limits::excerpt(asset.path), "\")"));
     }
     return asset;
 }
@@ -108,7 +109,7 @@ Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
 }
 
 Result<Scene> loadScene(const fs::path& file, const SceneLoadOptions& options) {
-    auto text = readTextFile(file);
+    auto text = readFile(file, file_limits::scene);
     if (!text) return Error{text.error()};
     return parseScene(*text, file, options);
 }
