@@ -12,6 +12,7 @@ inline constexpr std::size_t kMaxObjects = 4096;
 inline constexpr std::size_t kMaxLights = 256;
 inline constexpr std::size_t kMaxEmitters = 256;
 inline constexpr std::size_t kMaxClouds = 16;
+inline constexpr std::size_t kMaxClipsPerObject = 256;
 // Any string in the file (names, descriptions, paths, field names), in bytes.
 inline constexpr std::size_t kMaxStringBytes = 4096;
 // Objects and arrays inside one another.

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <exception>
+#include <map>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,8 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "scene/asset_path.hpp"
+#include "scene/clip_selection.hpp"
+#include "scene/gltf_loader.hpp"
 #include "scene/json_document.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
@@ -60,6 +63,29 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     return scene;
 }
 
+// Reads every glTF file the objects name (each file once) and checks the clips they ask for, so that a
+// model that cannot load refuses the scene with the model's path and the reason, instead of a run that
+// quietly draws without it.
+void checkModels(const Scene& scene) {
+    std::map<fs::path, GltfModel> models;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (object.gltf.empty()) continue;
+        const std::string where = indexPath("objects", i);
+        auto cached = models.find(object.gltf.resolved);
+        if (cached == models.end()) {
+            auto model = loadGltf(object.gltf.resolved);
+            if (!model) failField(fieldPath(where, "gltf"), cat("cannot load the model: ", model.error()));
+            cached = models.emplace(object.gltf.resolved, std::move(*model)).first;
+        }
+        if (object.animation.clips.empty()) continue;
+        auto clip = selectClips(cached->second, object.animation);
+        if (!clip)
+            failField(fieldPath(fieldPath(where, "animation"), "clip"),
+                      cat(object.gltf.path, " ", clip.error()));
+    }
+}
+
 }  // namespace
 
 fs::path defaultAssetRoot() {
@@ -95,6 +121,7 @@ Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
     try {
         nlohmann::json root = parseJsonDocument(json);
         Scene scene = parseSections(root, file, options);
+        if (options.checkFilesExist && options.loadModels) checkModels(scene);
         for (const auto& warning : scene.warnings) log::warning(fileName, ": ", warning);
         return scene;
     } catch (const JsonSyntaxError& error) {
