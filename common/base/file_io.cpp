@@ -129,7 +129,8 @@ Status replaceAtomically(const fs::path& path, std::span<const std::byte> bytes)
 }  // namespace
 
 std::string describeByteCount(std::size_t bytes) {
-    if (bytes >= file_limits::kMiB && bytes % file_limits::kMiB == 0) return cat(bytes / file_limits::kMiB, " MiB");
+    if (bytes >= file_limits::kMiB && bytes % file_limits::kMiB == 0)
+        return cat(bytes / file_limits::kMiB, " MiB");
     if (bytes >= 1024 && bytes % 1024 == 0) return cat(bytes / 1024, " KiB");
     return cat(bytes, " bytes");
 }
@@ -139,7 +140,8 @@ Result<std::string> readFile(const fs::path& path, FileLimit limit) {
     Descriptor fd(::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK));
     if (fd.get() < 0) return Error{cat(path.string(), ": cannot open file (", reason(errno), ")")};
     struct stat info {};
-    if (::fstat(fd.get(), &info) != 0) return Error{cat(path.string(), ": cannot read (", reason(errno), ")")};
+    if (::fstat(fd.get(), &info) != 0)
+        return Error{cat(path.string(), ": cannot read (", reason(errno), ")")};
     if (!S_ISREG(info.st_mode))
         return Error{cat(path.string(), ": is ", describeFileType(info.st_mode), ", not a ", limit.kind,
                          " (only regular files are read)")};
