@@ -182,7 +182,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
         s_.status = saved ? cat("saved ", presetPath.string()) : saved.error();
     };
     model.onLoadPreset = [&, presetPath] {
-        auto text = readTextFile(presetPath);
+        auto text = readFile(presetPath, file_limits::preset);
         Status loaded = text ? s_.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
         s_.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
     };

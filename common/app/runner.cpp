@@ -90,7 +90,7 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
     }
     if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
     if (!s.options.presetFile.empty()) {
-        auto text = readTextFile(s.options.presetFile);
+        auto text = readFile(s.options.presetFile, file_limits::preset);
         Status loaded = text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});
         if (!loaded) {
             std::cerr << exe << ": --preset: " << loaded.error() << "\n";

@@ -98,7 +98,7 @@ struct Expander {
 
 Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& includeRoot, std::string_view defines,
                                           const FileReader& reader) {
-    FileReader read = reader ? reader : FileReader([](const fs::path& p) { return readTextFile(p); });
+    FileReader read = reader ? reader : FileReader([](const fs::path& p) { return readFile(p, file_limits::shader); });
     Expander expander{includeRoot, read, {}, {}};
     auto status = expander.expand(file.lexically_normal(), defines, true);
     if (!status) return Error{status.error()};

@@ -90,7 +90,7 @@ Status writePfm(const std::filesystem::path& path, const FloatImage& image) {
 }
 
 Result<FloatImage> readPfm(const std::filesystem::path& path) {
-    auto file = readTextFile(path);
+    auto file = readFile(path, file_limits::pfm);
     if (!file) return Error{file.error()};
     const std::string& bytes = *file;
     const std::string where = path.string();

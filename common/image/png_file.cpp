@@ -76,7 +76,7 @@ Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::s
 }  // namespace
 
 Result<ByteImage> readPng(const std::filesystem::path& path) {
-    auto bytes = readTextFile(path);
+    auto bytes = readFile(path, file_limits::png);
     if (!bytes) return Error{bytes.error()};
     return decodeEncoded(std::as_bytes(std::span(bytes->data(), bytes->size())), path.string(), "PNG image");
 }

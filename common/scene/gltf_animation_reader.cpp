@@ -25,10 +25,9 @@ Status ModelBuilder::readSkin(std::size_t index) {
     }
     skin.inverseBindMatrices.assign(skin.joints.size(), glm::mat4(1.0f));
     if (src.inverseBindMatrices >= 0) {
-        auto r = AccessorReader::open(m_, src.inverseBindMatrices, what + " inverseBindMatrices");
+        auto r = AccessorReader::open(m_, src.inverseBindMatrices, what + " inverseBindMatrices",
+                                      {16, {kFloat}, "float MAT4"});
         if (!r) return Error{r.error()};
-        if (r->components() != 16 || r->componentType() != kFloat)
-            return Error{cat(what, ": inverseBindMatrices must be float MAT4")};
         if (r->count() < skin.joints.size())
             return Error{
                 cat(what, ": ", r->count(), " inverse bind matrices for ", skin.joints.size(), " joints")};
@@ -98,17 +97,16 @@ Status ModelBuilder::readAnimation(std::size_t index) {
         } else {
             channel.interpolation = Interpolation::linear;  // the default, and "LINEAR"
         }
-        auto input = AccessorReader::open(m_, sampler.input, where + " input");
+        auto input = AccessorReader::open(m_, sampler.input, where + " input", {1, {kFloat}, "float scalars"});
         if (!input) return Error{input.error()};
-        auto output = AccessorReader::open(m_, sampler.output, where + " output");
+        bool rotation = channel.property == AnimatedProperty::rotation;
+        auto output = AccessorReader::open(m_, sampler.output, where + " output",
+                                           {rotation ? 4 : 3, {}, rotation ? "VEC4 for rotation" : "VEC3"});
         if (!output) return Error{output.error()};
-        int needed = channel.property == AnimatedProperty::rotation ? 4 : 3;
-        if (input->components() != 1) return Error{cat(where, ": key times must be scalars")};
-        if (output->components() != needed)
-            return Error{cat(where, ": values must have ", needed, " components for ", ch.target_path)};
         std::size_t keys = input->count();
         std::size_t perKey = channel.interpolation == Interpolation::cubicSpline ? 3 : 1;
-        if (output->count() != keys * perKey)
+        std::size_t values = 0;
+        if (!multiplyFits(keys, perKey, values) || output->count() != values)
             return Error{cat(where, ": ", output->count(), " values for ", keys, " keys")};
         for (std::size_t k = 0; k < keys; ++k) {
             float t = input->real(k, 0);

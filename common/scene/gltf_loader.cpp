@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "scene/gltf_model_builder.hpp"
 
@@ -27,13 +28,55 @@ bool captureImage(tinygltf::Image* image, const int index, std::string*, std::st
     return true;
 }
 
+// Every file tinygltf reads (the .gltf or .glb, its .bin buffers, its images) goes through fxlab's
+// reader: regular files only, within the glTF size limit, with the system's reason on failure.
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    auto bytes = readFile(path, file_limits::gltf);
+    if (!bytes) {
+        if (err) *err += bytes.error();
+        return false;
+    }
+    out->assign(bytes->begin(), bytes->end());
+    return true;
+}
+
+void useFxlabFileReader(tinygltf::TinyGLTF& loader) {
+    tinygltf::FsCallbacks callbacks{};
+    callbacks.FileExists = &tinygltf::FileExists;
+    callbacks.ExpandFilePath = &tinygltf::ExpandFilePath;
+    callbacks.ReadWholeFile = &readWholeFile;
+    callbacks.WriteWholeFile = &tinygltf::WriteWholeFile;
+    callbacks.user_data = nullptr;
+    loader.SetFsCallbacks(callbacks);
+}
+
+// Extensions fxlab reads; any other one a file *requires* changes what the file means (compressed
+// geometry, for one), so such a file is refused rather than drawn wrong.
+constexpr std::string_view kSupportedExtensions[] = {"KHR_materials_emissive_strength"};
+
+bool supported(const std::string& extension) {
+    for (std::string_view known : kSupportedExtensions)
+        if (extension == known) return true;
+    return false;
+}
+
+std::string trimmed(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    return text;
+}
+
 Result<GltfModel> finish(bool ok, const tinygltf::Model& m, const std::string& err, const std::string& warn,
                          const fs::path& file, const fs::path& baseDir, CapturedImages& images) {
     if (!ok) {
-        std::string message = err.empty() ? "tinygltf could not read it" : err;
-        while (!message.empty() && message.back() == '\n') message.pop_back();
+        // tinygltf sometimes puts its only reason among the warnings.
+        std::string message = trimmed(err.empty() ? warn : err);
+        if (message.empty()) message = "tinygltf refused it without giving a reason";
         return Error{cat(file.string(), ": ", message)};
     }
+    for (const std::string& extension : m.extensionsRequired)
+        if (!supported(extension))
+            return Error{cat(file.string(), ": requires the extension ", extension,
+                             ", which fxlab does not implement")};
     auto model = ModelBuilder(m, file, baseDir, images).build();
     if (!model) return Error{cat(file.string(), ": ", model.error())};
     // tinygltf's own warnings, one per line.
@@ -44,6 +87,8 @@ Result<GltfModel> finish(bool ok, const tinygltf::Model& m, const std::string& e
         if (end > start) model->warnings.push_back(warn.substr(start, end - start));
         start = end + 1;
     }
+    for (const std::string& extension : m.extensionsUsed)
+        if (!supported(extension)) model->warnings.push_back(cat("extension ", extension, " is ignored"));
     for (const auto& w : model->warnings) log::warning(file.filename().string(), ": ", w);
     return model;
 }
@@ -98,8 +143,9 @@ void computeNormals(MeshData& mesh) {
 
 Result<GltfModel> loadGltf(const fs::path& file) {
     std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) return Error{cat(file.string(), ": no such file")};
+    if (!fs::exists(file, ec)) return Error{cat(file.string(), ": no such file")};
     tinygltf::TinyGLTF loader;
+    useFxlabFileReader(loader);
     CapturedImages images;
     loader.SetImageLoader(&captureImage, &images);
     tinygltf::Model m;
@@ -112,6 +158,7 @@ Result<GltfModel> loadGltf(const fs::path& file) {
 
 Result<GltfModel> parseGltf(const std::string& json, const fs::path& baseDir, const fs::path& nominalFile) {
     tinygltf::TinyGLTF loader;
+    useFxlabFileReader(loader);
     CapturedImages images;
     loader.SetImageLoader(&captureImage, &images);
     tinygltf::Model m;

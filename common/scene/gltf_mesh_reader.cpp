@@ -19,11 +19,10 @@ Status ModelBuilder::readIndices(const tinygltf::Primitive& p, std::size_t verti
                                  std::vector<std::uint32_t>& out) {
     std::vector<std::uint32_t> raw;
     if (p.indices >= 0) {
-        auto r = AccessorReader::open(m_, p.indices, what + " indices");
+        auto r = AccessorReader::open(m_, p.indices, what + " indices",
+                                      {1, {kUnsignedByte, kUnsignedShort, kUnsignedInt},
+                                       "unsigned 8-, 16- or 32-bit scalars"});
         if (!r) return Error{r.error()};
-        int type = r->componentType();
-        if (r->components() != 1 || (type != kUnsignedByte && type != kUnsignedShort && type != kUnsignedInt))
-            return Error{cat(what, ": indices must be unsigned 8-, 16- or 32-bit scalars")};
         raw.resize(r->count());
         for (std::size_t i = 0; i < raw.size(); ++i) {
             raw[i] = r->whole(i, 0);
@@ -68,9 +67,8 @@ Status ModelBuilder::readMesh(std::size_t meshIndex) {
         };
         int positionIndex = attribute("POSITION");
         if (positionIndex < 0) return Error{cat(what, ": has no POSITION attribute")};
-        auto positions = AccessorReader::open(m_, positionIndex, what + " POSITION");
+        auto positions = AccessorReader::open(m_, positionIndex, what + " POSITION", {3, {}, "VEC3"});
         if (!positions) return Error{positions.error()};
-        if (positions->components() != 3) return Error{cat(what, ": POSITION must be VEC3")};
         std::size_t n = positions->count();
 
         ModelPrimitive prim;
@@ -88,24 +86,23 @@ Status ModelBuilder::readMesh(std::size_t meshIndex) {
             data.positions[i] = v;
         }
         // Optional attributes must match the vertex count.
-        auto openSized = [&](const char* name, int components) -> Result<std::optional<AccessorReader>> {
+        auto openSized = [&](const char* name, const AccessorShape& shape) -> Result<std::optional<AccessorReader>> {
             int index = attribute(name);
             if (index < 0) return std::optional<AccessorReader>{};
-            auto r = AccessorReader::open(m_, index, cat(what, " ", name));
+            auto r = AccessorReader::open(m_, index, cat(what, " ", name), shape);
             if (!r) return Error{r.error()};
             if (r->count() != n)
                 return Error{cat(what, ": ", name, " has ", r->count(), " elements for ", n, " vertices")};
-            if (r->components() != components)
-                return Error{cat(what, ": ", name, " must have ", components, " components")};
             return std::optional<AccessorReader>{*r};
         };
-        auto normals = openSized("NORMAL", 3);
+        auto normals = openSized("NORMAL", {3, {}, "VEC3"});
         if (!normals) return Error{normals.error()};
-        auto uvs = openSized("TEXCOORD_0", 2);
+        auto uvs = openSized("TEXCOORD_0", {2, {}, "VEC2"});
         if (!uvs) return Error{uvs.error()};
-        auto joints = openSized("JOINTS_0", 4);
+        auto joints = openSized("JOINTS_0", {4, {kUnsignedByte, kUnsignedShort}, "unsigned 8- or 16-bit VEC4"});
         if (!joints) return Error{joints.error()};
-        auto weights = openSized("WEIGHTS_0", 4);
+        auto weights = openSized("WEIGHTS_0", {4, {kFloat, kUnsignedByte, kUnsignedShort},
+                                               "VEC4 of float or normalised unsigned 8- or 16-bit"});
         if (!weights) return Error{weights.error()};
 
         data.uvs.assign(n, glm::vec2(0.0f));
@@ -122,9 +119,6 @@ Status ModelBuilder::readMesh(std::size_t meshIndex) {
             prim.generatedNormals = true;
         }
         if (*joints && *weights) {
-            int type = (*joints)->componentType();
-            if (type != kUnsignedByte && type != kUnsignedShort)
-                return Error{cat(what, ": JOINTS_0 must be unsigned 8- or 16-bit")};
             prim.influences.resize(n);
             for (std::size_t i = 0; i < n; ++i) {
                 JointInfluence& inf = prim.influences[i];

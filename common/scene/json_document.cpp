@@ -5,6 +5,7 @@
 
 #include "base/log.hpp"
 #include "scene/json_field_reader.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace fx {
 namespace {
@@ -33,11 +34,20 @@ public:
     bool number_integer(number_integer_t value) override { return add(value); }
     bool number_unsigned(number_unsigned_t value) override { return add(value); }
     bool number_float(number_float_t value, const string_t&) override { return add(value); }
-    bool string(string_t& value) override { return add(std::move(value)); }
+    bool string(string_t& value) override {
+        checkLength(value, "a string");
+        return add(std::move(value));
+    }
     bool binary(binary_t& value) override { return add(Json::binary(std::move(value))); }
 
     bool start_object(std::size_t) override { return open(Json::object()); }
     bool key(string_t& key) override {
+        checkLength(key, "a field name");
+        // nlohmann keeps the last of two equal keys; other JSON readers keep the first. Either way one
+        // value is dropped without a word, so a repeated key is an error.
+        if (stack_.back().container->contains(key))
+            failField(fieldPath(containerPath(), key),
+                      "appears twice in the same object; JSON readers disagree on which one counts");
         key_ = std::move(key);
         return true;
     }
@@ -72,17 +82,29 @@ private:
         std::string key;  // its member name, when its parent is an object
     };
 
-    // Where the next value goes: a member of the innermost object, the next element of the innermost
-    // array, or the root. Built only for a message, so deep nesting costs no long strings while parsing.
-    std::string nextPath() const {
-        if (stack_.empty()) return "(top level)";
+    // The JSON path of the innermost open object or array ("" for the top level).
+    std::string containerPath() const {
         std::string path;
         for (std::size_t i = 1; i < stack_.size(); ++i) {
             const Json& parent = *stack_[i - 1].container;
             path = parent.is_object() ? fieldPath(path, stack_[i].key) : indexPath(path, parent.size() - 1);
         }
+        return path;
+    }
+
+    // Where the next value goes: a member of the innermost object, the next element of the innermost
+    // array, or the root. Built only for a message, so deep nesting costs no long strings while parsing.
+    std::string nextPath() const {
+        if (stack_.empty()) return "(top level)";
         const Json& top = *stack_.back().container;
-        return top.is_object() ? fieldPath(path, key_) : indexPath(path, top.size());
+        return top.is_object() ? fieldPath(containerPath(), key_) : indexPath(containerPath(), top.size());
+    }
+
+    void checkLength(const std::string& text, std::string_view what) const {
+        if (text.size() > scene_limits::kMaxStringBytes)
+            failField(stack_.empty() ? "(top level)" : (what == "a field name" ? containerPath() : nextPath()),
+                      cat(what, " of ", text.size(), " bytes (\"", scene_limits::excerpt(text),
+                          "\"); a scene allows at most ", scene_limits::kMaxStringBytes));
     }
 
     Json* place(Json value) {
@@ -102,6 +124,9 @@ private:
     }
 
     bool open(Json container) {
+        if (stack_.size() >= scene_limits::kMaxNesting)
+            failField(nextPath(), cat("objects and arrays nest more than ", scene_limits::kMaxNesting,
+                                      " deep; a scene needs far fewer"));
         bool inObject = !stack_.empty() && stack_.back().container->is_object();
         stack_.push_back({place(std::move(container)), inObject ? key_ : std::string()});
         return true;
@@ -121,6 +146,14 @@ private:
 }  // namespace
 
 Json parseJsonDocument(std::string_view text) {
+    // nlohmann stops at a NUL byte as if the text ended there: a NUL-only file would read as "unexpected
+    // end of input", and one after the document would pass unseen. Text files have none.
+    if (auto nul = text.find('\0'); nul != std::string_view::npos)
+        throw JsonSyntaxError{textPositionOf(text, nul),
+                              "a NUL byte (code 0): a scene file is text, and this one is not"};
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+        throw JsonSyntaxError{textPositionOf(text, text.size()),
+                              text.empty() ? "the file is empty" : "the file holds only white space"};
     TreeBuilder builder(text);
     Json::sax_parse(text.begin(), text.end(), &builder);
     return builder.take();

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "base/log.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace fx {
 
@@ -51,14 +52,20 @@ void failField(std::string path, std::string reason) {
     throw SceneFieldError{std::move(path), std::move(reason)};
 }
 
-double readNumber(const nlohmann::json& value, const std::string& path, NumberRange range) {
+float readNumber(const nlohmann::json& value, const std::string& path, NumberRange range) {
     if (!value.is_number()) failField(path, cat("expected a number, got ", describeJsonType(value)));
     double number = value.get<double>();
     // JSON has no NaN or infinity, but a literal such as 1e400 parses as infinity.
     if (!std::isfinite(number))
         failField(path, "the number is not finite (too large for a double: it overflowed)");
     if (!range.contains(number)) failField(path, cat(number, " is out of range ", range.text()));
-    return number;
+    // The program uses the value as a float: 1e-300 passes as a double and is 0 as a float, and
+    // 179.99999999 rounds up to 180. Check what the program will see.
+    const float asFloat = static_cast<float>(number);
+    if (!range.contains(double(asFloat)))
+        failField(path, cat(number, " becomes ", asFloat, " as a float (the precision fxlab computes with), which is out of range ",
+                            range.text()));
+    return asFloat;
 }
 
 int readInteger(const nlohmann::json& value, const std::string& path, NumberRange range) {
@@ -78,8 +85,7 @@ void readNumbers(const nlohmann::json& value, const std::string& path, float* ou
     if (value.size() != static_cast<std::size_t>(count))
         failField(path, cat("expected ", count, " numbers, got ", value.size()));
     for (int i = 0; i < count; ++i)
-        out[i] = static_cast<float>(readNumber(value[static_cast<std::size_t>(i)],
-                                               indexPath(path, static_cast<std::size_t>(i)), range));
+        out[i] = readNumber(value[static_cast<std::size_t>(i)], indexPath(path, static_cast<std::size_t>(i)), range);
 }
 
 JsonFieldReader::JsonFieldReader(const nlohmann::json& value, std::string path,
@@ -108,11 +114,11 @@ const nlohmann::json& JsonFieldReader::required(std::string_view key) {
 
 float JsonFieldReader::number(std::string_view key, float fallback, NumberRange range) {
     const nlohmann::json* value = find(key);
-    return value ? static_cast<float>(readNumber(*value, pathOf(key), range)) : fallback;
+    return value ? readNumber(*value, pathOf(key), range) : fallback;
 }
 
 float JsonFieldReader::requiredNumber(std::string_view key, NumberRange range) {
-    return static_cast<float>(readNumber(required(key), pathOf(key), range));
+    return readNumber(required(key), pathOf(key), range);
 }
 
 int JsonFieldReader::integer(std::string_view key, int fallback, NumberRange range) {
@@ -185,7 +191,7 @@ void JsonFieldReader::reportUnknown(std::string_view kind) {
         if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
         std::string hint;
         if (auto near = closestName(it.key(), known_)) hint = cat(" (did you mean \"", *near, "\"?)");
-        warn(it.key(), cat("unknown ", kind, ", ignored", hint));
+        warnings_.push_back(cat(pathOf(scene_limits::excerpt(it.key())), ": unknown ", kind, ", ignored", hint));
     }
 }
 

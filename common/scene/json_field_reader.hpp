@@ -16,6 +16,7 @@
 #include "base/log.hpp"
 #include "scene/closest_name.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace fx {
 
@@ -50,7 +51,8 @@ std::string describeJsonType(const nlohmann::json& value);
 [[noreturn]] void failField(std::string path, std::string reason);
 
 // Value readers for one JSON value at `path`.
-double readNumber(const nlohmann::json& value, const std::string& path, NumberRange range);
+// The number as the float the program will use; the range is checked on that float too.
+float readNumber(const nlohmann::json& value, const std::string& path, NumberRange range);
 int readInteger(const nlohmann::json& value, const std::string& path, NumberRange range);
 void readNumbers(const nlohmann::json& value, const std::string& path, float* out, int count,
                  NumberRange range);
@@ -94,13 +96,16 @@ public:
     JsonFieldReader child(const nlohmann::json& value, std::string path) {
         return JsonFieldReader(value, std::move(path), warnings_);
     }
-    // Calls visit(JsonFieldReader&) for each element of an optional array of objects.
+    // Calls visit(JsonFieldReader&) for each element of an optional array of at most `maxCount` objects.
     template <class Visit>
-    void forEachObject(std::string_view key, Visit visit) {
+    void forEachObject(std::string_view key, std::size_t maxCount, Visit visit) {
         if (!has(key)) return;
         const nlohmann::json& array = *find(key);
         if (!array.is_array())
             failField(pathOf(key), cat("expected an array, got ", describeJsonType(array)));
+        if (array.size() > maxCount)
+            failField(pathOf(key), cat(array.size(), " entries; a scene may have at most ", maxCount,
+                                       " (docs/scene-format.md, Limits)"));
         for (std::size_t i = 0; i < array.size(); ++i) {
             JsonFieldReader element(array[i], indexPath(pathOf(key), i), warnings_);
             visit(element);
@@ -132,7 +137,8 @@ private:
         for (const auto& entry : enumNames(E{})) names.emplace_back(entry.name);
         std::string hint;
         if (auto near = closestName(name, names)) hint = cat(" (did you mean \"", *near, "\"?)");
-        failField(pathOf(key), cat("unknown value \"", name, "\"", hint, "; allowed: ", allowedNames<E>()));
+        failField(pathOf(key), cat("unknown value \"", scene_limits::excerpt(name), "\"", hint,
+                                   "; allowed: ", allowedNames<E>()));
     }
 
     const nlohmann::json& value_;

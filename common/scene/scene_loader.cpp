@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <exception>
+#include <map>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -10,7 +11,10 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "scene/asset_path.hpp"
+#include "scene/clip_selection.hpp"
+#include "scene/gltf_loader.hpp"
 #include "scene/json_document.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -36,27 +40,50 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     scene.camera = parseCamera(cameraReader);
 
     AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
-    reader.forEachObject("lights",
+    reader.forEachObject("lights", scene_limits::kMaxLights,
                          [&](JsonFieldReader& light) { scene.lights.push_back(parseLight(light)); });
     std::set<std::string> names;
-    reader.forEachObject("objects", [&](JsonFieldReader& object) {
+    reader.forEachObject("objects", scene_limits::kMaxObjects, [&](JsonFieldReader& object) {
         scene.objects.push_back(parseObject(object, assets));
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)
-            object.warn("name", cat("another object is already called \"", name, "\""));
+            object.warn("name", cat("another object is already called \"", scene_limits::excerpt(name), "\""));
     });
-    reader.forEachObject("emitters", [&](JsonFieldReader& emitter) {
+    reader.forEachObject("emitters", scene_limits::kMaxEmitters, [&](JsonFieldReader& emitter) {
         scene.emitters.push_back(parseEmitter(emitter, assets));
     });
     reader.forEachObject(
-        "clouds", [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
+        "clouds", scene_limits::kMaxClouds, [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
     if (reader.has("postEffects")) {
         auto postReader = reader.object("postEffects");
         scene.postEffects = parsePostEffects(postReader, scene.camera);
     }
     reader.reportUnknown();
     return scene;
+}
+
+// Reads every glTF file the objects name (each file once) and checks the clips they ask for, so that a
+// model that cannot load refuses the scene with the model's path and the reason, instead of a run that
+// quietly draws without it.
+void checkModels(const Scene& scene) {
+    std::map<fs::path, GltfModel> models;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (object.gltf.empty()) continue;
+        const std::string where = indexPath("objects", i);
+        auto cached = models.find(object.gltf.resolved);
+        if (cached == models.end()) {
+            auto model = loadGltf(object.gltf.resolved);
+            if (!model) failField(fieldPath(where, "gltf"), cat("cannot load the model: ", model.error()));
+            cached = models.emplace(object.gltf.resolved, std::move(*model)).first;
+        }
+        if (object.animation.clips.empty()) continue;
+        auto clip = selectClips(cached->second, object.animation);
+        if (!clip)
+            failField(fieldPath(fieldPath(where, "animation"), "clip"),
+                      cat(object.gltf.path, " ", clip.error()));
+    }
 }
 
 }  // namespace
@@ -79,8 +106,8 @@ AssetRef AssetPathReader::required(JsonFieldReader& object, std::string_view key
     if (checkExists_) {
         std::error_code ec;
         if (!fs::is_regular_file(asset.resolved, ec))
-            object.fail(
-                key, cat("file not found: ", asset.resolved.string(), " (written as \"", asset.path, "\")"));
+            object.fail(key, cat("file not found: ", asset.resolved.string(), " (written as \"",
+                                 scene_limits::excerpt(asset.path), "\")"));
     }
     return asset;
 }
@@ -94,6 +121,7 @@ Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
     try {
         nlohmann::json root = parseJsonDocument(json);
         Scene scene = parseSections(root, file, options);
+        if (options.checkFilesExist && options.loadModels) checkModels(scene);
         for (const auto& warning : scene.warnings) log::warning(fileName, ": ", warning);
         return scene;
     } catch (const JsonSyntaxError& error) {
@@ -108,7 +136,7 @@ Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
 }
 
 Result<Scene> loadScene(const fs::path& file, const SceneLoadOptions& options) {
-    auto text = readTextFile(file);
+    auto text = readFile(file, file_limits::scene);
     if (!text) return Error{text.error()};
     return parseScene(*text, file, options);
 }

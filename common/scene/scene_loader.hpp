@@ -20,6 +20,10 @@ struct SceneLoadOptions {
     // Refuse a scene whose glTF files or textures do not exist. Off for scenes whose assets a tool
     // generates later.
     bool checkFilesExist = true;
+    // With checkFilesExist: read every glTF model the scene names and check the clips objects ask for,
+    // refusing a scene whose model cannot load (with the model's path and the reason). Off where only
+    // the scene text matters.
+    bool loadModels = true;
 };
 
 Result<Scene> loadScene(const std::filesystem::path& file, const SceneLoadOptions& options = {});

@@ -3,6 +3,7 @@
 // an optional animation clip (glTF only) and an optional simple motion.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -44,11 +45,13 @@ struct Material {
     bool operator==(const Material&) const = default;
 };
 
-// A clip from the object's glTF file; an empty clip name means no animation.
+// Clips from the object's glTF file, played together: one name, several (a file that keeps one clip per
+// joint), or {"*"} for every clip the file has. No names means no animation.
 struct Animation {
-    std::string clip;
+    std::vector<std::string> clips;
     float speed = 1.0f;  // playback rate; negative plays backwards
 
+    bool playsAllClips() const { return clips.size() == 1 && clips[0] == "*"; }
     bool operator==(const Animation&) const = default;
 };
 

@@ -1,5 +1,6 @@
 // Reads one entry of "objects": what it is (primitive or glTF), where, its material and how it moves.
 #include "base/log.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -61,10 +62,35 @@ Material parseMaterial(JsonFieldReader& reader, const AssetPathReader& assets) {
     return material;
 }
 
+// "clip": "walk", ["upper", "lower"] or "*" (every clip in the file).
 Animation parseAnimation(JsonFieldReader& reader) {
     Animation animation;
-    animation.clip = reader.requiredText("clip");
-    if (animation.clip.empty()) reader.fail("clip", "the clip name is empty");
+    const nlohmann::json& clip = reader.required("clip");
+    const std::string path = reader.pathOf("clip");
+    if (clip.is_string()) {
+        animation.clips.push_back(clip.get<std::string>());
+    } else if (clip.is_array()) {
+        if (clip.empty()) reader.fail("clip", "the list of clips is empty");
+        if (clip.size() > scene_limits::kMaxClipsPerObject)
+            reader.fail("clip", cat(clip.size(), " clips; an object may play at most ",
+                                    scene_limits::kMaxClipsPerObject));
+        for (std::size_t i = 0; i < clip.size(); ++i) {
+            if (!clip[i].is_string())
+                failField(indexPath(path, i), cat("expected a clip name, got ", describeJsonType(clip[i])));
+            const std::string& name = clip[i].get_ref<const std::string&>();
+            if (name == "*")
+                failField(indexPath(path, i), "\"*\" (every clip) stands alone: write \"clip\": \"*\"");
+            for (const std::string& before : animation.clips)
+                if (before == name)
+                    failField(indexPath(path, i), cat("\"", scene_limits::excerpt(name), "\" is listed twice"));
+            animation.clips.push_back(name);
+        }
+    } else {
+        reader.fail("clip", cat("expected a clip name, a list of names or \"*\", got ", describeJsonType(clip)));
+    }
+    for (std::size_t i = 0; i < animation.clips.size(); ++i)
+        if (animation.clips[i].empty())
+            failField(clip.is_array() ? indexPath(path, i) : path, "the clip name is empty");
     animation.speed = reader.number("speed", animation.speed, NumberRange::closed(-100.0, 100.0));
     reader.reportUnknown();
     return animation;
@@ -127,7 +153,7 @@ SceneObject parseObject(JsonFieldReader& reader, const AssetPathReader& assets) 
         auto animationReader = reader.object("animation");
         object.animation = parseAnimation(animationReader);
     }
-    object.skinned = hasGltf && !object.animation.clip.empty();
+    object.skinned = hasGltf && !object.animation.clips.empty();
     if (reader.has("motion")) {
         auto motionReader = reader.object("motion");
         object.motion = parseMotion(motionReader);

@@ -150,8 +150,11 @@ Json objectJson(const SceneObject& object) {
     if (object.material != Material{}) json["material"] = materialJson(object.material);
     if (!object.castsShadows) json["castsShadows"] = false;
     if (!object.receivesShadows) json["receivesShadows"] = false;
-    if (!object.animation.clip.empty())
-        json["animation"] = Json{{"clip", object.animation.clip}, {"speed", number(object.animation.speed)}};
+    if (!object.animation.clips.empty()) {
+        const auto& clips = object.animation.clips;
+        json["animation"] = Json{{"clip", clips.size() == 1 ? Json(clips[0]) : Json(clips)},
+                                 {"speed", number(object.animation.speed)}};
+    }
     if (object.moves()) json["motion"] = motionJson(object.motion);
     return json;
 }

@@ -210,7 +210,7 @@ TEST_F(SceneWorkGraph, EachFeatureAddsExactlyItsPassesTexturesAndUpdates) {
              SceneObject character;
              character.name = "character";
              character.gltf.path = "../models/character.gltf";
-             character.animation.clip = "walk";
+             character.animation.clips = {"walk"};
              character.skinned = true;
              s.objects.push_back(character);
          },

@@ -4,6 +4,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "scene/clip_selection.hpp"
 #include "scene/gltf_loader.hpp"
 
 namespace fx {
@@ -59,12 +60,13 @@ SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
             cached = files_.emplace(key, std::make_shared<const GltfModel>(std::move(*loaded))).first;
         }
         meshes.model = std::make_unique<GpuModel>(cached->second, *textures_, label);
-        if (!object.animation.clip.empty()) {
-            meshes.clip = cached->second->findClip(object.animation.clip);
+        if (!object.animation.clips.empty()) {
+            auto clip = selectClips(*cached->second, object.animation);
             meshes.speed = object.animation.speed;
-            if (!meshes.clip)
-                log::warning(label, ": ", object.gltf.path, " has no clip '", object.animation.clip,
-                             "'; drawn in its rest pose");
+            if (clip)
+                meshes.clip = std::make_shared<const AnimationClip>(std::move(*clip));
+            else
+                log::warning(label, ": ", object.gltf.path, " ", clip.error(), "; drawn in its rest pose");
         }
         needsSkinning = needsSkinning || meshes.model->skinnedMeshes() > 0;
         objects_.push_back(std::move(meshes));
@@ -110,7 +112,7 @@ void SceneMeshes::pose(double seconds) const {
         if (!o.model || !o.clip) continue;
         // Wrapped in double precision first: hours of play give the same pose as the first loop.
         clipTimes_[i] = fx::clipTime(seconds * double(o.speed), o.clip->duration);
-        o.model->animate(o.clip, clipTimes_[i], skinning_.get());
+        o.model->animate(o.clip.get(), clipTimes_[i], skinning_.get());
         if (o.model->skinnedMeshes() > 0) any = true;
     }
     if (any) ++skinningUpdates_;

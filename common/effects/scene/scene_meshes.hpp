@@ -108,7 +108,7 @@ private:
         GpuMesh primitive;
         GLuint baseColorTexture = 0;
         std::unique_ptr<GpuModel> model;
-        const AnimationClip* clip = nullptr;
+        std::shared_ptr<const AnimationClip> clip;  // the object's clips, merged (clip_selection.hpp)
         float speed = 1.0f;
     };
     std::vector<ObjectMeshes> objects_;

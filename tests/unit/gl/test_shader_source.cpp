@@ -108,3 +108,14 @@ TEST(ShaderSource, CompilerLogsOfThreeVendorsAreMapped) {
               "common/a.glsl:7: ERROR: 'z' : undeclared identifier\n");
     EXPECT_EQ(mapCompilerLog("7:1(1): error: odd\n", names), "<source 7>:1:1: error: odd\n");
 }
+
+// A folder given as a shader used to read as an empty file and fail with "the first directive must be
+// #version"; the reader now says what the path is.
+TEST(ShaderSource, AFolderIsNamedAsAFolderNotAMissingVersion) {
+    Files files;
+    fs::create_directories(files.root / "lit.frag");
+    auto expanded = expandShaderSource(files.root / "lit.frag", files.root);
+    ASSERT_FALSE(expanded.ok());
+    EXPECT_NE(expanded.error().find("is a folder, not a shader"), std::string::npos) << expanded.error();
+    EXPECT_EQ(expanded.error().find("#version"), std::string::npos) << expanded.error();
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -448,3 +449,124 @@ TEST_F(GeneratedCharacter, MaterialsAndTexturesResolve) {
 }
 
 }  // namespace
+
+namespace {
+
+// A mesh of one triangle plus a one-channel animation, for the hostile-number tests below.
+struct Hostile {
+    Doc d;
+    int positions, indices, times, values;
+    Hostile() {
+        positions = d.floats({0, 0, 0, 1, 0, 0, 1, 1, 0}, "VEC3", 3);
+        indices = d.accessor(std::vector<std::uint16_t>{0, 1, 2}, 5123, "SCALAR", 3);
+        values = d.floats({0, 0, 0, 1, 1, 1}, "VEC3", 3);
+        times = d.floats({0, 1}, "SCALAR", 1);  // last: its data ends the buffer
+        d["meshes"] = json::array(
+            {{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}}});
+        d["nodes"] = json::array({{{"mesh", 0}}});
+        d["animations"] = json::array(
+            {{{"name", "move"},
+              {"samplers", {{{"input", times}, {"output", values}}}},
+              {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}});
+    }
+    json& accessor(int index) { return d["accessors"][std::size_t(index)]; }
+};
+
+}  // namespace
+
+// 2^62 elements of 4 bytes at the end of the buffer: stride * (count - 1) + 4 wraps around to a small
+// number, which passed the old bounds check and let the animation reader walk off the heap buffer.
+TEST(GltfLoader, HugeCountsAreRefusedNotWrappedAround) {
+    for (std::uint64_t count : {std::uint64_t(1) << 62, std::uint64_t(1) << 63, ~std::uint64_t(0)}) {
+        for (const char* which : {"times", "positions", "indices"}) {
+            SCOPED_TRACE(std::string(which) + " " + std::to_string(count));
+            Hostile h;
+            int index = std::string(which) == "times" ? h.times : std::string(which) == "positions" ? h.positions
+                                                                                                    : h.indices;
+            h.accessor(index)["count"] = count;
+            auto model = parse(h.d.finish());
+            ASSERT_FALSE(model.ok());
+            EXPECT_TRUE(scene_test::contains(model.error(), "test.gltf")) << model.error();
+            EXPECT_TRUE(scene_test::contains(model.error(), "elements")) << model.error();
+        }
+    }
+}
+
+TEST(GltfLoader, AnAccessorWithoutDataCannotAskForUnboundedMemory) {
+    Hostile h;
+    h.accessor(h.positions).erase("bufferView");  // all zeros, as many as it says
+    h.accessor(h.positions)["count"] = std::uint64_t(1) << 40;
+    auto model = parse(h.d.finish());
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(), "fxlab reads at most 16777216 per accessor")) << model.error();
+}
+
+TEST(GltfLoader, HugeOffsetsAndStridesAreRefused) {
+    struct Case {
+        const char* what;
+        std::function<void(Hostile&)> mutate;
+        const char* expected;
+    };
+    std::vector<Case> cases = {
+        {"view offset", [](Hostile& h) { h.d["bufferViews"][0]["byteOffset"] = ~std::uint64_t(0) - 4; },
+         "lies outside its buffer"},
+        {"view length", [](Hostile& h) { h.d["bufferViews"][0]["byteLength"] = ~std::uint64_t(0); },
+         "lies outside its buffer"},
+        {"accessor offset", [](Hostile& h) { h.accessor(h.positions)["byteOffset"] = ~std::uint64_t(0) - 8; },
+         "reads past the end of buffer view"},
+        {"stride", [](Hostile& h) { h.d["bufferViews"][0]["byteStride"] = 252; },
+         "reads past the end of buffer view"},
+        {"stride below an element", [](Hostile& h) { h.d["bufferViews"][0]["byteStride"] = 4; },
+         "less than one element"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.what);
+        Hostile h;
+        c.mutate(h);
+        auto model = parse(h.d.finish());
+        ASSERT_FALSE(model.ok());
+        EXPECT_TRUE(scene_test::contains(model.error(), "test.gltf")) << model.error();
+    }
+}
+
+TEST(GltfLoader, AFloatJointsAccessorIsNamedAsTheWrongTypeNotAsReadingPastTheBuffer) {
+    Doc d;
+    int pos = d.floats({0, 0, 0, 1, 0, 0, 1, 1, 0}, "VEC3", 3);
+    // Joints written as bytes (12 bytes) but declared float: read as float it would need 48 bytes.
+    int joints = d.accessor(std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 5126, "VEC4", 3);
+    int weights = d.floats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4", 4);
+    d["meshes"] = json::array(
+        {{{"primitives", {{{"attributes", {{"POSITION", pos}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}}}}}}});
+    auto model = parse(d.finish());
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(), "JOINTS_0: must be unsigned 8- or 16-bit VEC4, not float"))
+        << model.error();
+}
+
+TEST(GltfLoader, RequiredExtensionsFxlabDoesNotImplementAreRefusedByName) {
+    std::string text = quad(5123);
+    json doc = json::parse(text);
+    doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    auto model = parse(doc.dump());
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(),
+                                     "requires the extension KHR_draco_mesh_compression, which fxlab does not implement"))
+        << model.error();
+    // Used but not required: loaded, with a warning naming it.
+    doc.erase("extensionsRequired");
+    doc["extensionsUsed"] = {"EXT_texture_webp"};
+    auto used = parse(doc.dump());
+    ASSERT_TRUE(used.ok()) << used.error();
+    ASSERT_EQ(used->warnings.size(), 1u);
+    EXPECT_TRUE(scene_test::contains(used->warnings[0], "EXT_texture_webp")) << used->warnings[0];
+}
+
+TEST(GltfLoader, AFolderOrDeviceIsRefusedWithTheReadersReason) {
+    auto folder = fx::loadGltf(FXLAB_TEST_DATA);
+    ASSERT_FALSE(folder.ok());
+    EXPECT_TRUE(scene_test::contains(folder.error(), "is a folder")) << folder.error();
+    auto device = fx::loadGltf("/dev/zero");
+    ASSERT_FALSE(device.ok());
+    EXPECT_TRUE(scene_test::contains(device.error(), "character device")) << device.error();
+}

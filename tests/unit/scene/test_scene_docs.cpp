@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/file_io.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_test_support.hpp"
 
@@ -41,6 +42,28 @@ TEST(SceneDocs, ExamplesMatchTheFixturesAndLoad) {
             EXPECT_TRUE(scene->warnings.empty());
         }
     }
+}
+
+TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
+    auto markdown = fx::readTextFile(fx::projectRoot() / "docs" / "scene-format.md");
+    ASSERT_TRUE(markdown.ok()) << markdown.error();
+    namespace limits = fx::scene_limits;
+    auto row = [](const std::string& what, const std::string& value) { return "| " + what + " | " + value + " |"; };
+    const std::string rows[] = {
+        row("scene file size", fx::describeByteCount(fx::file_limits::scene.maxBytes)),
+        row("`objects`", std::to_string(limits::kMaxObjects)),
+        row("`lights`", std::to_string(limits::kMaxLights)),
+        row("`emitters`", std::to_string(limits::kMaxEmitters)),
+        row("`clouds`", std::to_string(limits::kMaxClouds)),
+        row("clips named by one object", std::to_string(limits::kMaxClipsPerObject)),
+        row("any string (names, descriptions, paths, field names)", std::to_string(limits::kMaxStringBytes) + " bytes"),
+        row("nesting of objects and arrays", std::to_string(limits::kMaxNesting) + " levels"),
+        row("glTF file, its `.bin` buffers and images", fx::describeByteCount(fx::file_limits::gltf.maxBytes) + " each"),
+        row("PNG texture", fx::describeByteCount(fx::file_limits::png.maxBytes)),
+    };
+    for (const std::string& expected : rows) EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
+    EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(limits::kExcerptBytes) + " bytes"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -140,6 +140,36 @@ const BadField kBadFields[] = {
          {"op":"add","path":"/camera/fovY","value":0}])",
      "camera.fovY",
      {"0 is out of range (0, 180)"}},
+    // Values that pass as a double but not as the float the program uses.
+    {"ScaleUnderflowsInFloat",
+     R"([{"op":"replace","path":"/objects/1/transform/scale/0","value":1e-300}])",
+     "objects[1].transform.scale[0]",
+     {"becomes 0 as a float", "out of range (0, 10000]"}},
+    {"RadiusUnderflowsInFloat",
+     R"([{"op":"replace","path":"/objects/2/primitive/radius","value":1e-300}])",
+     "objects[2].primitive.radius",
+     {"becomes 0 as a float"}},
+    {"SizeUnderflowsInFloat",
+     R"([{"op":"replace","path":"/objects/0/primitive/size/1","value":1e-300}])",
+     "objects[0].primitive.size[1]",
+     {"becomes 0 as a float"}},
+    {"NearUnderflowsInFloat",
+     R"([{"op":"replace","path":"/camera/near","value":1e-300}])",
+     "camera.near",
+     {"becomes 0 as a float"}},
+    {"FocalLengthUnderflowsInFloat",
+     R"([{"op":"replace","path":"/camera/lens/focalLength","value":1e-300}])",
+     "camera.lens.focalLength",
+     {"becomes 0 as a float"}},
+    {"SensorWidthUnderflowsInFloat",
+     R"([{"op":"replace","path":"/camera/lens/sensorWidth","value":1e-300}])",
+     "camera.lens.sensorWidth",
+     {"becomes 0 as a float"}},
+    {"FovRoundsUpTo180InFloat",
+     R"([{"op":"remove","path":"/camera/lens"},{"op":"remove","path":"/postEffects/depthOfField"},
+         {"op":"add","path":"/camera/fovY","value":179.99999999}])",
+     "camera.fovY",
+     {"becomes 180 as a float", "out of range (0, 180)"}},
     {"FovAndLens",
      R"([{"op":"add","path":"/camera/fovY","value":40}])",
      "camera.fovY",
@@ -293,6 +323,35 @@ const BadField kBadFields[] = {
      R"([{"op":"replace","path":"/objects/5/gltf","value":"assets/robot_v2.gltf"}])",
      "objects[5].gltf",
      {"file not found: ", "scenes/assets/robot_v2.gltf", "written as \"assets/robot_v2.gltf\""}},
+    // Models and their clips, read when the scene loads.
+    {"ModelDoesNotLoad",
+     R"([{"op":"replace","path":"/objects/5/gltf","value":"assets/broken.gltf"}])",
+     "objects[5].gltf",
+     {"cannot load the model: ", "scenes/assets/broken.gltf: "}},
+    {"UnknownClip",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":"wlak"}])",
+     "objects[5].animation.clip",
+     {"assets/robot.gltf has no clip \"wlak\" (did you mean \"walk\"?); its clips: walk, wave"}},
+    {"UnknownClipInAList",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":["walk", "jump"]}])",
+     "objects[5].animation.clip",
+     {"has no clip \"jump\"", "its clips: walk, wave"}},
+    {"ClipListEmpty",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":[]}])",
+     "objects[5].animation.clip",
+     {"the list of clips is empty"}},
+    {"ClipListWithStar",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":["walk", "*"]}])",
+     "objects[5].animation.clip[1]",
+     {"stands alone"}},
+    {"ClipListedTwice",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":["walk", "walk"]}])",
+     "objects[5].animation.clip[1]",
+     {"listed twice"}},
+    {"ClipNotAName",
+     R"([{"op":"replace","path":"/objects/5/animation/clip","value":3}])",
+     "objects[5].animation.clip",
+     {"expected a clip name, a list of names or \"*\", got a number"}},
     // Emitters.
     {"LifetimeZero",
      R"([{"op":"replace","path":"/emitters/0/lifetime","value":0}])",
@@ -414,7 +473,75 @@ TEST(SceneErrors, DeepNestingIsRefusedNotACrash) {
     std::string deep =
         R"({"name": "deep", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "objects": )";
     deep += std::string(100000, '[') + std::string(100000, ']') + "}";
-    expectRefused(deep, "objects[0]", {"expected an object, got an array"});
+    // Refused by the parser at the nesting limit (32 levels: the top object, "objects" and 30 more).
+    std::string path = "objects";
+    for (int level = 0; level < 31; ++level) path += "[0]";
+    expectRefused(deep, path, {"nest more than 32 deep"});
+}
+
+// Scenes a hostile or broken file can be: each refused with a message naming the file and the reason.
+TEST(SceneErrors, ARepeatedKeyIsAnErrorNotLastOneWins) {
+    expectRefused(R"({"name": "a", "camera": {"position": [0, 1, 2], "near": 0.1, "near": 5, "target": [0, 0, 0]}})",
+                  "camera.near", {"appears twice in the same object"});
+}
+
+TEST(SceneErrors, NulBytesAreRefusedWithTheirPosition) {
+    std::string valid = R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}})";
+    for (const std::string& text : {valid + std::string(1, '\0'), std::string(64, '\0')}) {
+        auto scene = fx::parseScene(text, nominalFile(), scene_test::testOptions());
+        ASSERT_FALSE(scene.ok()) << "a NUL byte was accepted";
+        EXPECT_TRUE(contains(scene.error(), "a NUL byte")) << scene.error();
+        EXPECT_FALSE(contains(scene.error(), "unexpected end of input")) << scene.error();
+    }
+    auto trailing = fx::parseScene(valid + std::string(1, '\0'), nominalFile(), scene_test::testOptions());
+    EXPECT_TRUE(contains(trailing.error(), "patched_every_field.json:1:70:")) << trailing.error();
+    auto empty = fx::parseScene("  \n", nominalFile(), scene_test::testOptions());
+    ASSERT_FALSE(empty.ok());
+    EXPECT_TRUE(contains(empty.error(), "only white space")) << empty.error();
+}
+
+TEST(SceneErrors, AFolderGivenAsASceneSaysItIsAFolder) {
+    auto scene = fx::loadScene(scene_test::dataDir(), scene_test::testOptions());
+    ASSERT_FALSE(scene.ok());
+    EXPECT_TRUE(contains(scene.error(), "is a folder, not a scene file")) << scene.error();
+    EXPECT_FALSE(contains(scene.error(), "unexpected end of input")) << scene.error();
+}
+
+TEST(SceneErrors, AHugeStringIsRefusedAndQuotedOnlyInPart) {
+    std::string huge(16 * 1024 * 1024, 'x');
+    auto scene = fx::parseScene(R"({"name": ")" + huge + R"(", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}})",
+                                nominalFile(), scene_test::testOptions());
+    ASSERT_FALSE(scene.ok());
+    EXPECT_TRUE(contains(scene.error(), ": name: a string of 16777216 bytes")) << scene.error().substr(0, 300);
+    EXPECT_TRUE(contains(scene.error(), "at most 4096")) << scene.error().substr(0, 300);
+    EXPECT_LT(scene.error().size(), 400u);
+    // An unknown enum value is quoted in part too.
+    std::string longType(3000, 'q');
+    auto light = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]},
+        "lights": [{"type": ")" + longType + R"(", "direction": [0, -1, 0]}]})",
+                                nominalFile(), scene_test::testOptions());
+    ASSERT_FALSE(light.ok());
+    EXPECT_TRUE(contains(light.error(), "(3000 bytes)")) << light.error().substr(0, 300);
+    EXPECT_LT(light.error().size(), 400u);
+}
+
+TEST(SceneErrors, TooManyObjectsAreRefusedBeforeAnyIsRead) {
+    std::string objects;
+    for (int i = 0; i < 100000; ++i)
+        objects += std::string(i ? "," : "") + R"({"primitive": {"shape": "box"}})";
+    auto scene = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "objects": [)" +
+                                    objects + "]}",
+                                nominalFile(), scene_test::testOptions());
+    ASSERT_FALSE(scene.ok());
+    EXPECT_TRUE(contains(scene.error(), ": objects: 100000 entries; a scene may have at most 4096")) << scene.error();
+    std::string lights;
+    for (int i = 0; i < 300; ++i)
+        lights += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
+    auto lit = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "lights": [)" +
+                                  lights + "]}",
+                              nominalFile(), scene_test::testOptions());
+    ASSERT_FALSE(lit.ok());
+    EXPECT_TRUE(contains(lit.error(), ": lights: 300 entries; a scene may have at most 256")) << lit.error();
 }
 
 }  // namespace

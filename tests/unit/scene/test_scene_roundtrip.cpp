@@ -94,7 +94,7 @@ TEST(SceneRoundTrip, EveryFieldIsRead) {
     const fx::SceneObject& robot = s.objects[5];
     EXPECT_FALSE(robot.primitive.has_value());
     EXPECT_EQ(robot.gltf.path, "assets/robot.gltf");
-    EXPECT_EQ(robot.animation, (fx::Animation{"walk", 1.25f}));
+    EXPECT_EQ(robot.animation, (fx::Animation{{"walk"}, 1.25f}));
     EXPECT_TRUE(robot.skinned);
     EXPECT_EQ(robot.transform.scale, glm::vec3(0.9f));
 

@@ -131,7 +131,7 @@ TEST(ShippedScenes, SkinnedShadowsHasASkinnedMeshAndASun) {
                                   [](const fx::SceneObject& o) { return o.skinned; });
     ASSERT_NE(character, scene.objects.end());
     EXPECT_EQ(character->gltf.path, "../models/character.gltf");
-    EXPECT_EQ(character->animation.clip, "walk");
+    EXPECT_EQ(character->animation.clips, std::vector<std::string>{"walk"});
     // A low sun: less than 30 degrees above the horizon, for long shadows.
     glm::vec3 d = glm::normalize(scene.lights.at(0).direction);
     EXPECT_LT(std::asin(-d.y), glm::radians(30.0f));

@@ -1,0 +1,27 @@
+#pragma once
+// What one scene file may ask for. A scene past a limit is refused with the limit named, before the
+// loader spends time or memory on it; docs/scene-format.md lists the same numbers (a unit test keeps the
+// two in step). The file's own size limit is file_limits::scene (base/file_io.hpp).
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace fx::scene_limits {
+
+inline constexpr std::size_t kMaxObjects = 4096;
+inline constexpr std::size_t kMaxLights = 256;
+inline constexpr std::size_t kMaxEmitters = 256;
+inline constexpr std::size_t kMaxClouds = 16;
+inline constexpr std::size_t kMaxClipsPerObject = 256;
+// Any string in the file (names, descriptions, paths, field names), in bytes.
+inline constexpr std::size_t kMaxStringBytes = 4096;
+// Objects and arrays inside one another.
+inline constexpr std::size_t kMaxNesting = 32;
+// The most of a bad value a message quotes.
+inline constexpr std::size_t kExcerptBytes = 48;
+
+// `text` as a message quotes it: whole when short, else its first kExcerptBytes bytes (cut at a
+// character boundary) and how long it was.
+std::string excerpt(std::string_view text);
+
+}  // namespace fx::scene_limits
