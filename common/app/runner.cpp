@@ -25,6 +25,7 @@
 #include "render_gl/gl_pass_executor.hpp"
 #include "render_gl/gl_texture_allocator.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_post.hpp"
 #include "ui/overlay.hpp"
 
 namespace fx {
@@ -272,6 +273,8 @@ int run(Session& s, const std::string& exe) {
             if (!p->error().empty()) facts.shaderErrors.push_back(p->error());
         }
         s.lesson.reportFacts(facts.lessonFacts);
+        for (const Param& p : s.params.all())
+            facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
         if (!captureDir.empty()) {
             if (auto written = writeCaptures(captureDir, lastFinalBytes, lastTextures, o.captureFloat); !written) {
                 log::error(written.error());
@@ -317,10 +320,6 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
         printSteps(lesson.steps());
         return 0;
     }
-    if (s.options.listParams) {
-        printParams(s.params);
-        return 0;
-    }
     int stepCount = int(lesson.steps().size());
     if (s.options.step) {
         if (*s.options.step > stepCount) {
@@ -328,6 +327,25 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
             return 2;
         }
         s.step = *s.options.step - 1;
+    }
+    // The scene first: its settings are the parameters' starting values, which a preset and the
+    // command line then override. None of this needs GL, so --list-params shows the result.
+    fs::path sceneFile = s.options.scene.empty() ? resourceDir() / lesson.info().defaultScene : s.options.scene;
+    auto scene = loadScene(sceneFile);
+    if (!scene) {
+        std::cerr << exe << ": " << scene.error() << "\n";
+        return 1;
+    }
+    s.scene = std::move(*scene);
+    std::vector<SettingText> sceneSettings = postEffectSettings(s.scene.postEffects);
+    if (auto applied = s.params.applyScene(sceneSettings, postEffectSettingPaths(), sceneFile.string()); !applied) {
+        std::cerr << exe << ": " << applied.error() << "\n";
+        return 2;
+    }
+    if (auto unused = s.params.unusedSettings(sceneSettings); !unused.empty()) {
+        std::string list;
+        for (const std::string& setting : unused) list += (list.empty() ? "" : ", ") + setting;
+        log::info(sceneFile.filename().string(), ": no parameter of this lesson starts from ", list);
     }
     if (!s.options.presetFile.empty()) {
         auto text = readTextFile(s.options.presetFile);
@@ -343,13 +361,11 @@ int runLesson(Lesson& lesson, int argc, char** argv) {
             return 2;
         }
     }
-    fs::path sceneFile = s.options.scene.empty() ? resourceDir() / lesson.info().defaultScene : s.options.scene;
-    auto scene = loadScene(sceneFile);
-    if (!scene) {
-        std::cerr << exe << ": " << scene.error() << "\n";
-        return 1;
+    s.params.markStartingValues();  // what the overlay's Reset returns to
+    if (s.options.listParams) {
+        printParams(s.params);
+        return 0;
     }
-    s.scene = std::move(*scene);
     return run(s, exe);
 }
 
