@@ -138,6 +138,7 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     frame.headless = true;
     frame.benchmark = true;
     std::string savedParams = params.toJson();
+    const std::vector<ParamSet::Saved> saved = params.save();  // values and where they came from
 
     {
         CopyFrame copy;  // its GL objects go at the end of this block
@@ -159,34 +160,37 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
     for (const Param* knob : params.knobs()) {
         if (!options.knob.empty() && knob->name != options.knob) continue;
         std::vector<double> values = knob->knob->values;
-        if (std::find(values.begin(), values.end(), knob->knob->reference) == values.end()) {
+        // Cut first, then make sure of the reference row: a sweep cut to its first values still has one.
+        if (options.maxValues > 0 && int(values.size()) > options.maxValues) values.resize(std::size_t(options.maxValues));
+        if (!separateReference && std::find(values.begin(), values.end(), knob->knob->reference) == values.end()) {
             values.push_back(knob->knob->reference);
         }
-        if (options.maxValues > 0 && int(values.size()) > options.maxValues) values.resize(std::size_t(options.maxValues));
+        // Every row, the reference row included, is rendered and timed afresh and compared with the
+        // reference image taken above: the reference row's zero error is a measurement (the frame is
+        // reproducible), not a copy of the reference's own numbers.
+        auto measureRow = [&](std::string value, bool isReference, bool referenceAlgorithm) {
+            lesson.setBenchReference(referenceAlgorithm);
+            Measured m = measure(lesson, renderer, frame, options.frames, "", effect);
+            lesson.setBenchReference(false);
+            SweepPoint point;
+            point.knob = knob->name;
+            point.value = std::move(value);
+            point.reference = isReference;
+            point.current = !referenceAlgorithm && current.contains(knob->name) && current[knob->name] == point.value;
+            fillMeasurement(point, m, reference, result.copyMs);
+            result.points.push_back(point);
+        };
         for (double value : values) {
             setKnobsToReference(params);
             knob->set(value);
-            Measured m = measure(lesson, renderer, frame, options.frames, "", effect);
-            SweepPoint point;
-            point.knob = knob->name;
-            point.value = knob->valueText(value);
-            point.reference = !separateReference && value == knob->knob->reference;
-            point.current = current.contains(knob->name) && current[knob->name] == point.value;
-            fillMeasurement(point, m, reference, result.copyMs);
-            result.points.push_back(point);
+            measureRow(knob->valueText(value), !separateReference && value == knob->knob->reference, false);
         }
         if (separateReference) {
-            SweepPoint point;
-            point.knob = knob->name;
-            point.value = referenceName;
-            point.reference = true;
-            fillMeasurement(point, reference, reference, result.copyMs);  // zero error, as compare() writes it
-            result.points.push_back(point);
+            setKnobsToReference(params);
+            measureRow(referenceName, true, true);
         }
     }
-    if (auto restored = params.fromJson(savedParams, "the settings before the sweep"); !restored) {
-        log::error(restored.error());
-    }
+    params.restore(saved);
     return result;
 }
 

@@ -4,6 +4,11 @@
 // the median time over several frames, the error of the final image against the reference (and of
 // the lesson's own effect texture when it names one), and one plain full-screen copy timed in the
 // same run so that every cost also reads as a multiple of that copy.
+//
+// Every knob has a reference row (the knob's reference value, or the lesson's own reference
+// algorithm), even when the sweep is cut to its first values, and that row is rendered, timed and
+// compared like every other row. Bench frames have FrameInfo::benchmark set: lessons leave out what
+// only helps a person looking (side-by-side views, diagnostics that read textures back).
 #include <filesystem>
 #include <string>
 

@@ -43,8 +43,9 @@ bool printSteps(const LessonTextFiles& text) {
 void printParams(const ParamSet& params) {
     if (params.all().empty()) std::cout << "(this lesson has no parameters)\n";
     for (const Param& p : params.all()) {
-        std::cout << p.name << " = " << p.text() << "  (" << p.rangeText() << ")";
+        std::cout << p.name << " = " << p.text() << "  [" << toString(p.source()) << "]  (" << p.rangeText() << ")";
         if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
+        if (!p.sceneSetting.empty()) std::cout << "\n    starts from the scene's " << p.sceneSetting;
         std::cout << "\n    " << p.description << "\n";
     }
 }

@@ -93,6 +93,9 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
         else facts[k] = v;
     }
     j["facts"] = facts;
+    nlohmann::ordered_json params = nlohmann::ordered_json::array();
+    for (const ParamFact& p : f.params) params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});
+    j["params"] = params;
     return j;
 }
 

@@ -13,6 +13,11 @@
 
 namespace fx {
 
+// A parameter's value at the end of the run and where it came from ("scene", "command line"...).
+struct ParamFact {
+    std::string name, value, source;
+};
+
 struct RunFacts {
     std::string lesson, stepTitle, contextKind, renderer, glVersion, timingMethod, timingReason, scene;
     int step = 0;  // 1-based
@@ -23,6 +28,7 @@ struct RunFacts {
     std::string lastGlError;
     std::vector<std::string> shaderErrors;
     std::vector<std::pair<std::string, std::string>> lessonFacts;
+    std::vector<ParamFact> params;
 };
 
 nlohmann::ordered_json statsJson(const std::vector<ChannelStats>& stats);

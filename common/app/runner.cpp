@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "app/bench_mode.hpp"
 #include "app/frame_loop.hpp"
@@ -14,6 +15,7 @@
 #include "base/paths.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_post.hpp"
 
 namespace fx {
 namespace {
@@ -62,6 +64,59 @@ int run(RunSession& s) {
     return writeRunResults(s, plan, *context, programs, loop.record());
 }
 
+// The scene first: its settings are the parameters' starting values, which a preset and the command
+// line then override (setParameters). None of this needs GL, so --list-params shows the result.
+// Returns the exit code when the run cannot go on.
+std::optional<int> loadLessonScene(RunSession& s) {
+    const LessonInfo info = s.lesson->info();
+    if (s.options.scene.empty() && info.defaultScene.empty()) {
+        // A lesson that names no scene runs with an empty one: the default camera and background,
+        // no objects or lights, and every pass that needs a scene feature not called for.
+        log::info(s.exe, ": this lesson names no scene (LessonInfo::defaultScene); running with an empty one");
+        return std::nullopt;
+    }
+    fs::path sceneFile = s.options.scene.empty() ? resourceDir() / info.defaultScene : s.options.scene;
+    auto scene = loadScene(sceneFile);
+    if (!scene) {
+        std::cerr << s.exe << ": " << scene.error() << "\n";
+        return 1;
+    }
+    s.scene = std::move(*scene);
+    std::vector<SettingText> sceneSettings = postEffectSettings(s.scene.postEffects);
+    if (auto applied = s.params.applyScene(sceneSettings, postEffectSettingPaths(), sceneFile.string());
+        !applied) {
+        std::cerr << s.exe << ": " << applied.error() << "\n";
+        return 2;
+    }
+    if (auto unused = s.params.unusedSettings(sceneSettings); !unused.empty()) {
+        std::string list;
+        for (const std::string& setting : unused) list += (list.empty() ? "" : ", ") + setting;
+        log::info(sceneFile.filename().string(), ": no parameter of this lesson starts from ", list);
+    }
+    return std::nullopt;
+}
+
+// --preset, then every --param; what they leave is what the overlay's Reset returns to.
+std::optional<int> setParameters(RunSession& s) {
+    if (!s.options.presetFile.empty()) {
+        auto text = readFile(s.options.presetFile, file_limits::preset);
+        Status loaded =
+            text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});
+        if (!loaded) {
+            std::cerr << s.exe << ": --preset: " << loaded.error() << "\n";
+            return 2;
+        }
+    }
+    for (const std::string& assignment : s.options.params) {
+        if (auto status = s.params.assign(assignment); !status) {
+            std::cerr << s.exe << ": --param: " << status.error() << "\n";
+            return 2;
+        }
+    }
+    s.params.markStartingValues();
+    return std::nullopt;
+}
+
 }  // namespace
 
 int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
@@ -84,38 +139,13 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         (void)text.reloadIfChanged();
         return printSteps(text) ? 0 : 1;
     }
+    if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
+    if (auto failed = loadLessonScene(s)) return *failed;
+    if (auto failed = setParameters(s)) return *failed;
     if (s.options.listParams) {
         printParams(s.params);
         return 0;
     }
-    if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
-    if (!s.options.presetFile.empty()) {
-        auto text = readFile(s.options.presetFile, file_limits::preset);
-        Status loaded = text ? s.params.fromJson(*text, s.options.presetFile.string()) : Status(Error{text.error()});
-        if (!loaded) {
-            std::cerr << exe << ": --preset: " << loaded.error() << "\n";
-            return 2;
-        }
-    }
-    for (const std::string& assignment : s.options.params) {
-        if (auto status = s.params.assign(assignment); !status) {
-            std::cerr << exe << ": --param: " << status.error() << "\n";
-            return 2;
-        }
-    }
-    if (s.options.scene.empty() && lesson.info().defaultScene.empty()) {
-        // A lesson that names no scene runs with an empty one: the default camera and background,
-        // no objects or lights, and every pass that needs a scene feature not called for.
-        log::info(exe, ": this lesson names no scene (LessonInfo::defaultScene); running with an empty one");
-        return run(s);
-    }
-    fs::path sceneFile = s.options.scene.empty() ? resourceDir() / lesson.info().defaultScene : s.options.scene;
-    auto scene = loadScene(sceneFile);
-    if (!scene) {
-        std::cerr << exe << ": " << scene.error() << "\n";
-        return 1;
-    }
-    s.scene = std::move(*scene);
     return run(s);
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,21 @@ Result<double> parseNumber(std::string_view text) {
 }
 
 }  // namespace
+
+std::string_view toString(ParamSource source) {
+    switch (source) {
+        case ParamSource::lessonDefault: return "default";
+        case ParamSource::scene: return "scene";
+        case ParamSource::preset: return "preset";
+        case ParamSource::commandLine: return "command line";
+        case ParamSource::overlay: return "overlay";
+    }
+    return "?";
+}
+
+ParamSource Param::source() const {
+    return get() == originValue ? origin : ParamSource::overlay;
+}
 
 double Param::get() const {
     switch (type) {
@@ -80,28 +96,48 @@ std::string Param::rangeText() const {
 
 Param& ParamSet::add(Param p) {
     p.defaultValue = p.get();
+    p.originValue = p.startValue = p.defaultValue;
     params_.push_back(std::move(p));
     return params_.back();
 }
 
+namespace {
+
+Param makeParam(std::string name, std::string description, ParamType type, double min, double max) {
+    Param p;
+    p.name = std::move(name);
+    p.description = std::move(description);
+    p.type = type;
+    p.min = min;
+    p.max = max;
+    return p;
+}
+
+}  // namespace
+
 Param& ParamSet::addFloat(std::string name, float* value, float min, float max, std::string description) {
-    Param p{std::move(name), std::move(description), ParamType::Float, min, max, {}, 0, {}, value, nullptr, nullptr};
+    Param p = makeParam(std::move(name), std::move(description), ParamType::Float, min, max);
+    p.floatValue = value;
     return add(std::move(p));
 }
 
 Param& ParamSet::addInt(std::string name, int* value, int min, int max, std::string description) {
-    Param p{std::move(name), std::move(description), ParamType::Int, double(min), double(max), {}, 0, {}, nullptr, value, nullptr};
+    Param p = makeParam(std::move(name), std::move(description), ParamType::Int, double(min), double(max));
+    p.intValue = value;
     return add(std::move(p));
 }
 
 Param& ParamSet::addBool(std::string name, bool* value, std::string description) {
-    Param p{std::move(name), std::move(description), ParamType::Bool, 0, 1, {}, 0, {}, nullptr, nullptr, value};
+    Param p = makeParam(std::move(name), std::move(description), ParamType::Bool, 0, 1);
+    p.boolValue = value;
     return add(std::move(p));
 }
 
 Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string> choices, std::string description) {
     double max = choices.empty() ? 0 : double(choices.size() - 1);
-    Param p{std::move(name), std::move(description), ParamType::Choice, 0, max, std::move(choices), 0, {}, nullptr, value, nullptr};
+    Param p = makeParam(std::move(name), std::move(description), ParamType::Choice, 0, max);
+    p.choices = std::move(choices);
+    p.intValue = value;
     return add(std::move(p));
 }
 
@@ -112,6 +148,30 @@ const Param* ParamSet::find(std::string_view name) const {
     return nullptr;
 }
 
+Param* ParamSet::findMutable(std::string_view name) {
+    return const_cast<Param*>(std::as_const(*this).find(name));
+}
+
+void ParamSet::assignFrom(Param& p, double value, ParamSource source) {
+    p.set(value);
+    p.origin = source;
+    p.originValue = p.get();  // after clamping and rounding, as the value is stored
+}
+
+void ParamSet::markEdited(const Param& param) {
+    if (Param* p = findMutable(param.name)) {
+        p->origin = ParamSource::overlay;
+        p->originValue = p->get();
+    }
+}
+
+void ParamSet::markStartingValues() {
+    for (auto& p : params_) {
+        p.startValue = p.get();
+        p.startOrigin = p.source();
+    }
+}
+
 std::vector<const Param*> ParamSet::knobs() const {
     std::vector<const Param*> out;
     for (auto& p : params_) {
@@ -120,8 +180,22 @@ std::vector<const Param*> ParamSet::knobs() const {
     return out;
 }
 
-void ParamSet::resetAll() const {
-    for (auto& p : params_) p.set(p.defaultValue);
+std::vector<ParamSet::Saved> ParamSet::save() const {
+    std::vector<Saved> saved;
+    for (auto& p : params_) saved.push_back({p.get(), p.origin, p.originValue});
+    return saved;
+}
+
+void ParamSet::restore(const std::vector<Saved>& saved) {
+    for (std::size_t i = 0; i < params_.size() && i < saved.size(); ++i) {
+        params_[i].set(saved[i].value);
+        params_[i].origin = saved[i].origin;
+        params_[i].originValue = saved[i].originValue;
+    }
+}
+
+void ParamSet::resetAll() {
+    for (auto& p : params_) assignFrom(p, p.startValue, p.startOrigin);
 }
 
 namespace {
@@ -155,8 +229,8 @@ Result<double> parseFor(const Param& p, std::string_view text) {
 
 }  // namespace
 
-Status ParamSet::set(std::string_view name, std::string_view text) {
-    const Param* p = find(name);
+Status ParamSet::set(std::string_view name, std::string_view text, ParamSource source) {
+    Param* p = findMutable(name);
     if (!p) {
         std::string known;
         for (auto& q : params_) known += (known.empty() ? "" : ", ") + q.name;
@@ -164,16 +238,46 @@ Status ParamSet::set(std::string_view name, std::string_view text) {
     }
     auto v = parseFor(*p, text);
     if (!v) return Error{v.error()};
-    p->set(*v);
+    assignFrom(*p, *v, source);
     return Status::success();
 }
 
-Status ParamSet::assign(std::string_view assignment) {
+Status ParamSet::assign(std::string_view assignment, ParamSource source) {
     auto eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0) {
         return Error{cat("\"", assignment, "\" is not of the form name=value")};
     }
-    return set(assignment.substr(0, eq), assignment.substr(eq + 1));
+    return set(assignment.substr(0, eq), assignment.substr(eq + 1), source);
+}
+
+Status ParamSet::applyScene(const std::vector<SettingText>& settings, const std::vector<std::string>& known,
+                            std::string_view sceneFile) {
+    std::vector<std::pair<Param*, double>> checked;
+    for (auto& p : params_) {
+        if (p.sceneSetting.empty()) continue;
+        if (std::find(known.begin(), known.end(), p.sceneSetting) == known.end()) {
+            return Error{cat("parameter ", p.name, " starts from the scene setting \"", p.sceneSetting,
+                             "\", which scene files do not have")};
+        }
+        for (const SettingText& s : settings) {
+            if (s.setting != p.sceneSetting) continue;
+            auto v = parseFor(p, s.text);
+            if (!v) return Error{cat(sceneFile, ": ", s.setting, ": ", v.error())};
+            checked.emplace_back(&p, *v);
+        }
+    }
+    for (auto& [p, v] : checked) assignFrom(*p, v, ParamSource::scene);
+    return Status::success();
+}
+
+std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>& settings) const {
+    std::vector<std::string> unused;
+    for (const SettingText& s : settings) {
+        bool used = std::any_of(params_.begin(), params_.end(),
+                                [&](const Param& p) { return p.sceneSetting == s.setting; });
+        if (!used) unused.push_back(s.setting);
+    }
+    return unused;
 }
 
 std::string ParamSet::toJson() const {
@@ -182,7 +286,7 @@ std::string ParamSet::toJson() const {
     return j.dump(2) + "\n";
 }
 
-Status ParamSet::fromJson(std::string_view json, std::string_view fileName) {
+Status ParamSet::fromJson(std::string_view json, std::string_view fileName, ParamSource source) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(json);
@@ -190,16 +294,16 @@ Status ParamSet::fromJson(std::string_view json, std::string_view fileName) {
         return Error{cat(fileName, ": not valid JSON (", e.what(), ")")};
     }
     if (!j.is_object()) return Error{cat(fileName, ": expected an object of parameter names to values")};
-    std::vector<std::pair<const Param*, double>> checked;
+    std::vector<std::pair<Param*, double>> checked;
     for (auto& [key, value] : j.items()) {
-        const Param* p = find(key);
+        Param* p = findMutable(key);
         if (!p) return Error{cat(fileName, ": ", key, ": no such parameter")};
         std::string text = value.is_string() ? value.get<std::string>() : value.dump();
         auto v = parseFor(*p, text);
         if (!v) return Error{cat(fileName, ": ", key, ": ", v.error())};
         checked.emplace_back(p, *v);
     }
-    for (auto& [p, v] : checked) p->set(v);
+    for (auto& [p, v] : checked) assignFrom(*p, v, source);
     return Status::success();
 }
 

@@ -2,6 +2,10 @@
 // A lesson's parameters: named values bound to the lesson's own fields, with types and ranges that
 // the command line (--param name=value), the overlay and preset files all check the same way.
 // A quality knob is a parameter with a list of settings to sweep and one reference setting.
+//
+// Every value remembers where it came from: the lesson's default, the scene file (a parameter may name
+// the scene setting that gives its starting value), a preset file, the command line, or the overlay.
+// The runner applies them in that order, so each later source overrides the earlier ones.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +16,17 @@
 namespace fx {
 
 enum class ParamType { Float, Int, Bool, Choice };
+
+enum class ParamSource { lessonDefault, scene, preset, commandLine, overlay };
+// "default", "scene", "preset", "command line", "overlay".
+std::string_view toString(ParamSource source);
+
+// A setting read from a file, by its path in that file, as text the parameter parser takes:
+// {"postEffects.bloom.threshold", "1.5"}.
+struct SettingText {
+    std::string setting;
+    std::string text;
+};
 
 struct Knob {
     std::vector<double> values;  // the settings the bench and the cost panel sweep
@@ -31,6 +46,22 @@ struct Param {
     float* floatValue = nullptr;
     int* intValue = nullptr;
     bool* boolValue = nullptr;
+    // The scene setting that gives the starting value ("postEffects.bloom.threshold"); empty: none.
+    std::string sceneSetting;
+    // Where the value came from and the value it gave then. A value that differs from that now was
+    // changed by the running program (the overlay's widgets, a drag in the picture).
+    ParamSource origin = ParamSource::lessonDefault;
+    double originValue = 0;
+    // What "Reset" goes back to: the value and source the run started with.
+    double startValue = 0;
+    ParamSource startOrigin = ParamSource::lessonDefault;
+
+    // Names the scene setting that gives this parameter its starting value.
+    Param& fromScene(std::string setting) {
+        sceneSetting = std::move(setting);
+        return *this;
+    }
+    ParamSource source() const;
 
     double get() const;
     void set(double value) const;  // clamps into range
@@ -48,23 +79,50 @@ public:
 
     // Checks the text against the type and range; on error names the parameter and what is allowed,
     // and leaves the value as it was.
-    Status set(std::string_view name, std::string_view text);
+    Status set(std::string_view name, std::string_view text, ParamSource source = ParamSource::commandLine);
     // "name=value", as --param takes it.
-    Status assign(std::string_view assignment);
+    Status assign(std::string_view assignment, ParamSource source = ParamSource::commandLine);
+
+    // A scene's settings: every parameter bound to a setting in `settings` takes its value (source
+    // scene). `known` lists every setting a scene can have; a parameter bound to another one is a
+    // mistake in the lesson. All are checked first; on error nothing changes, and the error names the
+    // file, the setting and the parameter's range.
+    Status applyScene(const std::vector<SettingText>& settings, const std::vector<std::string>& known,
+                      std::string_view sceneFile);
+    // The settings in `settings` that no parameter takes.
+    std::vector<std::string> unusedSettings(const std::vector<SettingText>& settings) const;
+
+    // The overlay changed this parameter.
+    void markEdited(const Param& param);
+    // The current values become what resetAll() returns to (the runner calls this once the scene,
+    // preset and command line are applied).
+    void markStartingValues();
 
     const Param* find(std::string_view name) const;
     const std::vector<Param>& all() const { return params_; }
     std::vector<const Param*> knobs() const;
-    void resetAll() const;
+    // Back to the starting values (the lesson's defaults until markStartingValues()).
+    void resetAll();
+
+    // Every value with its source, to put back after a temporary change (the bench's sweep).
+    struct Saved {
+        double value;
+        ParamSource origin;
+        double originValue;
+    };
+    std::vector<Saved> save() const;
+    void restore(const std::vector<Saved>& saved);
 
     // Preset files: a JSON object of name -> value text. Loading checks every entry first and
     // changes nothing if one is bad.
     std::string toJson() const;
-    Status fromJson(std::string_view json, std::string_view fileName);
+    Status fromJson(std::string_view json, std::string_view fileName, ParamSource source = ParamSource::preset);
 
 private:
     std::vector<Param> params_;
     Param& add(Param p);
+    Param* findMutable(std::string_view name);
+    static void assignFrom(Param& p, double value, ParamSource source);
 };
 
 }  // namespace fx

@@ -31,14 +31,14 @@ std::span<const EnumName<EmitterKind>> enumNames(EmitterKind) {
 std::span<const EnumName<ColorMatrixPreset>> enumNames(ColorMatrixPreset) {
     static constexpr EnumName<ColorMatrixPreset> names[] = {{ColorMatrixPreset::identity, "identity"},
                                                             {ColorMatrixPreset::grayscale, "grayscale"},
-                                                            {ColorMatrixPreset::sepia, "sepia"}};
+                                                            {ColorMatrixPreset::sepia, "sepia"},
+                                                            {ColorMatrixPreset::invert, "invert"}};
     return names;
 }
 
-std::span<const EnumName<ToneMapOperator>> enumNames(ToneMapOperator) {
-    static constexpr EnumName<ToneMapOperator> names[] = {{ToneMapOperator::linear, "linear"},
-                                                          {ToneMapOperator::reinhard, "reinhard"},
-                                                          {ToneMapOperator::aces, "aces"}};
+std::span<const EnumName<ToneCurve>> enumNames(ToneCurve) {
+    static constexpr EnumName<ToneCurve> names[] = {
+        {ToneCurve::clip, "clip"}, {ToneCurve::reinhard, "reinhard"}, {ToneCurve::filmic, "filmic"}};
     return names;
 }
 

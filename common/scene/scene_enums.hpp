@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -22,7 +23,7 @@ std::span<const EnumName<PrimitiveShape>> enumNames(PrimitiveShape);
 std::span<const EnumName<MotionType>> enumNames(MotionType);
 std::span<const EnumName<EmitterKind>> enumNames(EmitterKind);
 std::span<const EnumName<ColorMatrixPreset>> enumNames(ColorMatrixPreset);
-std::span<const EnumName<ToneMapOperator>> enumNames(ToneMapOperator);
+std::span<const EnumName<ToneCurve>> enumNames(ToneCurve);
 std::span<const EnumName<PostEffect>> enumNames(PostEffect);
 
 template <class E>
@@ -37,6 +38,14 @@ std::optional<E> enumFromName(std::string_view name) {
     for (const auto& entry : enumNames(E{}))
         if (entry.name == name) return entry.value;
     return std::nullopt;
+}
+
+// The names in order, as a Choice parameter lists them (its index is the enumerator's value).
+template <class E>
+std::vector<std::string> enumNameList() {
+    std::vector<std::string> list;
+    for (const auto& entry : enumNames(E{})) list.emplace_back(entry.name);
+    return list;
 }
 
 // "plane, box, sphere": the allowed names, for error messages.

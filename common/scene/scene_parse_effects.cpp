@@ -60,7 +60,14 @@ DepthOfFieldSettings parseDepthOfField(JsonFieldReader& reader) {
 
 ToneMapSettings parseToneMap(JsonFieldReader& reader) {
     ToneMapSettings toneMap;
-    toneMap.toneOperator = reader.enumeration<ToneMapOperator>("operator", toneMap.toneOperator);
+    // The operator names before the tone curve had one vocabulary; say what they are called now.
+    if (reader.has("operator") && reader.required("operator").is_string()) {
+        const std::string old = reader.required("operator").get<std::string>();
+        if (old == "linear" || old == "aces")
+            reader.fail("operator", cat("\"", old, "\" is now called \"", old == "aces" ? "filmic" : "clip",
+                                        "\" (allowed: ", allowedNames<ToneCurve>(), ")"));
+    }
+    toneMap.curve = reader.enumeration<ToneCurve>("operator", toneMap.curve);
     toneMap.exposure = reader.number("exposure", toneMap.exposure, NumberRange::aboveZero(1000.0));
     reader.reportUnknown();
     return toneMap;

@@ -1,9 +1,15 @@
 #pragma once
 // The post-processing a scene asks for. An effect is requested when it is present; its settings start
 // from the defaults below. The order the passes run in is the lesson's business, not the scene's.
+// A lesson's parameters start from these settings (Param::fromScene with the paths
+// postEffectSettings() names); the command line and the overlay override them.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
+
+#include "base/params.hpp"
 
 namespace fx {
 
@@ -18,7 +24,9 @@ struct BloomSettings {
     bool operator==(const BloomSettings&) const = default;
 };
 
-enum class ColorMatrixPreset { identity, grayscale, sepia };
+// The colour transforms that need no numbers of their own (effects/post/colour_matrix.hpp): the
+// chapter's two filters, and the affine negative that no 3x3 matrix can make.
+enum class ColorMatrixPreset { identity, grayscale, sepia, invert };
 
 struct ColorMatrixSettings {
     ColorMatrixPreset preset = ColorMatrixPreset::grayscale;
@@ -37,6 +45,7 @@ struct RadialBlurSettings {
 };
 
 // Depth of field reads the camera's lens (focal length, f-number, focus distance), so it needs one.
+// Used by lesson 09 (planned); no lesson reads it yet.
 struct DepthOfFieldSettings {
     float maxCocPixels = 16.0f;  // circle-of-confusion diameter is clamped here
     int taps = 16;
@@ -44,10 +53,17 @@ struct DepthOfFieldSettings {
     bool operator==(const DepthOfFieldSettings&) const = default;
 };
 
-enum class ToneMapOperator { linear, reinhard, aces };
+// How HDR light is squeezed into [0, 1] before the display encoding, per channel. The one vocabulary
+// for scene files, lesson parameters and the output transform (effects/post/output_transform_pass.hpp,
+// which also has the formulas).
+enum class ToneCurve {
+    clip,      // none, as in the chapters: values above 1 clip per channel
+    reinhard,  // x / (1 + x)
+    filmic,    // ACES-style filmic: x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)
+};
 
 struct ToneMapSettings {
-    ToneMapOperator toneOperator = ToneMapOperator::aces;
+    ToneCurve curve = ToneCurve::filmic;
     float exposure = 1.0f;  // multiplies the HDR colour before the curve
 
     bool operator==(const ToneMapSettings&) const = default;
@@ -63,5 +79,12 @@ struct PostEffects {
     bool wants(PostEffect effect) const;
     bool operator==(const PostEffects&) const = default;
 };
+
+// The settings of the effects a scene asks for, by their path in the scene file, as text a lesson
+// parameter takes: {"postEffects.bloom.threshold", "1"}, {"postEffects.radialBlur.center[0]", "0.5"},
+// {"postEffects.toneMap.operator", "filmic"}.
+std::vector<SettingText> postEffectSettings(const PostEffects& post);
+// Every setting path a scene file can have, whether this one asks for the effect or not.
+std::vector<std::string> postEffectSettingPaths();
 
 }  // namespace fx

@@ -216,7 +216,7 @@ Json postEffectsJson(const PostEffects& post) {
     }
     if (const auto& toneMap = post.toneMap) {
         json[std::string(enumName(PostEffect::toneMap))] =
-            Json{{"operator", name(toneMap->toneOperator)}, {"exposure", number(toneMap->exposure)}};
+            Json{{"operator", name(toneMap->curve)}, {"exposure", number(toneMap->exposure)}};
     }
     return json;
 }

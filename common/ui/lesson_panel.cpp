@@ -5,39 +5,65 @@
 
 #include <imgui.h>
 
+#include "base/log.hpp"
 #include "ui/markdown_view.hpp"
 #include "ui/ui_style.hpp"
 
 namespace fx {
 
+namespace {
+
+// The value's widget; true when the user changed it this frame.
+bool drawParamWidget(const Param& p) {
+    switch (p.type) {
+        case ParamType::Float:
+            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.min), float(p.max));
+        case ParamType::Int:
+            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.min), int(p.max));
+        case ParamType::Bool:
+            return ImGui::Checkbox(p.name.c_str(), p.boolValue);
+        case ParamType::Choice: {
+            bool changed = false;
+            const char* current = p.choices.empty() ? "" : p.choices[std::size_t(*p.intValue)].c_str();
+            if (ImGui::BeginCombo(p.name.c_str(), current)) {
+                for (std::size_t i = 0; i < p.choices.size(); ++i) {
+                    if (ImGui::Selectable(p.choices[i].c_str(), int(i) == *p.intValue)) {
+                        changed = *p.intValue != int(i);
+                        *p.intValue = int(i);
+                    }
+                }
+                ImGui::EndCombo();
+            }
+            return changed;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
 void drawParams(ParamSet& params) {
     for (const Param& p : params.all()) {
         ImGui::PushID(p.name.c_str());
-        switch (p.type) {
-            case ParamType::Float:
-                ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.min), float(p.max));
-                break;
-            case ParamType::Int:
-                ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.min), int(p.max));
-                break;
-            case ParamType::Bool:
-                ImGui::Checkbox(p.name.c_str(), p.boolValue);
-                break;
-            case ParamType::Choice: {
-                const char* current = p.choices.empty() ? "" : p.choices[std::size_t(*p.intValue)].c_str();
-                if (ImGui::BeginCombo(p.name.c_str(), current)) {
-                    for (std::size_t i = 0; i < p.choices.size(); ++i) {
-                        if (ImGui::Selectable(p.choices[i].c_str(), int(i) == *p.intValue))
-                            *p.intValue = int(i);
-                    }
-                    ImGui::EndCombo();
-                }
-                break;
-            }
+        if (drawParamWidget(p)) params.markEdited(p);
+        bool hovered = ImGui::IsItemHovered();
+        // Where the value came from, beside it: a teacher sees at once what the scene set.
+        ParamSource source = p.source();
+        ImGui::SameLine();
+        std::string tag = cat("[", toString(source), "]");
+        if (source == ParamSource::lessonDefault) {
+            ImGui::TextDisabled("%s", tag.c_str());
+        } else {
+            ImGui::TextColored(ui_style::kHeading, "%s", tag.c_str());
         }
-        if (ImGui::IsItemHovered() && !p.description.empty()) {
-            ImGui::SetTooltip("%s\n(%s%s)", p.description.c_str(), p.rangeText().c_str(),
-                              p.knob ? "; a quality knob" : "");
+        hovered = hovered || ImGui::IsItemHovered();
+        if (hovered) {
+            std::string from = cat("from: ", toString(source));
+            if (source == ParamSource::scene) from += cat(" (", p.sceneSetting, ")");
+            if (!p.sceneSetting.empty() && source != ParamSource::scene)
+                from += cat("; the scene setting ", p.sceneSetting, " starts it when the scene has one");
+            ImGui::SetTooltip("%s\n(%s%s)\n%s", p.description.c_str(), p.rangeText().c_str(),
+                              p.knob ? "; a quality knob" : "", from.c_str());
         }
         ImGui::PopID();
     }
@@ -103,6 +129,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawParams(*m.params);
         if (ImGui::Button("Reset")) m.params->resetAll();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the values the run started with (scene, preset, command line)");
         if (m.onSavePreset) {
             ImGui::SameLine();
             if (ImGui::Button("Save preset")) m.onSavePreset();

@@ -54,11 +54,15 @@ std::vector<std::string> ColourMatrixLesson::steps() const {
 }
 
 void ColourMatrixLesson::declareParams(ParamSet& params) {
-    params.addChoice("preset", &preset_,
-                     {"none", "grayscale", "sepia", "saturation", "hue_rotation", "channel_swap",
-                      "brightness_contrast", "invert", "invert_3x3", "custom"},
-                     "Step 4: the transform (custom: the matrix edited in the panel)");
-    params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)");
+    // The scene's colorMatrix names the starting preset (identity, grayscale, sepia or invert) and amount.
+    params
+        .addChoice("preset", &preset_,
+                   {"identity", "grayscale", "sepia", "saturation", "hue_rotation", "channel_swap",
+                    "brightness_contrast", "invert", "invert_3x3", "custom"},
+                   "Step 4: the transform (custom: the matrix edited in the panel)")
+        .fromScene("postEffects.colorMatrix.preset");
+    params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)")
+        .fromScene("postEffects.colorMatrix.amount");
     params.addFloat("saturation", &saturation_, -1.0f, 3.0f,
                     "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours");
     params.addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f,

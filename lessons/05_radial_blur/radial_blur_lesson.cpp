@@ -52,19 +52,24 @@ std::vector<std::string> RadialBlurLesson::steps() const {
 void RadialBlurLesson::declareParams(ParamSet& params) {
     params.addFloat(
         "centre_x", &centreX_, kCentreMin, kCentreMax,
-        "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)");
+        "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)")
+        .fromScene("postEffects.radialBlur.center[0]");
     params.addFloat(
         "centre_y", &centreY_, kCentreMin, kCentreMax,
-        "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)");
+        "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)")
+        .fromScene("postEffects.radialBlur.center[1]");
     params.addFloat(
         "length", &length_, 0.0f, 0.2f,
         "The chapter's z: tap spacing per unit of distance to the centre (0: no blur; above 1/7 the far taps "
-        "overshoot the centre)");
+        "overshoot the centre)")
+        .fromScene("postEffects.radialBlur.length");
     params.addFloat("start", &start_, 0.0f, 2.0f,
-                    "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)");
+                    "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
+        .fromScene("postEffects.radialBlur.start");
     Param& samples = params.addInt("samples", &samples_, 1, kRadialBlurMaxSamples,
                                    "Step 4: taps per pixel, spread over the chapter's 8-tap streak");
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
+    samples.fromScene("postEffects.radialBlur.taps");
 }
 
 Status RadialBlurLesson::init(const Scene& scene) {

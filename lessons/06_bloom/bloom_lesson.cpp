@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
+#include "scene/scene_enums.hpp"
 
 namespace lesson06 {
 
@@ -49,18 +50,22 @@ std::vector<std::string> BloomLesson::steps() const {
 
 void BloomLesson::declareParams(ParamSet& params) {
     params.addFloat("threshold", &threshold_, 0.0f, 16.0f,
-                    "Steps 3 to 5: brightness (the largest channel) above which light blooms");
+                    "Steps 3 to 5: brightness (the largest channel) above which light blooms")
+        .fromScene("postEffects.bloom.threshold");
     params.addFloat("knee", &knee_, 0.0f, 1.0f,
-                    "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)");
+                    "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)")
+        .fromScene("postEffects.bloom.knee");
     params.addFloat(
         "intensity", &intensity_, 0.0f, 4.0f,
         "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this times its "
-        "bright part, for any level count)");
+        "bright part, for any level count)")
+        .fromScene("postEffects.bloom.intensity");
     params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                     "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
     Param& levels = params.addInt("levels", &levels_, 1, kBloomMaxLevels,
                                   "Steps 3 to 5: levels in the chain (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
+    levels.fromScene("postEffects.bloom.levels");
     params.addFloat(
         "down_offset", &downOffset_, 0.0f, 2.0f,
         "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)");
@@ -71,8 +76,12 @@ void BloomLesson::declareParams(ParamSet& params) {
                          "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
     format.knob = Knob{{0, 1, 2, 3}, 2, "format"};
     params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)");
-    params.addChoice("tone_map", &toneCurve_, {"none", "reinhard", "filmic"},
-                     "Step 5: the output's tone curve (none clips at 1, as in the chapters)");
+    params
+        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
+                   "Step 5: the output's tone curve (clip: none, everything above 1 clips, as in the chapters)")
+        .fromScene("postEffects.toneMap.operator");
+    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Step 5: multiplies the light before the tone curve")
+        .fromScene("postEffects.toneMap.exposure");
     params.addBool(
         "reference", &reference_,
         "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
@@ -130,6 +139,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds, sceneFormat);
     TextureHandle shown = hdr.color;
     ToneCurve curve = step == Beyond ? static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2)) : ToneCurve::clip;
+    float exposure = step == Beyond ? exposure_ : 1.0f;
 
     // Steps 1 and 2 come before bloom: step 4's chain is declared switched off, so the pass table
     // shows what is still to come.
@@ -167,16 +177,21 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 } else {
                     shown = result.output;
                     // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
-                    // Another step or Karis setting is a change of chain, not flicker: start over.
-                    bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
-                    flickerStep_ = step;
-                    flickerKaris_ = settings.karisAverage;
-                    flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
+                    // Another step or Karis setting is a change of chain, not flicker: start over. A
+                    // diagnostic (it reads the glow back every frame): bench frames leave it out.
+                    if (!frame.benchmark) {
+                        bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
+                        flickerStep_ = step;
+                        flickerKaris_ = settings.karisAverage;
+                        flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
+                    } else {
+                        flickerStep_ = -1;  // the next shown frame starts the comparison over
+                    }
                 }
             }
         }
     }  // the present pass is no part of the bloom group
-    present_.declare(graph, shown, std::nullopt, curve);
+    present_.declare(graph, shown, std::nullopt, curve, exposure);
 }
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {

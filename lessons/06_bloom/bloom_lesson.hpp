@@ -54,6 +54,7 @@ private:
     int format_ = 0;  // index into kChainFormats
     bool karis_ = true;
     int toneCurve_ = 2;  // fx::ToneCurve::filmic
+    float exposure_ = 1.0f;
     bool reference_ = false;
     bool benchReference_ = false;
 

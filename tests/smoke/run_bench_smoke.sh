@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Bench smoke test: a one-value sweep of every knob at a small size writes its CSV, JSON and plots,
-# the reference setting has zero error against itself, and nothing raised a GL error.
+# Bench smoke test: a one-value sweep of every knob at a small size writes its CSV, JSON and plots;
+# every knob keeps exactly one reference row although the sweep is cut to one value; that row is
+# rendered again like the others and its picture matches the reference image (the frame is
+# reproducible); and nothing raised a GL error. (A value known to differ showing an error is
+# tests/gl/test_bench_sweep.cpp, on a lesson whose pictures are known.)
 #   run_bench_smoke.sh <lesson exe> <work dir>
 set -uo pipefail
 exe="$1" work="$2"
@@ -15,10 +18,14 @@ done
 knobs=$("$exe" --list-params | grep -c 'quality knob')
 rows=$(($(wc -l <"$work/bench.csv") - 1))
 plots=$(find "$work" -name 'bench-*.png' | wc -l)
-# One value per knob, plus the reference when the first value is not it.
+# One value per knob, plus the reference row when the first value is not it.
 [ "$rows" -ge "$knobs" ] || { echo "FAIL: $rows rows for $knobs knobs"; status=1; }
+# Column 5 is the knob, column 7 whether the row is the reference: one reference row per knob.
+awk -F, 'NR > 1 { seen[$5] = 1; if ($7 == 1) refs[$5]++ }
+         END { for (k in seen) if (refs[k] != 1) { print "FAIL: knob " k " has " refs[k] + 0 " reference rows"; bad = 1 }
+               exit bad }' "$work/bench.csv" || status=1
 [ "$plots" -eq "$knobs" ] || { echo "FAIL: $plots plots for $knobs knobs"; status=1; }
-# Column 7 says whether the row is the reference; its RMSE (column 12) must be 0.
+# The reference row's RMSE (column 12) against the reference image must be 0.
 awk -F, 'NR > 1 && $7 == 1 && $12 != 0 { print "FAIL: reference row with RMSE " $12; bad = 1 } END { exit bad }' \
   "$work/bench.csv" || status=1
 [ "$status" -eq 0 ] && echo "bench: $rows rows, $plots plots" && cat "$work/log" | tail -n +2

@@ -8,6 +8,7 @@ namespace {
 
 constexpr GLint kDividerLocation = 0;  // shaders/effects/output_transform.frag
 constexpr GLint kCurveLocation = 1;
+constexpr GLint kExposureLocation = 2;
 
 }  // namespace
 
@@ -47,14 +48,16 @@ OutputTransformPass OutputTransformPass::create() {
 }
 
 Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
-                                   const std::optional<SplitView>& split, ToneCurve curve) const {
+                                   const std::optional<SplitView>& split, ToneCurve curve,
+                                   float exposure) const {
     const FullscreenPass* pass = &pass_;
     std::optional<SplitView> view = split;
-    Pass& declared = graph.addPass("output transform", [pass, linear, view, curve](PassContext& ctx) {
+    Pass& declared = graph.addPass("output transform", [pass, linear, view, curve, exposure](PassContext& ctx) {
         // -1: no split. Otherwise the first pixel column that shows `linear`.
         int divider = view ? splitDividerPixel(view->divider, ctx.targetSize().width) : -1;
         glProgramUniform1i(pass->program(), kDividerLocation, divider);
         glProgramUniform1i(pass->program(), kCurveLocation, static_cast<int>(curve));
+        glProgramUniform1f(pass->program(), kExposureLocation, exposure);
         GLuint after = ctx.native(linear);
         pass->draw({after, view ? ctx.native(view->before) : after});
     });

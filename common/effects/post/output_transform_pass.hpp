@@ -7,7 +7,9 @@
 //
 // An optional tone curve compresses HDR light into [0, 1] before the encoding, so a lamp and the sun
 // no longer both clip to the same white: Reinhard x / (1 + x), or an ACES-style filmic curve
-// (Narkowicz's fit). Each works on each channel; `clip` (the default) is the chapters' picture.
+// (Narkowicz's fit). Each works on each channel; `clip` (the default) is the chapters' picture. An
+// exposure multiplies the light before the curve. ToneCurve is the scene files' type
+// (scene/scene_post.hpp), so a scene's toneMap names the same curves.
 //
 // A split view shows two linear images through the same transform: `before` left of the divider,
 // the main input right of it, with a one-pixel line on the divider.
@@ -18,14 +20,12 @@
 
 #include "effects/post/fullscreen_pass.hpp"
 #include "render/frame_graph.hpp"
+#include "scene/scene_post.hpp"
 
 namespace fx {
 
-enum class ToneCurve {
-    clip,      // none, as in the chapters: values above 1 clip per channel
-    reinhard,  // x / (1 + x)
-    filmic,    // ACES-style filmic: x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)
-};
+// For people: "none (clip)", "Reinhard", "ACES-style filmic" (scene files spell them clip, reinhard,
+// filmic: scene/scene_enums.hpp).
 const char* toString(ToneCurve curve);
 // The curve on one linear channel value (>= 0), as the shader computes it: for tests and panels.
 float applyToneCurve(ToneCurve curve, float linear);
@@ -50,7 +50,7 @@ public:
     // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,
                   const std::optional<SplitView>& split = std::nullopt,
-                  ToneCurve curve = ToneCurve::clip) const;
+                  ToneCurve curve = ToneCurve::clip, float exposure = 1.0f) const;
 
 private:
     FullscreenPass pass_;

@@ -11,6 +11,8 @@ layout(binding = 1) uniform sampler2D before;
 layout(location = 0) uniform int divider;
 // The tone curve before the encoding (effects/output_transform_pass.hpp: ToneCurve); 0: none.
 layout(location = 1) uniform int curve;
+// Multiplies the light before the curve (1: unchanged).
+layout(location = 2) uniform float exposure;
 
 layout(location = 0) out vec4 color;
 
@@ -19,7 +21,7 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     bool showBefore = texel.x < divider;
     vec3 linear = showBefore ? texelFetch(before, texel, 0).rgb : texelFetch(after, texel, 0).rgb;
-    vec3 encoded = linearToSrgb(toneCurve(linear, curve));
+    vec3 encoded = linearToSrgb(toneCurve(linear * exposure, curve));
     // The divider: a white column with a dark one beside it, visible on light and dark pictures.
     if (divider >= 0 && texel.x == divider) encoded = vec3(1.0);
     if (divider >= 0 && texel.x == divider - 1) encoded = vec3(0.0);

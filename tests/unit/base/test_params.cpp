@@ -59,3 +59,82 @@ TEST(Params, PresetRoundTripAndAllOrNothingLoad) {
     EXPECT_NE(bad.error().find("preset.json: c:"), std::string::npos) << bad.error();
     EXPECT_FLOAT_EQ(a, 3.5f);  // nothing changed
 }
+
+TEST(Params, EveryValueKnowsWhereItCameFrom) {
+    float threshold = 1.0f;
+    int levels = 6;
+    int curve = 2;
+    fx::ParamSet params;
+    params.addFloat("threshold", &threshold, 0.0f, 16.0f, "").fromScene("postEffects.bloom.threshold");
+    params.addInt("levels", &levels, 1, 8, "").fromScene("postEffects.bloom.levels");
+    params.addChoice("tone_map", &curve, {"clip", "reinhard", "filmic"}, "").fromScene("postEffects.toneMap.operator");
+    const std::vector<std::string> known{"postEffects.bloom.threshold", "postEffects.bloom.levels",
+                                         "postEffects.bloom.knee", "postEffects.toneMap.operator"};
+    auto source = [&](const char* name) { return fx::toString(params.find(name)->source()); };
+    EXPECT_EQ(source("threshold"), "default");
+
+    // The scene first, then a preset, then the command line: each later one overrides.
+    std::vector<fx::SettingText> scene{{"postEffects.bloom.threshold", "2.5"},
+                                       {"postEffects.bloom.knee", "0.25"},
+                                       {"postEffects.toneMap.operator", "reinhard"}};
+    ASSERT_TRUE(params.applyScene(scene, known, "class.json").ok());
+    EXPECT_FLOAT_EQ(threshold, 2.5f);
+    EXPECT_EQ(curve, 1);
+    EXPECT_EQ(source("threshold"), "scene");
+    EXPECT_EQ(source("tone_map"), "scene");
+    EXPECT_EQ(source("levels"), "default");  // the scene has no levels
+    EXPECT_EQ(params.unusedSettings(scene), std::vector<std::string>{"postEffects.bloom.knee"});
+    ASSERT_TRUE(params.fromJson(R"({"levels": "4"})", "p.json").ok());
+    EXPECT_EQ(source("levels"), "preset");
+    ASSERT_TRUE(params.assign("threshold=3").ok());
+    EXPECT_EQ(source("threshold"), "command line");
+
+    // The program changing a value behind the set's back (a drag in the picture) counts as the overlay,
+    // and so does a widget edit once marked.
+    params.markStartingValues();
+    threshold = 5.0f;
+    EXPECT_EQ(source("threshold"), "overlay");
+    curve = 0;
+    params.markEdited(*params.find("tone_map"));
+    EXPECT_EQ(source("tone_map"), "overlay");
+
+    // Reset goes back to how the run started, sources included, not to the lesson's defaults.
+    params.resetAll();
+    EXPECT_FLOAT_EQ(threshold, 3.0f);
+    EXPECT_EQ(source("threshold"), "command line");
+    EXPECT_EQ(curve, 1);
+    EXPECT_EQ(source("tone_map"), "scene");
+
+    // A temporary change (the bench) is put back with its sources.
+    auto saved = params.save();
+    params.find("levels")->set(8);
+    params.restore(saved);
+    EXPECT_EQ(levels, 4);
+    EXPECT_EQ(source("levels"), "preset");
+}
+
+TEST(Params, SceneValuesOutsideTheRangeAreRefusedByFileFieldAndRange) {
+    float intensity = 2.0f;
+    float knee = 0.5f;
+    fx::ParamSet params;
+    params.addFloat("knee", &knee, 0.0f, 1.0f, "").fromScene("postEffects.bloom.knee");
+    params.addFloat("intensity", &intensity, 0.0f, 4.0f, "").fromScene("postEffects.bloom.intensity");
+    const std::vector<std::string> known{"postEffects.bloom.knee", "postEffects.bloom.intensity"};
+    auto bad = params.applyScene({{"postEffects.bloom.knee", "0.25"}, {"postEffects.bloom.intensity", "50"}}, known,
+                                 "res/scenes/class.json");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().find("res/scenes/class.json: postEffects.bloom.intensity: parameter intensity: 50 is out "
+                               "of range; expected a number from 0 to 4"),
+              std::string::npos)
+        << bad.error();
+    EXPECT_FLOAT_EQ(knee, 0.5f);  // nothing changed, not even the good setting
+    EXPECT_EQ(params.find("knee")->source(), fx::ParamSource::lessonDefault);
+
+    // A lesson that binds a setting scene files do not have is a mistake found at start-up.
+    float typo = 0.0f;
+    params.addFloat("typo", &typo, 0.0f, 1.0f, "").fromScene("postEffects.blom.knee");
+    auto unknown = params.applyScene({}, known, "res/scenes/class.json");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_NE(unknown.error().find("\"postEffects.blom.knee\", which scene files do not have"), std::string::npos)
+        << unknown.error();
+}

@@ -129,7 +129,7 @@ TEST(SceneRoundTrip, EveryFieldIsRead) {
     EXPECT_EQ(post.colorMatrix, (fx::ColorMatrixSettings{fx::ColorMatrixPreset::sepia, 0.75f}));
     EXPECT_EQ(post.radialBlur, (fx::RadialBlurSettings{{0.4f, 0.6f}, 0.05f, 0.3f, 12}));
     EXPECT_EQ(post.depthOfField, (fx::DepthOfFieldSettings{24.0f, 32}));
-    EXPECT_EQ(post.toneMap, (fx::ToneMapSettings{fx::ToneMapOperator::reinhard, 1.5f}));
+    EXPECT_EQ(post.toneMap, (fx::ToneMapSettings{fx::ToneCurve::reinhard, 1.5f}));
 }
 
 TEST(SceneRoundTrip, EveryFieldSurvivesSaveAndLoad) {
