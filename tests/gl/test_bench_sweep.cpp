@@ -16,7 +16,7 @@ class GreyLesson final : public Lesson {
 public:
     explicit GreyLesson(std::string referenceName = {}) : referenceName_(std::move(referenceName)) {}
     LessonInfo info() const override { return {0, "grey", "grey per knob value", ""}; }
-    std::vector<LessonStep> steps() const override { return {{"grey", ""}}; }
+    std::vector<std::string> steps() const override { return {"grey"}; }
     void declareParams(ParamSet& params) override {
         Param& level = params.addInt("level", &level_, 0, 3, "the grey is level / 4");
         level.knob = Knob{{0, 1, 2}, 3, "level"};
