@@ -36,15 +36,17 @@ public:
     }
     void buildFrame(FrameGraph& graph, const FrameInfo&) override {
         auto& source = graph.addPass("copy source", {});
-        TextureHandle texture = source.create("copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1},
-                                              TextureUsage::ColorAttachment);
+        TextureHandle texture = source.create(
+            "copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
         source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}});
-        graph.addPass("copy", [this, texture](PassContext& ctx) {
-                 glBindTextureUnit(0, ctx.native(texture));
-                 glUseProgram(copy_.name());
-                 glBindVertexArray(vao_.name());
-                 glDrawArrays(GL_TRIANGLES, 0, 3);
-             })
+        graph
+            .addPass("copy",
+                     [this, texture](PassContext& ctx) {
+                         glBindTextureUnit(0, ctx.native(texture));
+                         glUseProgram(copy_.name());
+                         glBindVertexArray(vao_.name());
+                         glDrawArrays(GL_TRIANGLES, 0, 3);
+                     })
             .read(texture)
             .writeColor(graph.output())
             .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
@@ -61,8 +63,8 @@ struct Measured {
     std::vector<CapturedTexture> effect;
 };
 
-Measured measure(Lesson& lesson, FrameRenderer& renderer, const FrameInfo& frame, int frames, const std::string& pass,
-                 const std::vector<std::string>& effectTextures) {
+Measured measure(Lesson& lesson, FrameRenderer& renderer, const FrameInfo& frame, int frames,
+                 const std::string& pass, const std::vector<std::string>& effectTextures) {
     // GPU timer results arrive a few frames late: warm up long enough that they belong to this setting.
     int warmUp = renderer.timer().method() == TimingMethod::GpuTimestamps ? 6 : 2;
     Measured m;
@@ -142,7 +144,8 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
 
     {
         CopyFrame copy;  // its GL objects go at the end of this block
-        if (copy.init({})) result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
+        if (copy.init({}))
+            result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
     }
 
     result.effectTexture = lesson.benchTexture();
@@ -161,8 +164,10 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
         if (!options.knob.empty() && knob->name != options.knob) continue;
         std::vector<double> values = knob->knob->values;
         // Cut first, then make sure of the reference row: a sweep cut to its first values still has one.
-        if (options.maxValues > 0 && int(values.size()) > options.maxValues) values.resize(std::size_t(options.maxValues));
-        if (!separateReference && std::find(values.begin(), values.end(), knob->knob->reference) == values.end()) {
+        if (options.maxValues > 0 && int(values.size()) > options.maxValues)
+            values.resize(std::size_t(options.maxValues));
+        if (!separateReference &&
+            std::find(values.begin(), values.end(), knob->knob->reference) == values.end()) {
             values.push_back(knob->knob->reference);
         }
         // Every row, the reference row included, is rendered and timed afresh and compared with the
@@ -176,7 +181,8 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
             point.knob = knob->name;
             point.value = std::move(value);
             point.reference = isReference;
-            point.current = !referenceAlgorithm && current.contains(knob->name) && current[knob->name] == point.value;
+            point.current =
+                !referenceAlgorithm && current.contains(knob->name) && current[knob->name] == point.value;
             fillMeasurement(point, m, reference, result.copyMs);
             result.points.push_back(point);
         };
@@ -218,7 +224,8 @@ nlohmann::ordered_json jsonNumber(double v) {
 
 Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir) {
     std::ostringstream csv;
-    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,rmse,psnr_db,max_abs,"
+    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,rmse,"
+           "psnr_db,max_abs,"
            "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs\n";
     nlohmann::ordered_json json;
     json["lesson"] = r.lesson;
@@ -227,21 +234,31 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
     json["copyMs"] = r.copyMs;
     json["points"] = nlohmann::ordered_json::array();
     for (const SweepPoint& p : r.points) {
-        csv << r.lesson << "," << r.width << "," << r.height << "," << r.timingMethod << "," << p.knob << ",\"" << p.value
-            << "\"," << p.reference << "," << p.current << "," << number(p.medianMs) << "," << number(r.copyMs) << ","
-            << number(p.copyMultiple) << "," << number(p.rmse) << "," << number(p.psnr) << "," << number(p.maxAbs) << ",";
+        csv << r.lesson << "," << r.width << "," << r.height << "," << r.timingMethod << "," << p.knob
+            << ",\"" << p.value << "\"," << p.reference << "," << p.current << "," << number(p.medianMs)
+            << "," << number(r.copyMs) << "," << number(p.copyMultiple) << "," << number(p.rmse) << ","
+            << number(p.psnr) << "," << number(p.maxAbs) << ",";
         if (p.hasEffectError) {
-            csv << r.effectTexture << "," << number(p.effectRmse) << "," << number(p.effectPsnr) << "," << number(p.effectMaxAbs);
+            csv << r.effectTexture << "," << number(p.effectRmse) << "," << number(p.effectPsnr) << ","
+                << number(p.effectMaxAbs);
         } else {
             csv << ",,,";
         }
         csv << "\n";
-        json["points"].push_back({{"knob", p.knob}, {"value", p.value}, {"reference", p.reference}, {"current", p.current},
-                                  {"medianMs", p.medianMs}, {"copyMultiple", p.copyMultiple}, {"rmse", jsonNumber(p.rmse)},
-                                  {"psnrDb", jsonNumber(p.psnr)}, {"maxAbs", jsonNumber(p.maxAbs)}});
+        json["points"].push_back({{"knob", p.knob},
+                                  {"value", p.value},
+                                  {"reference", p.reference},
+                                  {"current", p.current},
+                                  {"medianMs", p.medianMs},
+                                  {"copyMultiple", p.copyMultiple},
+                                  {"rmse", jsonNumber(p.rmse)},
+                                  {"psnrDb", jsonNumber(p.psnr)},
+                                  {"maxAbs", jsonNumber(p.maxAbs)}});
         if (p.hasEffectError) {
-            json["points"].back()["effect"] = {{"texture", r.effectTexture}, {"rmse", jsonNumber(p.effectRmse)},
-                                               {"psnrDb", jsonNumber(p.effectPsnr)}, {"maxAbs", jsonNumber(p.effectMaxAbs)}};
+            json["points"].back()["effect"] = {{"texture", r.effectTexture},
+                                               {"rmse", jsonNumber(p.effectRmse)},
+                                               {"psnrDb", jsonNumber(p.effectPsnr)},
+                                               {"maxAbs", jsonNumber(p.effectMaxAbs)}};
         }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
@@ -256,12 +273,14 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         // The title says what was measured and how; the lesson is the folder the plot sits in.
         plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
         bool byCopy = r.copyMs > 0;
-        plot.xLabel = byCopy ? cat("frame cost in full-screen copies (1 copy = ", shortNumber(r.copyMs), " ms)")
-                             : "frame time (ms)";
+        plot.xLabel = byCopy
+                          ? cat("frame cost in full-screen copies (1 copy = ", shortNumber(r.copyMs), " ms)")
+                          : "frame time (ms)";
         plot.yLabel = "RMSE of the final image against the reference";
         for (auto& p : r.points) {
             if (p.knob != knob) continue;
-            plot.points.push_back({p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current});
+            plot.points.push_back(
+                {p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current});
         }
         if (auto s = writePng(dir / cat("bench-", knob, ".png"), renderScatterPlot(plot)); !s) return s;
     }
@@ -272,8 +291,9 @@ std::string describeSweep(const SweepResult& r) {
     std::ostringstream out;
     out << r.lesson << " at " << r.width << "x" << r.height << ", timing: " << r.timingMethod
         << ", one full-screen copy: " << number(r.copyMs) << " ms\n";
-    out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms" << std::setw(10)
-        << "x copy" << std::setw(12) << "rmse" << "psnr dB\n";
+    out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms"
+        << std::setw(10) << "x copy" << std::setw(12) << "rmse"
+        << "psnr dB\n";
     for (auto& p : r.points) {
         out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
             << std::setw(12) << number(p.medianMs) << std::setw(10) << number(p.copyMultiple) << std::setw(12)

@@ -18,9 +18,9 @@
 namespace fx {
 
 struct SweepOptions {
-    std::string knob;  // empty: every knob
-    int frames = 5;    // measured frames per setting (after warm-up)
-    int maxValues = 0; // 0: every value; otherwise the first N values of each knob
+    std::string knob;   // empty: every knob
+    int frames = 5;     // measured frames per setting (after warm-up)
+    int maxValues = 0;  // 0: every value; otherwise the first N values of each knob
 };
 
 SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,

@@ -23,8 +23,8 @@ std::vector<CapturedTexture> readFrameTextures(const FrameGraph& graph) {
 std::string captureFileStem(std::string_view name) {
     std::string stem;
     for (char ch : name) {
-        bool plain = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' ||
-                     ch == '_' || ch == '-';
+        bool plain = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                     ch == '.' || ch == '_' || ch == '-';
         if (plain) {
             stem += ch;
         } else if (ch == ']') {
@@ -45,7 +45,8 @@ Status writeCaptures(const std::filesystem::path& dir, const ByteImage& finalIma
         // Linear light is sRGB-encoded for viewing; depth and UNORM data are shown as stored.
         bool floatFormat = isFloat(t.spec.format) && !isDepth(t.spec.format);
         std::string stem = captureFileStem(t.name);
-        ByteImage shown = toDisplay(t.pixels, floatFormat ? ViewTransform::LinearToSrgb : ViewTransform::Direct);
+        ByteImage shown =
+            toDisplay(t.pixels, floatFormat ? ViewTransform::LinearToSrgb : ViewTransform::Direct);
         if (auto s = writePng(dir / (stem + ".png"), shown); !s) return s;
         if (floats) {
             if (auto s = writePfm(dir / (stem + ".pfm"), t.pixels); !s) return s;

@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "app/lesson_text_files.hpp"
 #include "app/frame_renderer.hpp"
+#include "app/lesson_text_files.hpp"
 #include "app/run_report.hpp"
 #include "app/run_session.hpp"
 #include "app/window_input.hpp"

@@ -33,13 +33,15 @@ RenderedFrame FrameRenderer::render(Lesson& lesson, const FrameInfo& frame, cons
         out.textures = readFrameTextures(graph);
         if (!request.readTextures) {
             std::erase_if(out.textures, [&](const CapturedTexture& t) {
-                return std::find(request.readNamed.begin(), request.readNamed.end(), t.name) == request.readNamed.end();
+                return std::find(request.readNamed.begin(), request.readNamed.end(), t.name) ==
+                       request.readNamed.end();
             });
         }
     }
     if (whileHeld) whileHeld(graph, out.report);
     if (request.readFinal) {
-        out.finalImage = gl::readFramebufferRgba8(context_.presentFramebuffer(), frame.size.width, frame.size.height);
+        out.finalImage =
+            gl::readFramebufferRgba8(context_.presentFramebuffer(), frame.size.width, frame.size.height);
     }
     // Inspected and captured textures go back to the pool only now.
     graph.releaseTextures();

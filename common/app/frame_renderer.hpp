@@ -17,10 +17,10 @@
 namespace fx {
 
 struct FrameRequest {
-    std::vector<std::string> inspect;  // keep these textures (and their producers) alive
-    bool readTextures = false;         // read back every texture of the frame (captures, report)
-    std::vector<std::string> readNamed; // read back only these (the bench's effect output)
-    bool readFinal = false;            // read back the presented image (after whileHeld drew on it)
+    std::vector<std::string> inspect;    // keep these textures (and their producers) alive
+    bool readTextures = false;           // read back every texture of the frame (captures, report)
+    std::vector<std::string> readNamed;  // read back only these (the bench's effect output)
+    bool readFinal = false;              // read back the presented image (after whileHeld drew on it)
 };
 
 struct RenderedFrame {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "app/lesson_facts.hpp"
 #include "base/params.hpp"
 #include "base/result.hpp"
-#include "app/lesson_facts.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene.hpp"
 
@@ -28,7 +28,7 @@ struct LessonInfo {
 
 // The mouse, in framebuffer pixels with the origin at the bottom left (as GL counts them).
 struct Pointer {
-    bool present = false;   // a window with the cursor inside it
+    bool present = false;  // a window with the cursor inside it
     float x = 0, y = 0;
     bool leftDown = false;  // held this frame
     bool overUi = false;    // the overlay owns the mouse: lessons ignore it then

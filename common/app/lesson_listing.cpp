@@ -14,7 +14,9 @@ std::string lessonFolderName(const LessonInfo& info) {
     return cat(number, "-", info.slug);
 }
 
-std::string executableName(const LessonInfo& info) { return "fxlab-" + lessonFolderName(info); }
+std::string executableName(const LessonInfo& info) {
+    return "fxlab-" + lessonFolderName(info);
+}
 
 std::filesystem::path lessonSourceFolder(const LessonInfo& info) {
     std::string folder = lessonFolderName(info);
@@ -43,7 +45,8 @@ bool printSteps(const LessonTextFiles& text) {
 void printParams(const ParamSet& params) {
     if (params.all().empty()) std::cout << "(this lesson has no parameters)\n";
     for (const Param& p : params.all()) {
-        std::cout << p.name << " = " << p.text() << "  [" << toString(p.source()) << "]  (" << p.rangeText() << ")";
+        std::cout << p.name << " = " << p.text() << "  [" << toString(p.source()) << "]  (" << p.rangeText()
+                  << ")";
         if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
         if (!p.sceneSetting.empty()) std::cout << "\n    starts from the scene's " << p.sceneSetting;
         std::cout << "\n    " << p.description << "\n";

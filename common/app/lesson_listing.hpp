@@ -10,7 +10,7 @@
 
 namespace fx {
 
-std::string executableName(const LessonInfo& info);  // "fxlab-01-program-objects"
+std::string executableName(const LessonInfo& info);    // "fxlab-01-program-objects"
 std::string lessonFolderName(const LessonInfo& info);  // "01-program-objects"
 // <root>/lessons/01_program_objects: the folder name is the slug with '_' for '-' (cmake/ makes the
 // executable's name from the folder's the other way round).

@@ -19,28 +19,28 @@ struct RunOptions {
     bool listSteps = false;
     bool listParams = false;
     bool forceHeadless = false;
-    std::optional<int> width, height;     // --size WxH
-    std::optional<int> frames;            // --frames N (default: 3 headless, until closed in a window)
-    std::optional<int> step;              // --step K, 1-based
-    std::filesystem::path scene;          // --scene FILE
-    std::string language = "en";          // --lang en|ja: the language of the lesson text
-    std::filesystem::path captureDir;     // --capture DIR
-    bool captureFloat = false;            // --capture-float
-    std::filesystem::path reportFile;     // --report FILE
-    std::filesystem::path graphFile;      // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
-    std::optional<double> timeStep;       // --time-step S (fixed step; default 1/60 s headless)
-    std::uint32_t seed = 1;               // --seed N
-    std::vector<std::string> params;      // --param name=value, checked once the lesson is known
-    std::filesystem::path presetFile;     // --preset FILE
+    std::optional<int> width, height;  // --size WxH
+    std::optional<int> frames;         // --frames N (default: 3 headless, until closed in a window)
+    std::optional<int> step;           // --step K, 1-based
+    std::filesystem::path scene;       // --scene FILE
+    std::string language = "en";       // --lang en|ja: the language of the lesson text
+    std::filesystem::path captureDir;  // --capture DIR
+    bool captureFloat = false;         // --capture-float
+    std::filesystem::path reportFile;  // --report FILE
+    std::filesystem::path graphFile;   // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
+    std::optional<double> timeStep;    // --time-step S (fixed step; default 1/60 s headless)
+    std::uint32_t seed = 1;            // --seed N
+    std::vector<std::string> params;   // --param name=value, checked once the lesson is known
+    std::filesystem::path presetFile;  // --preset FILE
     TimingMode timing = TimingMode::Automatic;  // --timing gpu|fenced|off
-    bool overlay = true;                  // --no-overlay; headless draws it only with --overlay
-    bool overlayHeadless = false;         // --overlay
-    std::vector<std::string> inspect;     // --inspect NAME: keep a texture and its producers alive
-    bool bench = false;                   // --bench: sweep the quality knobs instead of running
-    std::string benchKnob;                // --knob NAME: only this knob
-    int benchFrames = 5;                  // --bench-frames N: measured frames per setting
-    int benchValues = 0;                  // --bench-values N: only the first N values of each knob
-    std::filesystem::path benchOut;       // --bench-out DIR (default out/bench/<NN-name>)
+    bool overlay = true;                        // --no-overlay; headless draws it only with --overlay
+    bool overlayHeadless = false;               // --overlay
+    std::vector<std::string> inspect;           // --inspect NAME: keep a texture and its producers alive
+    bool bench = false;                         // --bench: sweep the quality knobs instead of running
+    std::string benchKnob;                      // --knob NAME: only this knob
+    int benchFrames = 5;                        // --bench-frames N: measured frames per setting
+    int benchValues = 0;                        // --bench-values N: only the first N values of each knob
+    std::filesystem::path benchOut;             // --bench-out DIR (default out/bench/<NN-name>)
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".
@@ -54,7 +54,7 @@ std::string runOptionsHelp(const std::string& program);
 // --inspect names no texture of a frame: one warning per such name, naming it and the frame's
 // texture names nearest to it. The names are known only once a frame's graph is built, so the
 // runner asks after its first frame; `step` (0-based) is the step that frame showed.
-std::vector<std::string> unknownInspectWarnings(const std::vector<std::string>& inspect, const FrameReport& report,
-                                                int step);
+std::vector<std::string> unknownInspectWarnings(const std::vector<std::string>& inspect,
+                                                const FrameReport& report, int step);
 
 }  // namespace fx

@@ -7,8 +7,12 @@ namespace fx {
 nlohmann::ordered_json statsJson(const std::vector<ChannelStats>& stats) {
     auto channels = nlohmann::ordered_json::array();
     for (const ChannelStats& s : stats) {
-        channels.push_back({{"min", s.min}, {"max", s.max}, {"mean", s.mean}, {"nan", s.nanCount},
-                            {"inf", s.infCount}, {"negative", s.negativeCount}});
+        channels.push_back({{"min", s.min},
+                            {"max", s.max},
+                            {"mean", s.mean},
+                            {"nan", s.nanCount},
+                            {"inf", s.infCount},
+                            {"negative", s.negativeCount}});
     }
     return channels;
 }
@@ -24,7 +28,8 @@ nlohmann::ordered_json usesJson(const std::vector<TextureUseRecord>& uses) {
 }  // namespace
 
 nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& frame,
-                                      const std::vector<CapturedTexture>& textures, const FloatImage& finalImage) {
+                                      const std::vector<CapturedTexture>& textures,
+                                      const FloatImage& finalImage) {
     nlohmann::ordered_json j;
     j["lesson"] = f.lesson;
     j["scene"] = f.scene;
@@ -41,7 +46,9 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     j["timing"] = {{"method", f.timingMethod}, {"reason", f.timingReason}};
     auto frames = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < f.frameCpuMs.size(); ++i) {
-        frames.push_back({{"index", i}, {"cpuMs", f.frameCpuMs[i]}, {"passMs", i < f.frameGpuMs.size() ? f.frameGpuMs[i] : 0.0}});
+        frames.push_back({{"index", i},
+                          {"cpuMs", f.frameCpuMs[i]},
+                          {"passMs", i < f.frameGpuMs.size() ? f.frameGpuMs[i] : 0.0}});
     }
     j["frames"] = frames;
 
@@ -82,19 +89,24 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
         texturesJson.push_back(tj);
     }
     j["textures"] = texturesJson;
-    j["pool"] = {{"liveBytes", frame.pool.liveBytes}, {"peakBytes", frame.pool.peakBytes},
+    j["pool"] = {{"liveBytes", frame.pool.liveBytes},
+                 {"peakBytes", frame.pool.peakBytes},
                  {"liveTextures", frame.pool.liveTextures}};
-    j["final"] = {{"size", {finalImage.width, finalImage.height}}, {"stats", statsJson(computeStats(finalImage))}};
+    j["final"] = {{"size", {finalImage.width, finalImage.height}},
+                  {"stats", statsJson(computeStats(finalImage))}};
     j["shaderErrors"] = f.shaderErrors;
     nlohmann::ordered_json facts = nlohmann::ordered_json::object();
     // "true" and "false" become JSON booleans: the smoke script looks for "expectErrorsInStep": true.
     for (auto& [k, v] : f.lessonFacts) {
-        if (v == "true" || v == "false") facts[k] = (v == "true");
-        else facts[k] = v;
+        if (v == "true" || v == "false")
+            facts[k] = (v == "true");
+        else
+            facts[k] = v;
     }
     j["facts"] = facts;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
-    for (const ParamFact& p : f.params) params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});
+    for (const ParamFact& p : f.params)
+        params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});
     j["params"] = params;
     return j;
 }

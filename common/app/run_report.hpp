@@ -34,6 +34,7 @@ struct RunFacts {
 nlohmann::ordered_json statsJson(const std::vector<ChannelStats>& stats);
 
 nlohmann::ordered_json buildRunReport(const RunFacts& facts, const FrameReport& lastFrame,
-                                      const std::vector<CapturedTexture>& textures, const FloatImage& finalImage);
+                                      const std::vector<CapturedTexture>& textures,
+                                      const FloatImage& finalImage);
 
 }  // namespace fx

@@ -22,7 +22,8 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
     Facts lessonFacts;
     s.lesson->facts(lessonFacts, record.lastFrame);
     for (const Fact& f : lessonFacts.list()) facts.lessonFacts.emplace_back(f.name, f.value);
-    for (const Param& p : s.params.all()) facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
+    for (const Param& p : s.params.all())
+        facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
 
     int exitCode = 0;
     if (!plan.captureDir.empty()) {

@@ -72,7 +72,8 @@ std::optional<int> loadLessonScene(RunSession& s) {
     if (s.options.scene.empty() && info.defaultScene.empty()) {
         // A lesson that names no scene runs with an empty one: the default camera and background,
         // no objects or lights, and every pass that needs a scene feature not called for.
-        log::info(s.exe, ": this lesson names no scene (LessonInfo::defaultScene); running with an empty one");
+        log::info(s.exe,
+                  ": this lesson names no scene (LessonInfo::defaultScene); running with an empty one");
         return std::nullopt;
     }
     fs::path sceneFile = s.options.scene.empty() ? resourceDir() / info.defaultScene : s.options.scene;

@@ -21,10 +21,14 @@ Registry& registry() {
 
 const char* prefix(Level level) {
     switch (level) {
-        case Level::debug: return "debug: ";
-        case Level::info: return "";
-        case Level::warning: return "warning: ";
-        case Level::error: return "error: ";
+        case Level::debug:
+            return "debug: ";
+        case Level::info:
+            return "";
+        case Level::warning:
+            return "warning: ";
+        case Level::error:
+            return "error: ";
     }
     return "";
 }

@@ -29,10 +29,22 @@ void removeSink(int id);
 // Lines below this level are not printed to stderr (sinks still see them).
 void setConsoleLevel(Level level);
 
-template <class... Args> void debug(const Args&... args) { write(Level::debug, cat(args...)); }
-template <class... Args> void info(const Args&... args) { write(Level::info, cat(args...)); }
-template <class... Args> void warning(const Args&... args) { write(Level::warning, cat(args...)); }
-template <class... Args> void error(const Args&... args) { write(Level::error, cat(args...)); }
+template <class... Args>
+void debug(const Args&... args) {
+    write(Level::debug, cat(args...));
+}
+template <class... Args>
+void info(const Args&... args) {
+    write(Level::info, cat(args...));
+}
+template <class... Args>
+void warning(const Args&... args) {
+    write(Level::warning, cat(args...));
+}
+template <class... Args>
+void error(const Args&... args) {
+    write(Level::error, cat(args...));
+}
 
 }  // namespace log
 }  // namespace fx

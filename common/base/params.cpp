@@ -32,11 +32,16 @@ Result<double> parseNumber(std::string_view text) {
 
 std::string_view toString(ParamSource source) {
     switch (source) {
-        case ParamSource::lessonDefault: return "default";
-        case ParamSource::scene: return "scene";
-        case ParamSource::preset: return "preset";
-        case ParamSource::commandLine: return "command line";
-        case ParamSource::overlay: return "overlay";
+        case ParamSource::lessonDefault:
+            return "default";
+        case ParamSource::scene:
+            return "scene";
+        case ParamSource::preset:
+            return "preset";
+        case ParamSource::commandLine:
+            return "command line";
+        case ParamSource::overlay:
+            return "overlay";
     }
     return "?";
 }
@@ -47,10 +52,13 @@ ParamSource Param::source() const {
 
 double Param::get() const {
     switch (type) {
-        case ParamType::Float: return *floatValue;
+        case ParamType::Float:
+            return *floatValue;
         case ParamType::Int:
-        case ParamType::Choice: return *intValue;
-        case ParamType::Bool: return *boolValue ? 1.0 : 0.0;
+        case ParamType::Choice:
+            return *intValue;
+        case ParamType::Bool:
+            return *boolValue ? 1.0 : 0.0;
     }
     return 0;
 }
@@ -58,18 +66,27 @@ double Param::get() const {
 void Param::set(double value) const {
     value = std::clamp(value, min, max);
     switch (type) {
-        case ParamType::Float: *floatValue = static_cast<float>(value); break;
+        case ParamType::Float:
+            *floatValue = static_cast<float>(value);
+            break;
         case ParamType::Int:
-        case ParamType::Choice: *intValue = static_cast<int>(std::lround(value)); break;
-        case ParamType::Bool: *boolValue = value != 0.0; break;
+        case ParamType::Choice:
+            *intValue = static_cast<int>(std::lround(value));
+            break;
+        case ParamType::Bool:
+            *boolValue = value != 0.0;
+            break;
     }
 }
 
 std::string Param::valueText(double value) const {
     switch (type) {
-        case ParamType::Float: return formatNumber(value);
-        case ParamType::Int: return cat(static_cast<long>(std::lround(value)));
-        case ParamType::Bool: return value != 0.0 ? "true" : "false";
+        case ParamType::Float:
+            return formatNumber(value);
+        case ParamType::Int:
+            return cat(static_cast<long>(std::lround(value)));
+        case ParamType::Bool:
+            return value != 0.0 ? "true" : "false";
         case ParamType::Choice: {
             auto i = static_cast<std::size_t>(std::lround(value));
             return i < choices.size() ? choices[i] : cat(i);
@@ -78,13 +95,18 @@ std::string Param::valueText(double value) const {
     return {};
 }
 
-std::string Param::text() const { return valueText(get()); }
+std::string Param::text() const {
+    return valueText(get());
+}
 
 std::string Param::rangeText() const {
     switch (type) {
-        case ParamType::Float: return cat("a number from ", formatNumber(min), " to ", formatNumber(max));
-        case ParamType::Int: return cat("a whole number from ", static_cast<long>(min), " to ", static_cast<long>(max));
-        case ParamType::Bool: return "true or false";
+        case ParamType::Float:
+            return cat("a number from ", formatNumber(min), " to ", formatNumber(max));
+        case ParamType::Int:
+            return cat("a whole number from ", static_cast<long>(min), " to ", static_cast<long>(max));
+        case ParamType::Bool:
+            return "true or false";
         case ParamType::Choice: {
             std::string list;
             for (auto& c : choices) list += (list.empty() ? "" : ", ") + c;
@@ -133,7 +155,8 @@ Param& ParamSet::addBool(std::string name, bool* value, std::string description)
     return add(std::move(p));
 }
 
-Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string> choices, std::string description) {
+Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string> choices,
+                           std::string description) {
     double max = choices.empty() ? 0 : double(choices.size() - 1);
     Param p = makeParam(std::move(name), std::move(description), ParamType::Choice, 0, max);
     p.choices = std::move(choices);
@@ -219,7 +242,8 @@ Result<double> parseFor(const Param& p, std::string_view text) {
         case ParamType::Float: {
             auto v = parseNumber(text);
             if (!v) return bad(v.error());
-            if (p.type == ParamType::Int && std::floor(*v) != *v) return bad(cat(text, " is not a whole number"));
+            if (p.type == ParamType::Int && std::floor(*v) != *v)
+                return bad(cat(text, " is not a whole number"));
             if (*v < p.min || *v > p.max) return bad(cat(text, " is out of range"));
             return *v;
         }
@@ -234,7 +258,8 @@ Status ParamSet::set(std::string_view name, std::string_view text, ParamSource s
     if (!p) {
         std::string known;
         for (auto& q : params_) known += (known.empty() ? "" : ", ") + q.name;
-        return Error{cat("no parameter named \"", name, "\"; this lesson has: ", known.empty() ? "(none)" : known)};
+        return Error{
+            cat("no parameter named \"", name, "\"; this lesson has: ", known.empty() ? "(none)" : known)};
     }
     auto v = parseFor(*p, text);
     if (!v) return Error{v.error()};

@@ -64,9 +64,9 @@ struct Param {
     ParamSource source() const;
 
     double get() const;
-    void set(double value) const;  // clamps into range
-    std::string text() const;      // the current value as --param would take it
-    std::string rangeText() const; // "0 to 1", "one of: none, grayscale, sepia"
+    void set(double value) const;   // clamps into range
+    std::string text() const;       // the current value as --param would take it
+    std::string rangeText() const;  // "0 to 1", "one of: none, grayscale, sepia"
     std::string valueText(double value) const;
 };
 
@@ -116,7 +116,8 @@ public:
     // Preset files: a JSON object of name -> value text. Loading checks every entry first and
     // changes nothing if one is bad.
     std::string toJson() const;
-    Status fromJson(std::string_view json, std::string_view fileName, ParamSource source = ParamSource::preset);
+    Status fromJson(std::string_view json, std::string_view fileName,
+                    ParamSource source = ParamSource::preset);
 
 private:
     std::vector<Param> params_;

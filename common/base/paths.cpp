@@ -9,7 +9,11 @@ std::filesystem::path projectRoot() {
     return FXLAB_SOURCE_ROOT;
 }
 
-std::filesystem::path shaderDir() { return projectRoot() / "shaders"; }
-std::filesystem::path resourceDir() { return projectRoot() / "res"; }
+std::filesystem::path shaderDir() {
+    return projectRoot() / "shaders";
+}
+std::filesystem::path resourceDir() {
+    return projectRoot() / "res";
+}
 
 }  // namespace fx

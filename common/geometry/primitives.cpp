@@ -85,12 +85,12 @@ MeshData makePlane(float sizeX, float sizeZ) {
 MeshData makeBox(glm::vec3 size) {
     MeshData m;
     glm::vec3 h = size * 0.5f;
-    addQuad(m, {-h.x, -h.y, h.z}, {size.x, 0, 0}, {0, size.y, 0}, {0, 0, 1});     // front
-    addQuad(m, {h.x, -h.y, -h.z}, {-size.x, 0, 0}, {0, size.y, 0}, {0, 0, -1});   // back
-    addQuad(m, {h.x, -h.y, h.z}, {0, 0, -size.z}, {0, size.y, 0}, {1, 0, 0});     // right
-    addQuad(m, {-h.x, -h.y, -h.z}, {0, 0, size.z}, {0, size.y, 0}, {-1, 0, 0});   // left
-    addQuad(m, {-h.x, h.y, h.z}, {size.x, 0, 0}, {0, 0, -size.z}, {0, 1, 0});     // top
-    addQuad(m, {-h.x, -h.y, -h.z}, {size.x, 0, 0}, {0, 0, size.z}, {0, -1, 0});   // bottom
+    addQuad(m, {-h.x, -h.y, h.z}, {size.x, 0, 0}, {0, size.y, 0}, {0, 0, 1});    // front
+    addQuad(m, {h.x, -h.y, -h.z}, {-size.x, 0, 0}, {0, size.y, 0}, {0, 0, -1});  // back
+    addQuad(m, {h.x, -h.y, h.z}, {0, 0, -size.z}, {0, size.y, 0}, {1, 0, 0});    // right
+    addQuad(m, {-h.x, -h.y, -h.z}, {0, 0, size.z}, {0, size.y, 0}, {-1, 0, 0});  // left
+    addQuad(m, {-h.x, h.y, h.z}, {size.x, 0, 0}, {0, 0, -size.z}, {0, 1, 0});    // top
+    addQuad(m, {-h.x, -h.y, -h.z}, {size.x, 0, 0}, {0, 0, size.z}, {0, -1, 0});  // bottom
     return m;
 }
 

@@ -12,12 +12,18 @@ std::int64_t errorsSeenByCallbackThisDrain = 0;
 
 const char* sourceName(GLenum source) {
     switch (source) {
-        case GL_DEBUG_SOURCE_API: return "api";
-        case GL_DEBUG_SOURCE_WINDOW_SYSTEM: return "window system";
-        case GL_DEBUG_SOURCE_SHADER_COMPILER: return "shader compiler";
-        case GL_DEBUG_SOURCE_THIRD_PARTY: return "third party";
-        case GL_DEBUG_SOURCE_APPLICATION: return "application";
-        default: return "other";
+        case GL_DEBUG_SOURCE_API:
+            return "api";
+        case GL_DEBUG_SOURCE_WINDOW_SYSTEM:
+            return "window system";
+        case GL_DEBUG_SOURCE_SHADER_COMPILER:
+            return "shader compiler";
+        case GL_DEBUG_SOURCE_THIRD_PARTY:
+            return "third party";
+        case GL_DEBUG_SOURCE_APPLICATION:
+            return "application";
+        default:
+            return "other";
     }
 }
 
@@ -33,8 +39,8 @@ void countError(std::string_view text) {
 
 void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                const GLchar* message, const void*) {
-    std::string_view text(message, length < 0 ? std::char_traits<char>::length(message)
-                                              : static_cast<std::size_t>(length));
+    std::string_view text(
+        message, length < 0 ? std::char_traits<char>::length(message) : static_cast<std::size_t>(length));
     switch (type) {
         case GL_DEBUG_TYPE_ERROR:
             // A failed compile is not a GL error: the Program reports it with file and line.
@@ -72,7 +78,9 @@ bool installDebugOutput() {
     return callbackInstalled;
 }
 
-const DebugCounters& debugCounters() { return counters; }
+const DebugCounters& debugCounters() {
+    return counters;
+}
 
 void resetDebugCounters() {
     counters = {};
@@ -109,19 +117,30 @@ DebugGroup::DebugGroup(std::string_view name) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, static_cast<GLsizei>(name.size()), name.data());
 }
 
-DebugGroup::~DebugGroup() { glPopDebugGroup(); }
+DebugGroup::~DebugGroup() {
+    glPopDebugGroup();
+}
 
 std::string_view errorName(GLenum error) {
     switch (error) {
-        case GL_NO_ERROR: return "GL_NO_ERROR";
-        case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-        case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-        case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-        case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-        case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-        case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
-        case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
-        default: return "unknown GL error";
+        case GL_NO_ERROR:
+            return "GL_NO_ERROR";
+        case GL_INVALID_ENUM:
+            return "GL_INVALID_ENUM";
+        case GL_INVALID_VALUE:
+            return "GL_INVALID_VALUE";
+        case GL_INVALID_OPERATION:
+            return "GL_INVALID_OPERATION";
+        case GL_INVALID_FRAMEBUFFER_OPERATION:
+            return "GL_INVALID_FRAMEBUFFER_OPERATION";
+        case GL_OUT_OF_MEMORY:
+            return "GL_OUT_OF_MEMORY";
+        case GL_STACK_OVERFLOW:
+            return "GL_STACK_OVERFLOW";
+        case GL_STACK_UNDERFLOW:
+            return "GL_STACK_UNDERFLOW";
+        default:
+            return "unknown GL error";
     }
 }
 

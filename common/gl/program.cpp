@@ -9,7 +9,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path resolveShaderPath(const fs::path& p) { return p.is_absolute() ? p : shaderDir() / p; }
+fs::path resolveShaderPath(const fs::path& p) {
+    return p.is_absolute() ? p : shaderDir() / p;
+}
 
 std::string shaderInfoLog(GLuint shader) {
     GLint length = 0;
@@ -96,9 +98,11 @@ Result<Program> Program::build(const ProgramSources& sources) {
     for (GLint i = 0; i < count; ++i) {
         const GLenum properties[] = {GL_NAME_LENGTH, GL_LOCATION};
         GLint values[2] = {};
-        glGetProgramResourceiv(program.name(), GL_UNIFORM, static_cast<GLuint>(i), 2, properties, 2, nullptr, values);
+        glGetProgramResourceiv(program.name(), GL_UNIFORM, static_cast<GLuint>(i), 2, properties, 2, nullptr,
+                               values);
         std::string uniform(static_cast<std::size_t>(std::max(values[0], 1)), '\0');
-        glGetProgramResourceName(program.name(), GL_UNIFORM, static_cast<GLuint>(i), values[0], nullptr, uniform.data());
+        glGetProgramResourceName(program.name(), GL_UNIFORM, static_cast<GLuint>(i), values[0], nullptr,
+                                 uniform.data());
         uniform.resize(std::char_traits<char>::length(uniform.c_str()));
         if (values[1] >= 0) program.uniforms_[uniform] = values[1];
     }

@@ -14,12 +14,14 @@ FloatImage readTexture(GLuint texture, const TextureSpec& spec, int level) {
     image.texels.assign(static_cast<std::size_t>(image.width) * image.height * image.channels, 0.0f);
     GLenum format = readbackPixelFormat(spec.format);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture, level, format, GL_FLOAT, static_cast<GLsizei>(image.texels.size() * sizeof(float)),
-                      image.texels.data());
+    glGetTextureImage(texture, level, format, GL_FLOAT,
+                      static_cast<GLsizei>(image.texels.size() * sizeof(float)), image.texels.data());
     return image;
 }
 
-FloatImage readTexture(const Texture& texture, int level) { return readTexture(texture.name(), texture.spec(), level); }
+FloatImage readTexture(const Texture& texture, int level) {
+    return readTexture(texture.name(), texture.spec(), level);
+}
 
 Texel readTexel(GLuint texture, const TextureSpec& spec, int level, int x, int y) {
     Texel texel;

@@ -87,7 +87,8 @@ struct Expander {
             out.text += line + "\n";
         }
         if (isMain && !sawVersion) {
-            return Error{cat(displayName(file), ":1: the first directive must be #version (e.g. #version 450 core)")};
+            return Error{
+                cat(displayName(file), ":1: the first directive must be #version (e.g. #version 450 core)")};
         }
         stack.pop_back();
         return Status::success();
@@ -96,9 +97,10 @@ struct Expander {
 
 }  // namespace
 
-Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& includeRoot, std::string_view defines,
-                                          const FileReader& reader) {
-    FileReader read = reader ? reader : FileReader([](const fs::path& p) { return readFile(p, file_limits::shader); });
+Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& includeRoot,
+                                          std::string_view defines, const FileReader& reader) {
+    FileReader read =
+        reader ? reader : FileReader([](const fs::path& p) { return readFile(p, file_limits::shader); });
     Expander expander{includeRoot, read, {}, {}};
     auto status = expander.expand(file.lexically_normal(), defines, true);
     if (!status) return Error{status.error()};

@@ -13,9 +13,9 @@
 namespace fx::gl {
 
 struct ExpandedSource {
-    std::string text;                            // ready for glShaderSource
-    std::vector<std::string> fileNames;          // index = source-string number in #line
-    std::vector<std::filesystem::path> files;    // every file read, for reload on change
+    std::string text;                          // ready for glShaderSource
+    std::vector<std::string> fileNames;        // index = source-string number in #line
+    std::vector<std::filesystem::path> files;  // every file read, for reload on change
 };
 
 using FileReader = std::function<Result<std::string>(const std::filesystem::path&)>;

@@ -57,7 +57,8 @@ Status writePng(const std::filesystem::path& path, const ByteImage& image) {
 namespace {
 
 // stb_image decodes; `kind` names what was expected in the error ("PNG image").
-Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::string& what, const char* kind) {
+Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::string& what,
+                                const char* kind) {
     if (encoded.size() > static_cast<std::size_t>(INT_MAX)) return Error{cat(what, ": file too large")};
     int width = 0, height = 0, channelsInFile = 0;
     std::unique_ptr<unsigned char, StbiFree> pixels(

@@ -20,8 +20,9 @@ Status Context::finishSetup(std::string kind) {
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     if (major < 4 || (major == 4 && minor < 5)) {
-        return Error{cat("fxlab needs OpenGL 4.5 core; this machine offers OpenGL ", version_, " on ", renderer_,
-                         " (", kind_, "). Update the graphics driver, or use Mesa's llvmpipe (LIBGL_ALWAYS_SOFTWARE=1).")};
+        return Error{cat("fxlab needs OpenGL 4.5 core; this machine offers OpenGL ", version_, " on ",
+                         renderer_, " (", kind_,
+                         "). Update the graphics driver, or use Mesa's llvmpipe (LIBGL_ALWAYS_SOFTWARE=1).")};
     }
     gl::setContextAlive(true);
     gl::installDebugOutput();

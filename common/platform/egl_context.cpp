@@ -17,18 +17,30 @@ namespace {
 
 std::string eglErrorName(EGLint error) {
     switch (error) {
-        case EGL_SUCCESS: return "EGL_SUCCESS";
-        case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-        case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-        case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-        case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-        case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-        case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-        case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-        case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-        case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-        case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-        default: return cat("EGL error 0x", std::hex, error);
+        case EGL_SUCCESS:
+            return "EGL_SUCCESS";
+        case EGL_NOT_INITIALIZED:
+            return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ACCESS:
+            return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_ATTRIBUTE:
+            return "EGL_BAD_ATTRIBUTE";
+        case EGL_BAD_CONFIG:
+            return "EGL_BAD_CONFIG";
+        case EGL_BAD_CONTEXT:
+            return "EGL_BAD_CONTEXT";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_PARAMETER:
+            return "EGL_BAD_PARAMETER";
+        case EGL_BAD_SURFACE:
+            return "EGL_BAD_SURFACE";
+        default:
+            return cat("EGL error 0x", std::hex, error);
     }
 }
 
@@ -137,33 +149,50 @@ std::string describeBestContext(EGLDisplay display, EGLConfig config) {
 Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& options) {
     // First load: client extensions only, no display yet.
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) {
-        return Error{"headless rendering needs EGL (libEGL.so.1), which could not be loaded: install libegl1 and Mesa (libegl-mesa0)"};
+        return Error{
+            "headless rendering needs EGL (libEGL.so.1), which could not be loaded: install libegl1 and Mesa "
+            "(libegl-mesa0)"};
     }
     std::string notes;
     std::string failures;
     for (const Candidate& candidate : candidateDisplays(notes)) {
         EGLint major = 0, minor = 0;
         if (!eglInitialize(candidate.display, &major, &minor)) {
-            failures += cat("\n  ", candidate.kind, ": eglInitialize failed (", eglErrorName(eglGetError()), ")");
+            failures +=
+                cat("\n  ", candidate.kind, ": eglInitialize failed (", eglErrorName(eglGetError()), ")");
             continue;
         }
         gladLoaderLoadEGL(candidate.display);  // display extensions and EGL 1.5 entry points
-        std::string vendor = eglQueryString(candidate.display, EGL_VENDOR) ? eglQueryString(candidate.display, EGL_VENDOR) : "?";
-        const EGLint configAttributes[] = {EGL_SURFACE_TYPE, candidate.needsPbuffer ? EGL_PBUFFER_BIT : 0,
-                                           EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                           EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+        std::string vendor = eglQueryString(candidate.display, EGL_VENDOR)
+                                 ? eglQueryString(candidate.display, EGL_VENDOR)
+                                 : "?";
+        const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
+                                           candidate.needsPbuffer ? EGL_PBUFFER_BIT : 0,
+                                           EGL_RENDERABLE_TYPE,
+                                           EGL_OPENGL_BIT,
+                                           EGL_RED_SIZE,
+                                           8,
+                                           EGL_GREEN_SIZE,
+                                           8,
+                                           EGL_BLUE_SIZE,
+                                           8,
                                            EGL_NONE};
         EGLConfig config = nullptr;
         EGLint configCount = 0;
-        if (!eglChooseConfig(candidate.display, configAttributes, &config, 1, &configCount) || configCount == 0 ||
-            !eglBindAPI(EGL_OPENGL_API)) {
+        if (!eglChooseConfig(candidate.display, configAttributes, &config, 1, &configCount) ||
+            configCount == 0 || !eglBindAPI(EGL_OPENGL_API)) {
             failures += cat("\n  ", candidate.kind, " (", vendor, "): no OpenGL config");
             eglTerminate(candidate.display);
             continue;
         }
-        const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                            EGL_CONTEXT_OPENGL_DEBUG, options.debugContext ? EGL_TRUE : EGL_FALSE,
+        const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                            4,
+                                            EGL_CONTEXT_MINOR_VERSION,
+                                            5,
+                                            EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                            EGL_CONTEXT_OPENGL_DEBUG,
+                                            options.debugContext ? EGL_TRUE : EGL_FALSE,
                                             EGL_NONE};
         EGLContext context = eglCreateContext(candidate.display, config, EGL_NO_CONTEXT, contextAttributes);
         if (context == EGL_NO_CONTEXT) {
@@ -196,7 +225,8 @@ Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& opt
         }
         return std::unique_ptr<Context>(std::move(result));
     }
-    return Error{cat("fxlab needs OpenGL 4.5 core, and no headless context could be created:", failures.empty() ? " no EGL display found" : failures,
+    return Error{cat("fxlab needs OpenGL 4.5 core, and no headless context could be created:",
+                     failures.empty() ? " no EGL display found" : failures,
                      notes.empty() ? "" : cat("\n  (", notes, " )"))};
 }
 

@@ -16,7 +16,8 @@ namespace {
 std::string lastGlfwError() {
     const char* description = nullptr;
     int code = glfwGetError(&description);
-    return code == GLFW_NO_ERROR ? std::string("no error reported") : cat(description ? description : "", " (", code, ")");
+    return code == GLFW_NO_ERROR ? std::string("no error reported")
+                                 : cat(description ? description : "", " (", code, ")");
 }
 
 // What the machine can do when 4.5 core is refused: any context at all, for the message.
@@ -26,7 +27,8 @@ std::string describeBestAvailableContext() {
     GLFWwindow* probe = glfwCreateWindow(16, 16, "fxlab probe", nullptr, nullptr);
     if (!probe) return "no OpenGL context at all (" + lastGlfwError() + ")";
     glfwMakeContextCurrent(probe);
-    auto getString = reinterpret_cast<const unsigned char* (*)(unsigned int)>(glfwGetProcAddress("glGetString"));
+    auto getString =
+        reinterpret_cast<const unsigned char* (*)(unsigned int)>(glfwGetProcAddress("glGetString"));
     std::string text = "an unknown version";
     if (getString) {
         const auto* version = getString(GL_VERSION);
@@ -84,13 +86,14 @@ Result<std::unique_ptr<Context>> createWindowContext(const ContextOptions& optio
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debugContext ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
-    GLFWwindow* window = glfwCreateWindow(options.size.width, options.size.height, options.title.c_str(), nullptr, nullptr);
+    GLFWwindow* window =
+        glfwCreateWindow(options.size.width, options.size.height, options.title.c_str(), nullptr, nullptr);
     if (!window) {
         std::string reason = lastGlfwError();
         std::string found = describeBestAvailableContext();
         glfwTerminate();
-        return Error{cat("fxlab needs OpenGL 4.5 core; the window system refused it (", reason, "); this machine offers ",
-                         found)};
+        return Error{cat("fxlab needs OpenGL 4.5 core; the window system refused it (", reason,
+                         "); this machine offers ", found)};
     }
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);

@@ -7,9 +7,12 @@
 
 namespace fx {
 
-GlPassExecutor::GlPassExecutor(PassTimer& timer, GlExecutorOptions options) : timer_(timer), options_(options) {}
+GlPassExecutor::GlPassExecutor(PassTimer& timer, GlExecutorOptions options)
+    : timer_(timer), options_(options) {}
 
-void GlPassExecutor::beginFrame(const FrameGraph&) { timer_.beginFrame(); }
+void GlPassExecutor::beginFrame(const FrameGraph&) {
+    timer_.beginFrame();
+}
 
 Result<GLuint> GlPassExecutor::framebufferFor(const Pass& pass, PassContext& ctx) {
     if (pass.writesPresentedOutput()) return options_.presentFramebuffer;
@@ -29,10 +32,12 @@ Result<GLuint> GlPassExecutor::framebufferFor(const Pass& pass, PassContext& ctx
     if (it == framebuffers_.end()) {
         gl::Framebuffer fbo(label);
         for (std::size_t i = 0; i < key.colors.size(); ++i) {
-            glNamedFramebufferTexture(fbo.name(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), key.colors[i], 0);
+            glNamedFramebufferTexture(fbo.name(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i),
+                                      key.colors[i], 0);
         }
         if (key.depth != 0) {
-            glNamedFramebufferTexture(fbo.name(), key.depthStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+            glNamedFramebufferTexture(fbo.name(),
+                                      key.depthStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                       key.depth, 0);
         }
         fbo.setDrawBuffers(static_cast<int>(key.colors.size()));
@@ -93,6 +98,8 @@ void GlPassExecutor::endPass(const Pass& pass, PassRecord& record) {
     group_.reset();
 }
 
-void GlPassExecutor::endFrame(const FrameGraph&, FrameReport&) { group_.reset(); }
+void GlPassExecutor::endFrame(const FrameGraph&, FrameReport&) {
+    group_.reset();
+}
 
 }  // namespace fx

@@ -7,25 +7,43 @@ namespace fx {
 namespace {
 
 constexpr std::array<std::pair<DepthFunction, GLenum>, 8> kDepthFunctions{{
-    {DepthFunction::Never, GL_NEVER}, {DepthFunction::Less, GL_LESS}, {DepthFunction::Equal, GL_EQUAL},
-    {DepthFunction::LessEqual, GL_LEQUAL}, {DepthFunction::Greater, GL_GREATER},
-    {DepthFunction::NotEqual, GL_NOTEQUAL}, {DepthFunction::GreaterEqual, GL_GEQUAL}, {DepthFunction::Always, GL_ALWAYS},
+    {DepthFunction::Never, GL_NEVER},
+    {DepthFunction::Less, GL_LESS},
+    {DepthFunction::Equal, GL_EQUAL},
+    {DepthFunction::LessEqual, GL_LEQUAL},
+    {DepthFunction::Greater, GL_GREATER},
+    {DepthFunction::NotEqual, GL_NOTEQUAL},
+    {DepthFunction::GreaterEqual, GL_GEQUAL},
+    {DepthFunction::Always, GL_ALWAYS},
 }};
 constexpr std::array<std::pair<BlendEquation, GLenum>, 5> kBlendEquations{{
-    {BlendEquation::Add, GL_FUNC_ADD}, {BlendEquation::Subtract, GL_FUNC_SUBTRACT},
-    {BlendEquation::ReverseSubtract, GL_FUNC_REVERSE_SUBTRACT}, {BlendEquation::Min, GL_MIN}, {BlendEquation::Max, GL_MAX},
+    {BlendEquation::Add, GL_FUNC_ADD},
+    {BlendEquation::Subtract, GL_FUNC_SUBTRACT},
+    {BlendEquation::ReverseSubtract, GL_FUNC_REVERSE_SUBTRACT},
+    {BlendEquation::Min, GL_MIN},
+    {BlendEquation::Max, GL_MAX},
 }};
 constexpr std::array<std::pair<BlendFactor, GLenum>, 15> kBlendFactors{{
-    {BlendFactor::Zero, GL_ZERO}, {BlendFactor::One, GL_ONE}, {BlendFactor::SrcColor, GL_SRC_COLOR},
-    {BlendFactor::OneMinusSrcColor, GL_ONE_MINUS_SRC_COLOR}, {BlendFactor::DstColor, GL_DST_COLOR},
-    {BlendFactor::OneMinusDstColor, GL_ONE_MINUS_DST_COLOR}, {BlendFactor::SrcAlpha, GL_SRC_ALPHA},
-    {BlendFactor::OneMinusSrcAlpha, GL_ONE_MINUS_SRC_ALPHA}, {BlendFactor::DstAlpha, GL_DST_ALPHA},
-    {BlendFactor::OneMinusDstAlpha, GL_ONE_MINUS_DST_ALPHA}, {BlendFactor::ConstantColor, GL_CONSTANT_COLOR},
-    {BlendFactor::OneMinusConstantColor, GL_ONE_MINUS_CONSTANT_COLOR}, {BlendFactor::ConstantAlpha, GL_CONSTANT_ALPHA},
-    {BlendFactor::OneMinusConstantAlpha, GL_ONE_MINUS_CONSTANT_ALPHA}, {BlendFactor::SrcAlphaSaturate, GL_SRC_ALPHA_SATURATE},
+    {BlendFactor::Zero, GL_ZERO},
+    {BlendFactor::One, GL_ONE},
+    {BlendFactor::SrcColor, GL_SRC_COLOR},
+    {BlendFactor::OneMinusSrcColor, GL_ONE_MINUS_SRC_COLOR},
+    {BlendFactor::DstColor, GL_DST_COLOR},
+    {BlendFactor::OneMinusDstColor, GL_ONE_MINUS_DST_COLOR},
+    {BlendFactor::SrcAlpha, GL_SRC_ALPHA},
+    {BlendFactor::OneMinusSrcAlpha, GL_ONE_MINUS_SRC_ALPHA},
+    {BlendFactor::DstAlpha, GL_DST_ALPHA},
+    {BlendFactor::OneMinusDstAlpha, GL_ONE_MINUS_DST_ALPHA},
+    {BlendFactor::ConstantColor, GL_CONSTANT_COLOR},
+    {BlendFactor::OneMinusConstantColor, GL_ONE_MINUS_CONSTANT_COLOR},
+    {BlendFactor::ConstantAlpha, GL_CONSTANT_ALPHA},
+    {BlendFactor::OneMinusConstantAlpha, GL_ONE_MINUS_CONSTANT_ALPHA},
+    {BlendFactor::SrcAlphaSaturate, GL_SRC_ALPHA_SATURATE},
 }};
 constexpr std::array<std::pair<CullFace, GLenum>, 3> kCullFaces{{
-    {CullFace::Back, GL_BACK}, {CullFace::Front, GL_FRONT}, {CullFace::FrontAndBack, GL_FRONT_AND_BACK},
+    {CullFace::Back, GL_BACK},
+    {CullFace::Front, GL_FRONT},
+    {CullFace::FrontAndBack, GL_FRONT_AND_BACK},
 }};
 
 template <class E, std::size_t N>
@@ -44,7 +62,9 @@ E fromGl(const std::array<std::pair<E, GLenum>, N>& table, GLint value) {
     return table[0].first;
 }
 
-void enable(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
+void enable(GLenum capability, bool on) {
+    on ? glEnable(capability) : glDisable(capability);
+}
 
 GLint getInt(GLenum what) {
     GLint v = 0;
@@ -64,8 +84,8 @@ void applyGlState(const PassState& s, Size2D target) {
     if (s.blendFunction) {
         const BlendFunction& b = *s.blendFunction;
         glBlendEquationSeparate(toGl(kBlendEquations, b.equationRgb), toGl(kBlendEquations, b.equationAlpha));
-        glBlendFuncSeparate(toGl(kBlendFactors, b.srcRgb), toGl(kBlendFactors, b.dstRgb), toGl(kBlendFactors, b.srcAlpha),
-                            toGl(kBlendFactors, b.dstAlpha));
+        glBlendFuncSeparate(toGl(kBlendFactors, b.srcRgb), toGl(kBlendFactors, b.dstRgb),
+                            toGl(kBlendFactors, b.srcAlpha), toGl(kBlendFactors, b.dstAlpha));
     }
     if (s.faceCulling) enable(GL_CULL_FACE, *s.faceCulling);
     if (s.cullFace) glCullFace(toGl(kCullFaces, *s.cullFace));
@@ -93,7 +113,8 @@ GlStateSnapshot snapshotGlState() {
     s.cullFace = fromGl(kCullFaces, getInt(GL_CULL_FACE_MODE));
     GLboolean colorMask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     glGetBooleanv(GL_COLOR_WRITEMASK, colorMask);
-    s.colorMask = {colorMask[0] == GL_TRUE, colorMask[1] == GL_TRUE, colorMask[2] == GL_TRUE, colorMask[3] == GL_TRUE};
+    s.colorMask = {colorMask[0] == GL_TRUE, colorMask[1] == GL_TRUE, colorMask[2] == GL_TRUE,
+                   colorMask[3] == GL_TRUE};
     glGetFloatv(GL_COLOR_CLEAR_VALUE, s.clearColor.data());
     glGetFloatv(GL_DEPTH_CLEAR_VALUE, &s.clearDepth);
     return s;

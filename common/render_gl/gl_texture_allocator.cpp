@@ -12,7 +12,9 @@ NativeTexture GlTextureAllocator::create(const TextureSpec& spec, std::string_vi
     return name;
 }
 
-void GlTextureAllocator::destroy(NativeTexture texture) { destroyed_ += textures_.erase(texture); }
+void GlTextureAllocator::destroy(NativeTexture texture) {
+    destroyed_ += textures_.erase(texture);
+}
 
 void GlTextureAllocator::relabel(NativeTexture texture, std::string_view label) {
     auto it = textures_.find(texture);

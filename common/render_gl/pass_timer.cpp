@@ -6,15 +6,19 @@ namespace fx {
 
 std::string_view toString(TimingMethod method) {
     switch (method) {
-        case TimingMethod::GpuTimestamps: return "GL_TIMESTAMP queries";
-        case TimingMethod::FencedWallClock: return "glFinish + wall clock";
-        case TimingMethod::Off: return "off";
+        case TimingMethod::GpuTimestamps:
+            return "GL_TIMESTAMP queries";
+        case TimingMethod::FencedWallClock:
+            return "glFinish + wall clock";
+        case TimingMethod::Off:
+            return "off";
     }
     return "off";
 }
 
 bool isSoftwareRenderer(std::string_view renderer) {
-    for (std::string_view marker : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer", "lavapipe"}) {
+    for (std::string_view marker :
+         {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer", "lavapipe"}) {
         if (renderer.find(marker) != std::string_view::npos) return true;
     }
     return false;
@@ -37,7 +41,8 @@ PassTimer::PassTimer(TimingMode requested, std::string_view renderer) {
         case TimingMode::Automatic:
             if (isSoftwareRenderer(renderer)) {
                 method_ = TimingMethod::FencedWallClock;
-                reason_ = cat("auto: ", renderer, " is a software renderer; its timer queries do not measure rasterisation");
+                reason_ = cat("auto: ", renderer,
+                              " is a software renderer; its timer queries do not measure rasterisation");
             } else {
                 method_ = TimingMethod::GpuTimestamps;
                 reason_ = "auto: hardware renderer";
@@ -89,7 +94,8 @@ void PassTimer::begin(const std::string& pass) {
             glFinish();  // earlier work must not be billed to this pass
             wallStart_ = std::chrono::steady_clock::now();
             break;
-        case TimingMethod::Off: break;
+        case TimingMethod::Off:
+            break;
     }
 }
 
@@ -108,7 +114,8 @@ void PassTimer::end(const std::string& pass) {
             latest_[pass] = std::chrono::duration<double, std::milli>(elapsed).count();
             break;
         }
-        case TimingMethod::Off: break;
+        case TimingMethod::Off:
+            break;
     }
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Reading the elements of one glTF accessor, whatever its component type, with bounds checked once.
 // Internal to the glTF loader (scene/gltf_loader.cpp).
-#include <cstring>
 #include <array>
+#include <cstring>
 #include <string>
 
 #include <tiny_gltf.h>
@@ -22,9 +22,9 @@ constexpr std::size_t kMaxAccessorElements = std::size_t(1) << 24;
 // What a reader of an accessor accepts, checked before the bounds so that a wrong type is named as such
 // (a float JOINTS_0 is "must be unsigned 8- or 16-bit", not "reads past the end of its buffer").
 struct AccessorShape {
-    int components = 0;                  // 0: any
-    std::array<int, 3> types{};          // allowed component types; all 0: any
-    const char* expected = "";           // how the allowed shape reads in a message: "float MAT4"
+    int components = 0;          // 0: any
+    std::array<int, 3> types{};  // allowed component types; all 0: any
+    const char* expected = "";   // how the allowed shape reads in a message: "float MAT4"
 };
 
 inline const char* componentTypeName(int type) {

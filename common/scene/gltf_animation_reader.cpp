@@ -97,7 +97,8 @@ Status ModelBuilder::readAnimation(std::size_t index) {
         } else {
             channel.interpolation = Interpolation::linear;  // the default, and "LINEAR"
         }
-        auto input = AccessorReader::open(m_, sampler.input, where + " input", {1, {kFloat}, "float scalars"});
+        auto input =
+            AccessorReader::open(m_, sampler.input, where + " input", {1, {kFloat}, "float scalars"});
         if (!input) return Error{input.error()};
         bool rotation = channel.property == AnimatedProperty::rotation;
         auto output = AccessorReader::open(m_, sampler.output, where + " output",

@@ -19,9 +19,9 @@ Status ModelBuilder::readIndices(const tinygltf::Primitive& p, std::size_t verti
                                  std::vector<std::uint32_t>& out) {
     std::vector<std::uint32_t> raw;
     if (p.indices >= 0) {
-        auto r = AccessorReader::open(m_, p.indices, what + " indices",
-                                      {1, {kUnsignedByte, kUnsignedShort, kUnsignedInt},
-                                       "unsigned 8-, 16- or 32-bit scalars"});
+        auto r = AccessorReader::open(
+            m_, p.indices, what + " indices",
+            {1, {kUnsignedByte, kUnsignedShort, kUnsignedInt}, "unsigned 8-, 16- or 32-bit scalars"});
         if (!r) return Error{r.error()};
         raw.resize(r->count());
         for (std::size_t i = 0; i < raw.size(); ++i) {
@@ -86,7 +86,8 @@ Status ModelBuilder::readMesh(std::size_t meshIndex) {
             data.positions[i] = v;
         }
         // Optional attributes must match the vertex count.
-        auto openSized = [&](const char* name, const AccessorShape& shape) -> Result<std::optional<AccessorReader>> {
+        auto openSized = [&](const char* name,
+                             const AccessorShape& shape) -> Result<std::optional<AccessorReader>> {
             int index = attribute(name);
             if (index < 0) return std::optional<AccessorReader>{};
             auto r = AccessorReader::open(m_, index, cat(what, " ", name), shape);
@@ -99,9 +100,11 @@ Status ModelBuilder::readMesh(std::size_t meshIndex) {
         if (!normals) return Error{normals.error()};
         auto uvs = openSized("TEXCOORD_0", {2, {}, "VEC2"});
         if (!uvs) return Error{uvs.error()};
-        auto joints = openSized("JOINTS_0", {4, {kUnsignedByte, kUnsignedShort}, "unsigned 8- or 16-bit VEC4"});
+        auto joints =
+            openSized("JOINTS_0", {4, {kUnsignedByte, kUnsignedShort}, "unsigned 8- or 16-bit VEC4"});
         if (!joints) return Error{joints.error()};
-        auto weights = openSized("WEIGHTS_0", {4, {kFloat, kUnsignedByte, kUnsignedShort},
+        auto weights = openSized("WEIGHTS_0", {4,
+                                               {kFloat, kUnsignedByte, kUnsignedShort},
                                                "VEC4 of float or normalised unsigned 8- or 16-bit"});
         if (!weights) return Error{weights.error()};
 

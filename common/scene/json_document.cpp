@@ -102,9 +102,10 @@ private:
 
     void checkLength(const std::string& text, std::string_view what) const {
         if (text.size() > scene_limits::kMaxStringBytes)
-            failField(stack_.empty() ? "(top level)" : (what == "a field name" ? containerPath() : nextPath()),
-                      cat(what, " of ", text.size(), " bytes (\"", scene_limits::excerpt(text),
-                          "\"); a scene allows at most ", scene_limits::kMaxStringBytes));
+            failField(
+                stack_.empty() ? "(top level)" : (what == "a field name" ? containerPath() : nextPath()),
+                cat(what, " of ", text.size(), " bytes (\"", scene_limits::excerpt(text),
+                    "\"); a scene allows at most ", scene_limits::kMaxStringBytes));
     }
 
     Json* place(Json value) {

@@ -63,7 +63,8 @@ float readNumber(const nlohmann::json& value, const std::string& path, NumberRan
     // 179.99999999 rounds up to 180. Check what the program will see.
     const float asFloat = static_cast<float>(number);
     if (!range.contains(double(asFloat)))
-        failField(path, cat(number, " becomes ", asFloat, " as a float (the precision fxlab computes with), which is out of range ",
+        failField(path, cat(number, " becomes ", asFloat,
+                            " as a float (the precision fxlab computes with), which is out of range ",
                             range.text()));
     return asFloat;
 }
@@ -85,7 +86,8 @@ void readNumbers(const nlohmann::json& value, const std::string& path, float* ou
     if (value.size() != static_cast<std::size_t>(count))
         failField(path, cat("expected ", count, " numbers, got ", value.size()));
     for (int i = 0; i < count; ++i)
-        out[i] = readNumber(value[static_cast<std::size_t>(i)], indexPath(path, static_cast<std::size_t>(i)), range);
+        out[i] = readNumber(value[static_cast<std::size_t>(i)], indexPath(path, static_cast<std::size_t>(i)),
+                            range);
 }
 
 JsonFieldReader::JsonFieldReader(const nlohmann::json& value, std::string path,
@@ -191,7 +193,8 @@ void JsonFieldReader::reportUnknown(std::string_view kind) {
         if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
         std::string hint;
         if (auto near = closestName(it.key(), known_)) hint = cat(" (did you mean \"", *near, "\"?)");
-        warnings_.push_back(cat(pathOf(scene_limits::excerpt(it.key())), ": unknown ", kind, ", ignored", hint));
+        warnings_.push_back(
+            cat(pathOf(scene_limits::excerpt(it.key())), ": unknown ", kind, ", ignored", hint));
     }
 }
 

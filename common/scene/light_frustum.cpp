@@ -76,8 +76,8 @@ LightView fitLightFrustum(const Bounds& casters, const Bounds& receivers, glm::v
     // Lateral size: the bounding sphere's radius covers the box from every direction, so the map
     // does not change size while the light turns.
     float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
-    float halfWidth = (maxHalfWidth > 0.0f && std::isfinite(maxHalfWidth)) ? std::min(radius, maxHalfWidth)
-                                                                            : radius;
+    float halfWidth =
+        (maxHalfWidth > 0.0f && std::isfinite(maxHalfWidth)) ? std::min(radius, maxHalfWidth) : radius;
     light.halfWidth = halfWidth;
     light.texelWorldSize = 2.0f * halfWidth / float(mapSize);
 
@@ -99,7 +99,8 @@ LightView fitLightFrustum(const Bounds& casters, const Bounds& receivers, glm::v
     float nearest = 1e30f, farthest = -1e30f;
     for (int i = 0; i < 8; ++i) {
         const Bounds& b = depthBounds;
-        glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                         (i & 4) ? b.max.z : b.min.z);
         float d = glm::dot(corner - centre, travel);
         nearest = std::min(nearest, d);
         farthest = std::max(farthest, d);

@@ -41,7 +41,7 @@ struct LightView {
     float halfWidth = 1.0f;                        // metres from the map's centre to its edge
     float nearDistance = 0.0f;                     // the depth range along the light, in metres
     float farDistance = 1.0f;
-    float texelWorldSize = 1.0f;  // metres one shadow-map texel covers (2 halfWidth / mapSize)
+    float texelWorldSize = 1.0f;     // metres one shadow-map texel covers (2 halfWidth / mapSize)
     bool fallbackDirection = false;  // the direction given could not be used
 };
 

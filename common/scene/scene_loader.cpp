@@ -48,13 +48,15 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)
-            object.warn("name", cat("another object is already called \"", scene_limits::excerpt(name), "\""));
+            object.warn("name",
+                        cat("another object is already called \"", scene_limits::excerpt(name), "\""));
     });
     reader.forEachObject("emitters", scene_limits::kMaxEmitters, [&](JsonFieldReader& emitter) {
         scene.emitters.push_back(parseEmitter(emitter, assets));
     });
-    reader.forEachObject(
-        "clouds", scene_limits::kMaxClouds, [&](JsonFieldReader& cloud) { scene.clouds.push_back(parseCloudLayer(cloud, assets)); });
+    reader.forEachObject("clouds", scene_limits::kMaxClouds, [&](JsonFieldReader& cloud) {
+        scene.clouds.push_back(parseCloudLayer(cloud, assets));
+    });
     if (reader.has("postEffects")) {
         auto postReader = reader.object("postEffects");
         scene.postEffects = parsePostEffects(postReader, scene.camera);

@@ -82,11 +82,13 @@ Animation parseAnimation(JsonFieldReader& reader) {
                 failField(indexPath(path, i), "\"*\" (every clip) stands alone: write \"clip\": \"*\"");
             for (const std::string& before : animation.clips)
                 if (before == name)
-                    failField(indexPath(path, i), cat("\"", scene_limits::excerpt(name), "\" is listed twice"));
+                    failField(indexPath(path, i),
+                              cat("\"", scene_limits::excerpt(name), "\" is listed twice"));
             animation.clips.push_back(name);
         }
     } else {
-        reader.fail("clip", cat("expected a clip name, a list of names or \"*\", got ", describeJsonType(clip)));
+        reader.fail("clip",
+                    cat("expected a clip name, a list of names or \"*\", got ", describeJsonType(clip)));
     }
     for (std::size_t i = 0; i < animation.clips.size(); ++i)
         if (animation.clips[i].empty())

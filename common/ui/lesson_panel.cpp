@@ -80,7 +80,8 @@ void drawStepText(const std::string& text, int step) {
     ImGuiStorage* storage = ImGui::GetStateStorage();
     const ImGuiID key = ImGui::GetID("step text height");
     const float wanted = storage->GetFloat(key, 8.0f * ImGui::GetTextLineHeightWithSpacing());
-    const float most = std::max(ImGui::GetWindowHeight() * 0.5f, 6.0f * ImGui::GetTextLineHeightWithSpacing());
+    const float most =
+        std::max(ImGui::GetWindowHeight() * 0.5f, 6.0f * ImGui::GetTextLineHeightWithSpacing());
     ImGui::BeginChild("step text", ImVec2(0.0f, std::min(wanted, most)), false);
     drawMarkdown(text);
     storage->SetFloat(key, ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y);
@@ -115,7 +116,8 @@ void drawLessonWindowContents(const OverlayModel& m) {
         drawStepText(s.text, step);
     }
     if (!m.textError.empty()) {
-        ImGui::TextColored(ui_style::kError, "Lesson text (the steps show what was read before, or titles only):");
+        ImGui::TextColored(ui_style::kError,
+                           "Lesson text (the steps show what was read before, or titles only):");
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted(m.textError.c_str());
         ImGui::PopTextWrapPos();
@@ -129,7 +131,8 @@ void drawLessonWindowContents(const OverlayModel& m) {
         ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawParams(*m.params);
         if (ImGui::Button("Reset")) m.params->resetAll();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the values the run started with (scene, preset, command line)");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Back to the values the run started with (scene, preset, command line)");
         if (m.onSavePreset) {
             ImGui::SameLine();
             if (ImGui::Button("Save preset")) m.onSavePreset();

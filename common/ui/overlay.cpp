@@ -104,7 +104,8 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
     ImGui_ImplOpenGL3_NewFrame();
     if (!fontTextureLabelled_ && io.Fonts->TexID) {
         // The backend makes the font texture in its first NewFrame; overlay_fonts labels later ones.
-        gl::labelObject(GL_TEXTURE, GLuint(reinterpret_cast<std::uintptr_t>(io.Fonts->TexID)), "ui.font_atlas");
+        gl::labelObject(GL_TEXTURE, GLuint(reinterpret_cast<std::uintptr_t>(io.Fonts->TexID)),
+                        "ui.font_atlas");
         fontTextureLabelled_ = true;
     }
     if (window_) {

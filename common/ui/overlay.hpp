@@ -53,8 +53,8 @@ private:
     std::unique_ptr<Inspector> inspector_;
     CostPanel cost_;
     OverlayFonts fonts_;
-    int fontsForRevision_ = -1;   // the text revision the font atlas was made for
-    std::string fontError_;       // shown in the lesson window while it stands
+    int fontsForRevision_ = -1;  // the text revision the font atlas was made for
+    std::string fontError_;      // shown in the lesson window while it stands
     bool fontTextureLabelled_ = false;
     std::optional<bool> requestFrameOpen_;
     bool requestCostTab_ = false;

@@ -23,8 +23,7 @@ std::filesystem::path inspectorFilePath(const std::filesystem::path& dir, std::s
 
 Status saveViewPng(const TextureDisplay& display, const TextureSource& source, const ViewSettings& settings,
                    const std::filesystem::path& path) {
-    if (!source.alive())
-        return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
+    if (!source.alive()) return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
     if (!display.ok()) return Error{cat("cannot save '", source.name, "': ", display.error())};
     const int level = std::clamp(settings.level, 0, source.levels() - 1);
     const Size2D size = source.levelSize(level);
@@ -37,8 +36,7 @@ Status saveViewPng(const TextureDisplay& display, const TextureSource& source, c
 }
 
 Status saveExactPfm(const TextureSource& source, int level, const std::filesystem::path& path) {
-    if (!source.alive())
-        return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
+    if (!source.alive()) return Error{cat("cannot save '", source.name, "': it is not alive this frame")};
     level = std::clamp(level, 0, source.levels() - 1);
     FloatImage image = gl::readTexture(source.native, source.spec, level);
     if (auto written = writePfm(path, image); !written) return written;

@@ -13,8 +13,8 @@ void ThumbnailCache::refresh(const TextureDisplay& display, const TextureSource&
     double scale = std::min(double(maxWidth) / size.width, double(maxHeight) / size.height);
     int w = std::clamp(static_cast<int>(std::lround(size.width * scale)), 1, maxWidth);
     int h = std::clamp(static_cast<int>(std::lround(size.height * scale)), 1, maxHeight);
-    auto [it, added] = thumbnails_.try_emplace(
-        source.name, Thumbnail{DisplaySurface("ui.thumbnail " + source.name)});
+    auto [it, added] =
+        thumbnails_.try_emplace(source.name, Thumbnail{DisplaySurface("ui.thumbnail " + source.name)});
     Thumbnail& t = it->second;
     t.surface.resize(w, h);
     t.width = w;

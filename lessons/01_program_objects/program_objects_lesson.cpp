@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cmath>
 
+#include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <imgui.h>
 
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
@@ -18,7 +18,9 @@ using namespace fx;
 namespace {
 
 const char* kDir = "lessons/01_program_objects/";
-std::string shader(const char* name) { return std::string(kDir) + name; }
+std::string shader(const char* name) {
+    return std::string(kDir) + name;
+}
 
 // The chapter's operation counts per vertex (section 2.2).
 struct ProductCost {
@@ -35,10 +37,8 @@ LessonInfo ProgramObjectsLesson::info() const {
 
 std::vector<std::string> ProgramObjectsLesson::steps() const {
     return {
-        "Copy-pasted programs",
-        "A program object with error checks",
-        "Look uniform locations up once",
-        "Parentheses in the skinning product",
+        "Copy-pasted programs",           "A program object with error checks",
+        "Look uniform locations up once", "Parentheses in the skinning product",
         "Reload while running",
     };
 }
@@ -46,13 +46,16 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
     params.addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
                      "Step 2: build a deliberately broken program and show its log");
-    params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw");
+    params.addBool("lookup_every_draw", &lookupEveryDraw_,
+                   "Step 3: call glGetUniformLocation for every draw");
     params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid");
     Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
                                     "Step 4: which product the presented sphere uses");
     order.knob = Knob{{0, 1}, 1, "order"};
-    params.addInt("spheres", &spheres_, 1, 256, "Step 4: spheres drawn (a square grid), so vertex work shows in the time");
-    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512, "Step 4: sphere segments (vertices grow with the square)");
+    params.addInt("spheres", &spheres_, 1, 256,
+                  "Step 4: spheres drawn (a square grid), so vertex work shows in the time");
+    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512,
+                                  "Step 4: sphere segments (vertices grow with the square)");
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
@@ -69,7 +72,8 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
     lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
     unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
     normals_ = gl::ReloadableProgram({shader("lit.vert"), shader("normals.frag"), {}, {}, "normals"});
-    skinGrouped_ = gl::ReloadableProgram({shader("skinning.vert"), shader("lit.frag"), {}, {}, "skinning (T*J)*p"});
+    skinGrouped_ =
+        gl::ReloadableProgram({shader("skinning.vert"), shader("lit.frag"), {}, {}, "skinning (T*J)*p"});
     skinParenthesised_ = gl::ReloadableProgram(
         {shader("skinning.vert"), shader("lit.frag"), {}, "#define PARENTHESISED 1", "skinning T*(J*p)"});
     copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "copy"});
@@ -85,7 +89,8 @@ void ProgramObjectsLesson::updateBrokenAttempt() {
         return;
     }
     // The checked build fails and says why; the scene keeps drawing with the good programs.
-    brokenAttempt_ = gl::ReloadableProgram({shader("lit.vert"), shader(files[broken_]), {}, {}, files[broken_]});
+    brokenAttempt_ =
+        gl::ReloadableProgram({shader("lit.vert"), shader(files[broken_]), {}, {}, files[broken_]});
 }
 
 void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
@@ -110,7 +115,8 @@ void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
                 auto start = std::chrono::steady_clock::now();
                 modelLocation = glGetUniformLocation(program, "modelMatrix");
                 colorLocation = glGetUniformLocation(program, "baseColor");
-                lookupSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                lookupSeconds +=
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 lookupsLastFrame_ += 2;
             }
             float fx_ = (float(x) + 0.5f) / float(n) - 0.5f, fz = (float(z) + 0.5f) / float(n) - 0.5f;
@@ -139,12 +145,14 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         float phase = float(std::fmod(frame.seconds, 4.0) / 4.0 * 6.2831853);
         glm::mat4 joints[4];
         for (int j = 0; j < 4; ++j) {
-            joints[j] = glm::rotate(glm::mat4(1.0f), 0.3f * std::sin(phase + float(j)), glm::vec3(0, 1, 0.3f * float(j)));
+            joints[j] = glm::rotate(glm::mat4(1.0f), 0.3f * std::sin(phase + float(j)),
+                                    glm::vec3(0, 1, 0.3f * float(j)));
         }
         glProgramUniformMatrix4fv(program, 20, 4, GL_FALSE, glm::value_ptr(joints[0]));
         int row = std::max(1, int(std::lround(std::sqrt(double(spheres_)))));
         float scale = 1.0f / float(row);
-        glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 1.3f, 0)), glm::vec3(scale));
+        glm::mat4 model =
+            glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 1.3f, 0)), glm::vec3(scale));
         glProgramUniform1i(program, 24, row);
         glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
         glProgramUniform3f(program, uniform_location::baseColor, 0.8f, 0.55f, 0.3f);
@@ -152,16 +160,25 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         glUseProgram(program);
         denseSphere_.draw(row * row);
     };
-    PassState sceneState{.depthTest = true, .depthWrite = true, .depthFunction = DepthFunction::Less, .blend = false,
-                         .faceCulling = true, .cullFace = CullFace::Back,
-                         .clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f}, .clearDepth = 1.0f};
+    PassState sceneState{.depthTest = true,
+                         .depthWrite = true,
+                         .depthFunction = DepthFunction::Less,
+                         .blend = false,
+                         .faceCulling = true,
+                         .cullFace = CullFace::Back,
+                         .clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f},
+                         .clearDepth = 1.0f};
     TextureHandle grouped[2], parenthesised[2];
-    auto& a = graph.addPass("skinning (T*J)*p", [this, drawSphere](PassContext&) { drawSphere(skinGrouped_.name()); })
+    auto& a = graph
+                  .addPass("skinning (T*J)*p",
+                           [this, drawSphere](PassContext&) { drawSphere(skinGrouped_.name()); })
                   .joinGroup(groupedPass_);
     grouped[0] = a.create("skinning.grouped.color", colorDesc, TextureUsage::ColorAttachment);
     grouped[1] = a.create("skinning.grouped.depth", depthDesc, TextureUsage::DepthAttachment);
     a.setState(sceneState);
-    auto& b = graph.addPass("skinning T*(J*p)", [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); })
+    auto& b = graph
+                  .addPass("skinning T*(J*p)",
+                           [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); })
                   .joinGroup(parenthesisedPass_);
     parenthesised[0] = b.create("skinning.parenthesised.color", colorDesc, TextureUsage::ColorAttachment);
     parenthesised[1] = b.create("skinning.parenthesised.depth", depthDesc, TextureUsage::DepthAttachment);
@@ -173,12 +190,14 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         graph.inspect("skinning.parenthesised.color");
     }
     TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
-    graph.addPass("present", [this, shown](PassContext& ctx) {
-             glBindTextureUnit(0, ctx.native(shown));
-             glUseProgram(copy_.name());
-             glBindVertexArray(emptyVao_.name());
-             glDrawArrays(GL_TRIANGLES, 0, 3);
-         })
+    graph
+        .addPass("present",
+                 [this, shown](PassContext& ctx) {
+                     glBindTextureUnit(0, ctx.native(shown));
+                     glUseProgram(copy_.name());
+                     glBindVertexArray(emptyVao_.name());
+                     glDrawArrays(GL_TRIANGLES, 0, 3);
+                 })
         .read(shown)
         .writeColor(graph.output())
         .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
@@ -190,31 +209,46 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         buildSkinningComparison(graph, frame);
         return;
     }
-    PassState sceneState{.depthTest = true, .depthWrite = true, .depthFunction = DepthFunction::Less, .blend = false,
-                         .faceCulling = true, .cullFace = CullFace::Back,
-                         .clearColor = ClearColor{0.0f, 0.0f, 0.0f, 1.0f}, .clearDepth = 1.0f};
+    PassState sceneState{.depthTest = true,
+                         .depthWrite = true,
+                         .depthFunction = DepthFunction::Less,
+                         .blend = false,
+                         .faceCulling = true,
+                         .cullFace = CullFace::Back,
+                         .clearColor = ClearColor{0.0f, 0.0f, 0.0f, 1.0f},
+                         .clearDepth = 1.0f};
     glm::vec3 sky = scene_->background;
     sceneState.clearColor = ClearColor{sky.r, sky.g, sky.b, 1.0f};
-    graph.addPass("scene", [this, frame](PassContext&) {
-             switch (frame.step) {
-                 case CopyPasted: {
-                     CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-                     GLuint programs[3] = {rawLit_.name(), rawUnlit_.name(), rawNormals_.name()};
-                     for (GLuint p : programs) SceneMeshes::setFrameUniforms(p, *scene_, camera);
-                     meshes_.draw(rawLit_.name(), *scene_, frame.seconds);
-                     break;
-                 }
-                 case CachedLocations: drawGrid(lit_.name(), frame); break;
-                 default: drawScene(lit_.name(), frame); break;
-             }
-         })
+    graph
+        .addPass("scene",
+                 [this, frame](PassContext&) {
+                     switch (frame.step) {
+                         case CopyPasted: {
+                             CameraMatrices camera =
+                                 cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+                             GLuint programs[3] = {rawLit_.name(), rawUnlit_.name(), rawNormals_.name()};
+                             for (GLuint p : programs) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+                             meshes_.draw(rawLit_.name(), *scene_, frame.seconds);
+                             break;
+                         }
+                         case CachedLocations:
+                             drawGrid(lit_.name(), frame);
+                             break;
+                         default:
+                             drawScene(lit_.name(), frame);
+                             break;
+                     }
+                 })
         .writeColor(graph.output())
         .setState(sceneState);
 }
 
 void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
     switch (frame.step) {
-        case CopyPasted: ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)", rawLit_.name(), rawUnlit_.name(), rawNormals_.name()); break;
+        case CopyPasted:
+            ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)",
+                               rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
+            break;
         case CheckedPrograms:
             if (broken_ == NotBroken) {
                 ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
@@ -224,23 +258,29 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
             break;
         case LiveReload:
             ImGui::Text("lit program: build %d", lit_.generation());
-            for (auto& f : lit_.program().sourceFiles()) ImGui::BulletText("%s", f.filename().string().c_str());
-            if (!lit_.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", lit_.error().c_str());
+            for (auto& f : lit_.program().sourceFiles())
+                ImGui::BulletText("%s", f.filename().string().c_str());
+            if (!lit_.error().empty())
+                ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", lit_.error().c_str());
             break;
-        default: break;
+        default:
+            break;
     }
 }
 
 void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
     // Every fact goes in the report; the panel shows those of the step on screen.
     auto fact = [&](bool shown, std::string name, std::string value, std::string label) {
-        if (shown) out.add(std::move(name), std::move(value), std::move(label));
-        else out.check(std::move(name), std::move(value));
+        if (shown)
+            out.add(std::move(name), std::move(value), std::move(label));
+        else
+            out.check(std::move(name), std::move(value));
     };
     const bool lookups = frame.step == CachedLocations, products = frame.step == Parentheses;
     fact(lookups, "uniformLookupsLastFrame", std::to_string(lookupsLastFrame_),
          cat("uniform look-ups this frame (", gridSize_ * gridSize_, " draws)"));
-    fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_), "time spent in glGetUniformLocation (ms)");
+    fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_),
+         "time spent in glGetUniformLocation (ms)");
     out.check("brokenShaderLog", brokenAttempt_.error());  // the panel shows it in colour
     fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()), "vertices per sphere");
     fact(products, "spheres", std::to_string(spheres_), "spheres");

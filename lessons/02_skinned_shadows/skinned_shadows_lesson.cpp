@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "base/log.hpp"
-
 
 namespace lesson02 {
 
@@ -35,8 +34,9 @@ std::vector<std::string> SkinnedShadowsLesson::steps() const {
 }
 
 void SkinnedShadowsLesson::declareParams(ParamSet& params) {
-    Param& size = params.addInt("map_size", &mapSize_, 16, 8192,
-                                "Shadow map texels per side (the scene asks for 2048); memory grows with the square");
+    Param& size =
+        params.addInt("map_size", &mapSize_, 16, 8192,
+                      "Shadow map texels per side (the scene asks for 2048); memory grows with the square");
     size.knob = Knob{{256, 512, 1024, 2048}, 4096, "texels"};
     Param& taps = params.addInt("filter_taps", &filterTaps_, 1, kShadowMaxFilterTaps,
                                 "PCF depth comparisons per pixel (1: a hard, stair-stepped edge)");
@@ -46,7 +46,8 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
     Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
                                     "Step 3: the skinning product of the shadow map the scene uses");
     order.knob = Knob{{0, 1}, 1, "order"};
-    params.addInt("crowd", &crowd_, 1, 400, "Step 3: characters in the crowd (a grid; the first is the scene's)");
+    params.addInt("crowd", &crowd_, 1, 400,
+                  "Step 3: characters in the crowd (a grid; the first is the scene's)");
     params.addChoice("material_upload", &materialUpload_, {"always", "ask_program"},
                      "Step 4: upload material uniforms to the skinned shadow program always (the chapter's "
                      "GL error flood) or only if the program has them (the fix)");
@@ -136,13 +137,15 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
 
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
     if (frame.step == ProductOrder) {
-        ImGui::TextWrapped("Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, "
-                           "which the parentheses do not change.");
+        ImGui::TextWrapped(
+            "Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, "
+            "which the parentheses do not change.");
     }
     if (frame.step == ErrorFlood) {
-        ImGui::TextWrapped("material upload: %s", materialUpload_ == 0
-                                                      ? "always (GL_INVALID_OPERATION per upload: the flood)"
-                                                      : "only if the program has the uniform (none here: no errors)");
+        ImGui::TextWrapped("material upload: %s",
+                           materialUpload_ == 0
+                               ? "always (GL_INVALID_OPERATION per upload: the flood)"
+                               : "only if the program has the uniform (none here: no errors)");
     }
 }
 
@@ -155,7 +158,8 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("shadowProgramSwitches", std::to_string(s.programSwitches), "program switches");
     out.add("skinnedShadowVertices", std::to_string(s.skinnedVertices), "skinned vertices");
     if (frame.step == ErrorFlood) {
-        out.add("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors), "GL errors from the skinned shadow draws");
+        out.add("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors),
+                "GL errors from the skinned shadow draws");
     } else {
         out.check("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors));
     }
@@ -166,9 +170,10 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
         for (SkinningProduct p : {SkinningProduct::grouped, SkinningProduct::parenthesised}) {
             const bool grouped = p == SkinningProduct::grouped;
             OperationCount c = operationCount(p);
-            out.add(grouped ? "opsGroupedPerVertex" : "opsParenthesisedPerVertex", std::to_string(c.mul + c.add),
-                    cat(grouped ? "(T*J)*p" : "T*(J*p)", ": ", c.mul, " mul + ", c.add, " add per vertex; pass ",
-                        grouped == groupedShown ? shadowMs : otherMs, " ms"));
+            out.add(grouped ? "opsGroupedPerVertex" : "opsParenthesisedPerVertex",
+                    std::to_string(c.mul + c.add),
+                    cat(grouped ? "(T*J)*p" : "T*(J*p)", ": ", c.mul, " mul + ", c.add,
+                        " add per vertex; pass ", grouped == groupedShown ? shadowMs : otherMs, " ms"));
         }
     } else if (frame.previousFrame) {
         out.add("shadowMs", cat(shadowMs), "shadow pass (ms)");

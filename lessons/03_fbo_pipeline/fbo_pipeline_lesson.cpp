@@ -63,7 +63,8 @@ Status FboPipelineLesson::init(const Scene& scene) {
     copyToWindow_ = FullscreenPass("common/copy.frag", "to the window");
     outputTransform_ = OutputTransformPass::create();
     uiQueue_ = UiQueuePass::create();
-    noShadowReason_ = shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
+    noShadowReason_ =
+        shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
     return Status::success();
 }
 
@@ -82,7 +83,8 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         // The chapter's old order: the draw state is set before the shadow map is created.
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
         setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
-        DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+        DeclaredShadowMap shadow =
+            shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
         return;
@@ -166,7 +168,8 @@ std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* r
 void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
     const std::vector<std::string> executed = executedPasses(frame.previousFrame);
     ImGui::TextUnformatted("Frame order");
-    if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) return;
+    if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
+        return;
     ImGui::TableSetupColumn("the chapter's Render(), by hand");
     ImGui::TableSetupColumn("the graph's order, derived");
     ImGui::TableHeadersRow();

@@ -11,7 +11,7 @@ using namespace fx;
 
 namespace {
 
-constexpr GLint kHdrMaxLocation = 30;     // shaders/lessons/03_fbo_pipeline/scene_lit.frag
+constexpr GLint kHdrMaxLocation = 30;  // shaders/lessons/03_fbo_pipeline/scene_lit.frag
 constexpr GLint kEncodeLocation = 31;
 
 // What the 3D draw depends on (effects/scene/hdr_scene_pass.hpp), declared by the pass itself from step 3
@@ -28,7 +28,10 @@ PassState sceneDrawState(const Scene& scene) {
 LitScenePass LitScenePass::create() {
     LitScenePass pass;
     pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
-                                           "lessons/03_fbo_pipeline/scene_lit.frag", {}, {}, "scene (lit, shadowed)"});
+                                           "lessons/03_fbo_pipeline/scene_lit.frag",
+                                           {},
+                                           {},
+                                           "scene (lit, shadowed)"});
     return pass;
 }
 
@@ -75,9 +78,11 @@ Pass& LitScenePass::declareIntoWindow(FrameGraph& graph, const Scene& scene, con
     return pass;
 }
 
-HdrSceneTargets LitScenePass::declareIntoTargets(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                                 double seconds, const DeclaredShadowMap& shadow,
-                                                 const LitSceneOptions& options, const std::string& prefix) const {
+HdrSceneTargets LitScenePass::declareIntoTargets(FrameGraph& graph, const Scene& scene,
+                                                 const SceneMeshes& meshes, double seconds,
+                                                 const DeclaredShadowMap& shadow,
+                                                 const LitSceneOptions& options,
+                                                 const std::string& prefix) const {
     Pass& pass = addPass(graph, scene, meshes, seconds, shadow, options);
     HdrSceneTargets targets;
     targets.color = pass.create(prefix + ".color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
@@ -86,7 +91,8 @@ HdrSceneTargets LitScenePass::declareIntoTargets(FrameGraph& graph, const Scene&
                                 TextureUsage::DepthAttachment);
     // A float target holds linear light: the sky is cleared to its linear value, or to the display
     // value when the shader encodes (then everything in the target is display-encoded alike).
-    pass.state().clearColor = options.encodeForDisplay ? windowClearColor(scene) : hdrSceneState(scene).clearColor;
+    pass.state().clearColor =
+        options.encodeForDisplay ? windowClearColor(scene) : hdrSceneState(scene).clearColor;
     pass.state().clearDepth = 1.0f;
     return targets;
 }

@@ -39,8 +39,8 @@ public:
     // Into `<prefix>.color` (RGBA16F, the output's size) and `<prefix>.depth` (Depth32F), cleared.
     fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::Scene& scene,
                                            const fx::SceneMeshes& meshes, double seconds,
-                                           const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options,
-                                           const std::string& prefix) const;
+                                           const fx::DeclaredShadowMap& shadow,
+                                           const LitSceneOptions& options, const std::string& prefix) const;
 
     // The colour the window is cleared to: the scene's (linear) sky as the display shows it.
     static fx::ClearColor windowClearColor(const fx::Scene& scene);
@@ -48,8 +48,9 @@ public:
 private:
     fx::gl::ReloadableProgram program_;
 
-    fx::Pass& addPass(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes, double seconds,
-                      const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options) const;
+    fx::Pass& addPass(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
+                      double seconds, const fx::DeclaredShadowMap& shadow,
+                      const LitSceneOptions& options) const;
 };
 
 }  // namespace lesson03

@@ -2,11 +2,11 @@
 // Lesson 04: colour matrix (the Shader effects chapter, §3.4, §3.5, hard cases 5 to 8, Exercise 02).
 #include "app/lesson.hpp"
 #include "app/point_drag.hpp"
-#include "effects/scene/scene_work.hpp"
 #include "effects/post/colour_matrix.hpp"
-#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 
 namespace lesson04 {
 

@@ -50,21 +50,23 @@ std::vector<std::string> RadialBlurLesson::steps() const {
 }
 
 void RadialBlurLesson::declareParams(ParamSet& params) {
-    params.addFloat(
-        "centre_x", &centreX_, kCentreMin, kCentreMax,
-        "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)")
+    params
+        .addFloat("centre_x", &centreX_, kCentreMin, kCentreMax,
+                  "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)")
         .fromScene("postEffects.radialBlur.center[0]");
-    params.addFloat(
-        "centre_y", &centreY_, kCentreMin, kCentreMax,
-        "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)")
+    params
+        .addFloat("centre_y", &centreY_, kCentreMin, kCentreMax,
+                  "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)")
         .fromScene("postEffects.radialBlur.center[1]");
-    params.addFloat(
-        "length", &length_, 0.0f, 0.2f,
-        "The chapter's z: tap spacing per unit of distance to the centre (0: no blur; above 1/7 the far taps "
-        "overshoot the centre)")
+    params
+        .addFloat("length", &length_, 0.0f, 0.2f,
+                  "The chapter's z: tap spacing per unit of distance to the centre (0: no blur; above 1/7 "
+                  "the far taps "
+                  "overshoot the centre)")
         .fromScene("postEffects.radialBlur.length");
-    params.addFloat("start", &start_, 0.0f, 2.0f,
-                    "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
+    params
+        .addFloat("start", &start_, 0.0f, 2.0f,
+                  "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
         .fromScene("postEffects.radialBlur.start");
     Param& samples = params.addInt("samples", &samples_, 1, kRadialBlurMaxSamples,
                                    "Step 4: taps per pixel, spread over the chapter's 8-tap streak");
@@ -150,7 +152,8 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("offsetAtCentrePixel", vec2Text(v), cat("offset v at the pixel ", vec2Text(pixel)));
         // The step that keeps the chapter's 0/0: its NaN is the lesson, so the smoke check lets these
         // textures hold it (and checks that they do).
-        if (info.deliberateBug && blurRan(frame) && p.length > 0 && !(std::isfinite(v.x) && std::isfinite(v.y))) {
+        if (info.deliberateBug && blurRan(frame) && p.length > 0 &&
+            !(std::isfinite(v.x) && std::isfinite(v.y))) {
             out.check("expectNonFiniteIn", "blur.offset, blur.result");
         }
     }
@@ -159,7 +162,8 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
     glm::vec2 reach =
         radialBlurTapOffset(p, frame.size, corner) * 7.0f * glm::vec2(frame.size.width, frame.size.height);
     out.add("streakAtCornerPixels", cat(std::hypot(reach.x, reach.y)), "streak at the top-right corner (px)");
-    if (frame.previousFrame) out.add("blurMs", cat(blurGroup_.timeMs(*frame.previousFrame)), "radial blur passes (ms)");
+    if (frame.previousFrame)
+        out.add("blurMs", cat(blurGroup_.timeMs(*frame.previousFrame)), "radial blur passes (ms)");
 }
 
 }  // namespace lesson05

@@ -2,11 +2,11 @@
 // Lesson 05: radial blur (the Shader effects chapter, §3.6, hard cases 1 to 4, Exercises 03, 04).
 #include "app/lesson.hpp"
 #include "app/point_drag.hpp"
-#include "effects/scene/scene_work.hpp"
-#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/post/radial_blur.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 
 namespace lesson05 {
 

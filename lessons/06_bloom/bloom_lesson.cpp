@@ -49,16 +49,19 @@ std::vector<std::string> BloomLesson::steps() const {
 }
 
 void BloomLesson::declareParams(ParamSet& params) {
-    params.addFloat("threshold", &threshold_, 0.0f, 16.0f,
-                    "Steps 3 to 5: brightness (the largest channel) above which light blooms")
+    params
+        .addFloat("threshold", &threshold_, 0.0f, 16.0f,
+                  "Steps 3 to 5: brightness (the largest channel) above which light blooms")
         .fromScene("postEffects.bloom.threshold");
-    params.addFloat("knee", &knee_, 0.0f, 1.0f,
-                    "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)")
+    params
+        .addFloat("knee", &knee_, 0.0f, 1.0f,
+                  "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)")
         .fromScene("postEffects.bloom.knee");
-    params.addFloat(
-        "intensity", &intensity_, 0.0f, 4.0f,
-        "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this times its "
-        "bright part, for any level count)")
+    params
+        .addFloat("intensity", &intensity_, 0.0f, 4.0f,
+                  "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this "
+                  "times its "
+                  "bright part, for any level count)")
         .fromScene("postEffects.bloom.intensity");
     params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                     "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
@@ -77,10 +80,12 @@ void BloomLesson::declareParams(ParamSet& params) {
     format.knob = Knob{{0, 1, 2, 3}, 2, "format"};
     params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)");
     params
-        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
-                   "Step 5: the output's tone curve (clip: none, everything above 1 clips, as in the chapters)")
+        .addChoice(
+            "tone_map", &toneCurve_, enumNameList<ToneCurve>(),
+            "Step 5: the output's tone curve (clip: none, everything above 1 clips, as in the chapters)")
         .fromScene("postEffects.toneMap.operator");
-    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Step 5: multiplies the light before the tone curve")
+    params
+        .addFloat("exposure", &exposure_, 0.01f, 16.0f, "Step 5: multiplies the light before the tone curve")
         .fromScene("postEffects.toneMap.exposure");
     params.addBool(
         "reference", &reference_,
@@ -154,7 +159,8 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         PassGroup::Scope in(graph, bloomGroup_);
 
         if (showsReference(step)) {
-            // The reference: what the chain approximates, computed directly (effects/bloom/bloom_reference.hpp).
+            // The reference: what the chain approximates, computed directly
+            // (effects/bloom/bloom_reference.hpp).
             std::vector<BloomLevel> levels = bloomLevels(graph.outputSize(), 2, levels_);
             BloomReferenceSettings r{
                 threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};
@@ -162,7 +168,8 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 r.sigmas.push_back(bloomLevelSigma(l.index, downOffset_, upOffset_));
             BloomReference::Declared d = reference_glow_.declare(graph, hdr.color, r);
             if (!d.empty()) {
-                DeclaredPass result = composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
+                DeclaredPass result =
+                    composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
                 if (calledFor) shown = result.output;
             }
         } else {
@@ -202,9 +209,10 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
         return;
     }
     if (flicker_.stats().measured && !showsReference(step)) {
-        ImGui::TextWrapped("Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
-                           "frame's|.%s",
-                           step == Beyond ? " Switch karis off to see the firefly flicker." : "");
+        ImGui::TextWrapped(
+            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
+            "frame's|.%s",
+            step == Beyond ? " Switch karis off to see the firefly flicker." : "");
     }
 }
 
@@ -229,7 +237,8 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     const BloomFlicker::Stats& f = flicker_.stats();
     if (f.measured && !showsReference(step)) {
         out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
-        out.add("glowChangeMaxPercent", cat(f.maxPercent), cat("largest change over the last ", BloomFlicker::kWindow, " frames (%)"));
+        out.add("glowChangeMaxPercent", cat(f.maxPercent),
+                cat("largest change over the last ", BloomFlicker::kWindow, " frames (%)"));
     }
     if (frame.previousFrame) {
         out.add("bloomMs", cat(bloomGroup_.timeMs(*frame.previousFrame)), "bloom passes (ms)");

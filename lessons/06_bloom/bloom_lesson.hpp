@@ -5,14 +5,14 @@
 #include <vector>
 
 #include "app/lesson.hpp"
-#include "effects/scene/scene_work.hpp"
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/bloom/bloom_flicker.hpp"
 #include "effects/bloom/bloom_reference.hpp"
-#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 
 namespace lesson06 {
 

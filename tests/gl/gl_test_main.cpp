@@ -8,7 +8,9 @@ namespace {
 std::unique_ptr<fx::Context> sharedContext;
 }
 
-fx::Context& GlTest::context() { return *sharedContext; }
+fx::Context& GlTest::context() {
+    return *sharedContext;
+}
 
 void GlTest::SetUp() {
     ASSERT_TRUE(sharedContext) << "no headless GL context";

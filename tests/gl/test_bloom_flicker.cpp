@@ -46,7 +46,8 @@ double lumaSum(const FloatImage& image) {
     double sum = 0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
-            sum += 0.2126 * image.texel(x, y, 0) + 0.7152 * image.texel(x, y, 1) + 0.0722 * image.texel(x, y, 2);
+            sum +=
+                0.2126 * image.texel(x, y, 0) + 0.7152 * image.texel(x, y, 1) + 0.0722 * image.texel(x, y, 2);
     return sum;
 }
 

@@ -4,8 +4,8 @@
 #include <limits>
 
 #include "effects/post/colour_matrix.hpp"
-#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "gl_test.hpp"
 #include "image/image_stats.hpp"
 #include "test_fullscreen_harness.hpp"

@@ -70,7 +70,8 @@ protected:
             FloatImage depth = gl::readTexture(view.native, view.spec);
             run.minDepth = *std::min_element(depth.texels.begin(), depth.texels.end());
         }
-        if (const PassRecord* pass = graph.report().findPass("shadow map")) run.inherited = pass->stateInherited;
+        if (const PassRecord* pass = graph.report().findPass("shadow map"))
+            run.inherited = pass->stateInherited;
         graph.releaseTextures();
         glDisable(GL_DEPTH_TEST);
         return run;
@@ -88,7 +89,8 @@ bool names(const std::vector<std::string>& list, const std::string& text) {
 TEST_F(DrawOrder, ReorderedShadowPassInheritsTheDepthTestOffAndDrawsNothing) {
     ShadowRun run = runShadowPass(/*setsItsOwnState=*/false, /*depthTestOn=*/false);
     EXPECT_TRUE(names(run.inherited, "depth test: off (inherited)"));
-    EXPECT_EQ(run.minDepth, 1.0f) << "with the depth test off GL writes no depth: the map keeps its clear value";
+    EXPECT_EQ(run.minDepth, 1.0f)
+        << "with the depth test off GL writes no depth: the map keeps its clear value";
 }
 
 TEST_F(DrawOrder, TheOldOrderWorksByLuckAndTheCheckSaysSo) {

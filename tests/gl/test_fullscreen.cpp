@@ -4,8 +4,8 @@
 
 #include "effects/post/colour_matrix.hpp"
 #include "effects/post/fullscreen_pass.hpp"
-#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"

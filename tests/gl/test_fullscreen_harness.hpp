@@ -64,8 +64,7 @@ public:
     // Uploads `input` into a texture of `format`, declares the effect on a fresh graph and runs it.
     // Returns the texture `declare` names, read back as floats (empty when the graph failed).
     FloatImage run(const FloatImage& input, TextureFormat format, const Declare& declare) {
-        gl::Texture texture =
-            gl::Texture::create2D(format, width_, height_, 1, "test.input");
+        gl::Texture texture = gl::Texture::create2D(format, width_, height_, 1, "test.input");
         glTextureSubImage2D(texture.name(), 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, input.texels.data());
         storedInput = gl::readTexture(texture);
 

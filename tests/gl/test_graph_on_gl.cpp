@@ -4,8 +4,8 @@
 #include "gl_test.hpp"
 #include "render/frame_graph.hpp"
 #include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
 #include "render_gl/gl_state.hpp"
+#include "render_gl/gl_texture_allocator.hpp"
 
 using namespace fx;
 
@@ -97,7 +97,9 @@ TEST_F(GraphOnGl, StateCheckNamesWhatALeakyPassLeftBehind) {
     graph.addPass("sort + ui", [](PassContext&) { glDisable(GL_DEPTH_TEST); })
         .writeColor(graph.output())
         .setState({.depthTest = true});
-    graph.addPass("tidy", [](PassContext&) {}).modify(graph.output(), TextureUsage::ColorAttachment).setState({.depthTest = true});
+    graph.addPass("tidy", [](PassContext&) {})
+        .modify(graph.output(), TextureUsage::ColorAttachment)
+        .setState({.depthTest = true});
     ASSERT_TRUE(graph.execute(h.pool, h.executor).ok());
     const PassRecord* leaky = graph.report().findPass("sort + ui");
     ASSERT_NE(leaky, nullptr);

@@ -17,8 +17,9 @@ protected:
     fs::path dir;
     void SetUp() override {
         GlTest::SetUp();
-        dir = fs::temp_directory_path() / ("fx_programs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                                           "_" + std::to_string(::getpid()));
+        dir = fs::temp_directory_path() /
+              ("fx_programs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+               "_" + std::to_string(::getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
     }
@@ -33,13 +34,16 @@ protected:
     }
     gl::ProgramSources sources(const fs::path& vs, const fs::path& fs_) { return {vs, fs_, {}, {}, "test"}; }
     fs::path goodVertex() {
-        return write("ok.vert", "#version 450 core\nlayout(location=0) in vec3 p;\nvoid main(){ gl_Position = vec4(p,1); }\n");
+        return write(
+            "ok.vert",
+            "#version 450 core\nlayout(location=0) in vec3 p;\nvoid main(){ gl_Position = vec4(p,1); }\n");
     }
 };
 
 TEST_F(Programs, BuildsAndListsActiveUniforms) {
     auto frag = write("ok.frag",
-                      "#version 450 core\nuniform vec4 tint;\nuniform float unused;\nout vec4 c;\nvoid main(){ c = tint; }\n");
+                      "#version 450 core\nuniform vec4 tint;\nuniform float unused;\nout vec4 c;\nvoid "
+                      "main(){ c = tint; }\n");
     auto program = gl::Program::build(sources(goodVertex(), frag));
     ASSERT_TRUE(program.ok()) << program.error();
     EXPECT_TRUE(program->hasUniform("tint"));
@@ -48,7 +52,8 @@ TEST_F(Programs, BuildsAndListsActiveUniforms) {
 }
 
 TEST_F(Programs, CompileErrorNamesFileAndLine) {
-    auto frag = write("broken.frag", "#version 450 core\nout vec4 c;\n\nvoid main(){\n  c = vec4(1) * undefinedThing;\n}\n");
+    auto frag = write("broken.frag",
+                      "#version 450 core\nout vec4 c;\n\nvoid main(){\n  c = vec4(1) * undefinedThing;\n}\n");
     auto program = gl::Program::build(sources(goodVertex(), frag));
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.error().find("broken.frag:5"), std::string::npos) << program.error();
@@ -56,8 +61,11 @@ TEST_F(Programs, CompileErrorNamesFileAndLine) {
 }
 
 TEST_F(Programs, CompileErrorInsideIncludeNamesTheIncludedFile) {
-    write("helpers.glsl", "// helpers\nfloat halve(float x) { return x * 0.5; }\nfloat bad() { return nope; }\n");
-    auto frag = write("user.frag", "#version 450 core\n#include \"helpers.glsl\"\nout vec4 c;\nvoid main(){ c = vec4(halve(1.0)); }\n");
+    write("helpers.glsl",
+          "// helpers\nfloat halve(float x) { return x * 0.5; }\nfloat bad() { return nope; }\n");
+    auto frag = write(
+        "user.frag",
+        "#version 450 core\n#include \"helpers.glsl\"\nout vec4 c;\nvoid main(){ c = vec4(halve(1.0)); }\n");
     auto program = gl::Program::build(sources(goodVertex(), frag));
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.error().find("helpers.glsl:3"), std::string::npos) << program.error();
@@ -65,7 +73,9 @@ TEST_F(Programs, CompileErrorInsideIncludeNamesTheIncludedFile) {
 
 TEST_F(Programs, ErrorAfterAnIncludeMapsBackToTheIncluder) {
     write("one.glsl", "float one() { return 1.0; }\n");
-    auto frag = write("after.frag", "#version 450 core\n#include \"one.glsl\"\nout vec4 c;\nvoid main(){\n  c = vec4(one()) + missing;\n}\n");
+    auto frag = write("after.frag",
+                      "#version 450 core\n#include \"one.glsl\"\nout vec4 c;\nvoid main(){\n  c = "
+                      "vec4(one()) + missing;\n}\n");
     auto program = gl::Program::build(sources(goodVertex(), frag));
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.error().find("after.frag:5"), std::string::npos) << program.error();
@@ -79,7 +89,9 @@ TEST_F(Programs, MissingFileIsNamed) {
 
 TEST_F(Programs, LinkErrorIsReported) {
     // The fragment stage reads a varying the vertex stage never writes.
-    auto frag = write("link.frag", "#version 450 core\nin vec3 notWritten;\nout vec4 c;\nvoid main(){ c = vec4(notWritten,1); }\n");
+    auto frag = write(
+        "link.frag",
+        "#version 450 core\nin vec3 notWritten;\nout vec4 c;\nvoid main(){ c = vec4(notWritten,1); }\n");
     auto vert = write("link.vert", "#version 450 core\nvoid main(){ gl_Position = vec4(0); }\n");
     auto program = gl::Program::build(sources(vert, frag));
     ASSERT_FALSE(program.ok());
@@ -106,7 +118,9 @@ TEST_F(Programs, FailedReloadKeepsTheLastGoodProgram) {
 
 TEST_F(Programs, ReloadIfChangedNoticesAnEditedInclude) {
     auto inc = write("value.glsl", "float value() { return 1.0; }\n");
-    auto frag = write("watch.frag", "#version 450 core\n#include \"value.glsl\"\nout vec4 c;\nvoid main(){ c = vec4(value()); }\n");
+    auto frag =
+        write("watch.frag",
+              "#version 450 core\n#include \"value.glsl\"\nout vec4 c;\nvoid main(){ c = vec4(value()); }\n");
     gl::ReloadableProgram live(sources(goodVertex(), frag));
     ASSERT_TRUE(live.usable());
     EXPECT_FALSE(live.reloadIfChanged());
@@ -167,7 +181,8 @@ TEST_F(Programs, RegistryCollectsProgramsWhereverTheyAreBuiltAndFollowsMoves) {
         gl::ReloadableProgram failing(sources(vert, broken));
         EXPECT_EQ(registry.size(), 2u);
         ASSERT_TRUE(registry.firstUnusable());
-        EXPECT_NE(registry.firstUnusable()->find("broken.frag"), std::string::npos) << *registry.firstUnusable();
+        EXPECT_NE(registry.firstUnusable()->find("broken.frag"), std::string::npos)
+            << *registry.firstUnusable();
         EXPECT_EQ(registry.errors().size(), 1u);
     }
     EXPECT_EQ(registry.size(), 1u) << "a destroyed program leaves the registry";

@@ -1,11 +1,11 @@
 // Simulate and draw only what the scene calls for. A small lesson-shaped frame graph built with SceneWork
 // runs on the real GL executor and texture pool; for each feature, the same scene with and without it
 // must run the expected passes, allocate the expected texture bytes, and call the expected updates.
-#include "base/paths.hpp"
 #include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
+#include "base/paths.hpp"
 
 #include "effects/scene/scene_work.hpp"
 #include "gl_test.hpp"
@@ -51,8 +51,7 @@ struct TestLesson {
         needs(graph.addPass("skinning", body("skinning")).keepAlive(), SceneFeature::skinnedMeshes);
 
         auto shadowMap = graph.declareTexture("shadow.map", kShadowMap);
-        needs(graph.addPass("shadow map", body("shadow map")).writeDepth(shadowMap),
-                     SceneFeature::shadows);
+        needs(graph.addPass("shadow map", body("shadow map")).writeDepth(shadowMap), SceneFeature::shadows);
 
         auto& scene = graph.addPass("scene", body("scene")).writeColor(sceneColor).writeDepth(sceneDepth);
         if (work.has(SceneFeature::shadows)) scene.read(shadowMap);  // a shadow map exists only with shadows
@@ -62,18 +61,18 @@ struct TestLesson {
         clouds.read(sceneDepth);
         needs(clouds, SceneFeature::clouds);
         needs(graph.addPass("clouds composite", body("clouds composite"))
-                         .read(cloudColor)
-                         .modify(sceneColor, TextureUsage::ColorAttachment),
-                     SceneFeature::clouds);
+                  .read(cloudColor)
+                  .modify(sceneColor, TextureUsage::ColorAttachment),
+              SceneFeature::clouds);
 
         auto& particles = graph.addPass("particles", body("particles"));
         auto particleColor = particles.create("particles.color", kHalfHdr, TextureUsage::ColorAttachment);
         particles.read(sceneDepth);
         needs(particles, SceneFeature::particles);
         needs(graph.addPass("particles composite", body("particles composite"))
-                         .read(particleColor)
-                         .modify(sceneColor, TextureUsage::ColorAttachment),
-                     SceneFeature::particles);
+                  .read(particleColor)
+                  .modify(sceneColor, TextureUsage::ColorAttachment),
+              SceneFeature::particles);
 
         auto& bloom = graph.addPass("bloom", body("bloom"));
         auto bloomChain = bloom.create("bloom.chain", kBloomChain, TextureUsage::ColorAttachment);

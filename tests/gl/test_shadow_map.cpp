@@ -162,7 +162,8 @@ namespace {
 
 // Of the vertices, the fraction whose texel (or a neighbour, for rasterisation at edges) holds a depth
 // no farther than the vertex: where the map has the vertex's surface, or something nearer the light.
-double fractionCovered(const FloatImage& map, const LightView& light, const std::vector<glm::vec3>& vertices) {
+double fractionCovered(const FloatImage& map, const LightView& light,
+                       const std::vector<glm::vec3>& vertices) {
     if (vertices.empty()) return 0.0;
     int covered = 0;
     for (const glm::vec3& v : vertices) {
@@ -216,7 +217,8 @@ TEST_F(ShadowMapTest, BothSkinningProductsGiveTheSameMap) {
     FrameResult b = run(0.5, {});
     ASSERT_EQ(a.map.texels.size(), b.map.texels.size());
     int different = 0;
-    for (std::size_t i = 0; i < a.map.texels.size(); ++i) different += std::abs(a.map.texels[i] - b.map.texels[i]) > 1e-5f;
+    for (std::size_t i = 0; i < a.map.texels.size(); ++i)
+        different += std::abs(a.map.texels[i] - b.map.texels[i]) > 1e-5f;
     // Rounding may move an edge texel or two; the silhouette is the same.
     EXPECT_LE(different, 20);
     EXPECT_EQ(operationCount(SkinningProduct::grouped).mul, 80);
@@ -280,11 +282,12 @@ TEST_F(ShadowMapTest, CastersOutsideTheLightFrustumStayFiniteAndPancake) {
     // A frustum that starts inside the casters: without depth clamping, everything nearer the light
     // than the near plane would be clipped away and cast nothing.
     ShadowBounds bounds = sceneBounds(scene, *meshes, 0.5);
-    LightView fitted = fitLightFrustum(bounds.casters, bounds.everything, scene.lights[0].direction, 15.0f, kMapSize);
+    LightView fitted =
+        fitLightFrustum(bounds.casters, bounds.everything, scene.lights[0].direction, 15.0f, kMapSize);
     LightView cut = fitted;
     float pushed = 0.5f * (fitted.nearDistance + fitted.farDistance);
-    cut.projection = glm::ortho(-fitted.halfWidth, fitted.halfWidth, -fitted.halfWidth, fitted.halfWidth, pushed,
-                                fitted.farDistance);
+    cut.projection = glm::ortho(-fitted.halfWidth, fitted.halfWidth, -fitted.halfWidth, fitted.halfWidth,
+                                pushed, fitted.farDistance);
     cut.viewProjection = cut.projection * cut.view;
     cut.nearDistance = pushed;
     FrameResult r = run(0.5, {}, true, cut);

@@ -23,8 +23,8 @@ class TextureFormats : public GlTest {};
 TEST_F(TextureFormats, Rgba32fRoundTripsEveryBitIncludingNanAndInf) {
     auto t = gl::Texture::create2D(TextureFormat::RGBA32F, 2, 2, 1, "test.rgba32f");
     const float inf = std::numeric_limits<float>::infinity();
-    std::vector<float> values = {1.5f, -2.25f, 65504.0f, 1e30f, 0.1f, 1e-40f, -inf, inf,
-                                 std::nanf(""), 0.0f, -0.0f, 3.0f, 7.0f, 8.0f, 9.0f, 1.0f};
+    std::vector<float> values = {1.5f,          -2.25f, 65504.0f, 1e30f, 0.1f, 1e-40f, -inf, inf,
+                                 std::nanf(""), 0.0f,   -0.0f,    3.0f,  7.0f, 8.0f,   9.0f, 1.0f};
     upload(t, values);
     FloatImage image = gl::readTexture(t);
     ASSERT_EQ(image.texels.size(), values.size());
@@ -43,9 +43,9 @@ TEST_F(TextureFormats, Rgba16fRoundsToHalfPrecision) {
     auto t = gl::Texture::create2D(TextureFormat::RGBA16F, 1, 1, 1, "test.rgba16f");
     upload(t, {1.0f / 3.0f, 65504.0f, 2049.0f, -0.5f});
     FloatImage image = gl::readTexture(t);
-    EXPECT_NE(image.texels[0], 1.0f / 3.0f);                    // not representable in half
-    EXPECT_NEAR(image.texels[0], 1.0f / 3.0f, 1.0f / 4096.0f);  // 11-bit significand
-    EXPECT_EQ(image.texels[1], 65504.0f);                       // the largest half float
+    EXPECT_NE(image.texels[0], 1.0f / 3.0f);                                // not representable in half
+    EXPECT_NEAR(image.texels[0], 1.0f / 3.0f, 1.0f / 4096.0f);              // 11-bit significand
+    EXPECT_EQ(image.texels[1], 65504.0f);                                   // the largest half float
     EXPECT_TRUE(image.texels[2] == 2048.0f || image.texels[2] == 2050.0f);  // spacing 2 above 2048
     EXPECT_EQ(image.texels[3], -0.5f);
 }
@@ -93,8 +93,8 @@ TEST_F(TextureFormats, TheFactsTableAgreesWithWhatGlStores) {
 
         int channels = 0;
         int bits = 0;
-        for (GLenum size : {GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE,
-                            GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_STENCIL_SIZE}) {
+        for (GLenum size : {GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
+                            GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_STENCIL_SIZE}) {
             GLint b = 0;
             glGetTextureLevelParameteriv(t.name(), 0, size, &b);
             channels += b > 0 ? 1 : 0;

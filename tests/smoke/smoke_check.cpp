@@ -76,8 +76,10 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::int64_t glErrors = report.value("glErrors", -1);
-    if (glErrors != 0) fail("GL errors: " + std::to_string(glErrors) + " (" + report.value("lastGlError", "") + ")");
-    if (expectGlErrors && report.value("glExpectedErrors", 0) == 0) fail("this step exists to show GL errors, but none were counted");
+    if (glErrors != 0)
+        fail("GL errors: " + std::to_string(glErrors) + " (" + report.value("lastGlError", "") + ")");
+    if (expectGlErrors && report.value("glExpectedErrors", 0) == 0)
+        fail("this step exists to show GL errors, but none were counted");
     std::vector<std::string> excused = expectedNonFinite(report);
     bool excusedFound = false;
     for (auto& texture : report["textures"]) {
@@ -97,7 +99,8 @@ int main(int argc, char** argv) {
     }
     if (hasNonFinite(report["final"]["stats"])) fail("NaN or Inf in the final image");
     for (auto& pass : report["passes"]) {
-        if (pass.value("status", "") == "executor failed") fail("pass " + pass.value("name", "?") + ": " + pass.value("reason", ""));
+        if (pass.value("status", "") == "executor failed")
+            fail("pass " + pass.value("name", "?") + ": " + pass.value("reason", ""));
     }
 
     auto finalImage = fx::readPng(captureDir + "/final.png");

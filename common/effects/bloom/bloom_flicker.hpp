@@ -34,10 +34,10 @@ public:
 
     static constexpr int kWindow = 30;  // frames the mean and the largest change cover
     struct Stats {
-        bool measured = false;      // at least one change measured since the last restart
-        double meanGlow = 0;        // this frame's glow, mean luma per texel
-        double changePercent = 0;   // |E - E_prev| / max(E, E_prev), in per cent
-        double meanPercent = 0;     // over the last kWindow frames (fewer after a restart)
+        bool measured = false;     // at least one change measured since the last restart
+        double meanGlow = 0;       // this frame's glow, mean luma per texel
+        double changePercent = 0;  // |E - E_prev| / max(E, E_prev), in per cent
+        double meanPercent = 0;    // over the last kWindow frames (fewer after a restart)
         double maxPercent = 0;
     };
     const Stats& stats() const { return stats_; }
@@ -48,8 +48,8 @@ private:
     FullscreenPass pass_;
     std::array<gl::Texture, 2> history_;
     Size2D size_{};
-    int current_ = 0;        // history_[current_] holds the last glow written
-    bool valid_ = false;     // ... and it is last frame's, at this size, for this chain
+    int current_ = 0;     // history_[current_] holds the last glow written
+    bool valid_ = false;  // ... and it is last frame's, at this size, for this chain
     bool ranLastFrame_ = false;
     double lastEnergy_ = 0;
     std::array<double, kWindow> window_{};

@@ -52,15 +52,16 @@ Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
                                    float exposure) const {
     const FullscreenPass* pass = &pass_;
     std::optional<SplitView> view = split;
-    Pass& declared = graph.addPass("output transform", [pass, linear, view, curve, exposure](PassContext& ctx) {
-        // -1: no split. Otherwise the first pixel column that shows `linear`.
-        int divider = view ? splitDividerPixel(view->divider, ctx.targetSize().width) : -1;
-        glProgramUniform1i(pass->program(), kDividerLocation, divider);
-        glProgramUniform1i(pass->program(), kCurveLocation, static_cast<int>(curve));
-        glProgramUniform1f(pass->program(), kExposureLocation, exposure);
-        GLuint after = ctx.native(linear);
-        pass->draw({after, view ? ctx.native(view->before) : after});
-    });
+    Pass& declared =
+        graph.addPass("output transform", [pass, linear, view, curve, exposure](PassContext& ctx) {
+            // -1: no split. Otherwise the first pixel column that shows `linear`.
+            int divider = view ? splitDividerPixel(view->divider, ctx.targetSize().width) : -1;
+            glProgramUniform1i(pass->program(), kDividerLocation, divider);
+            glProgramUniform1i(pass->program(), kCurveLocation, static_cast<int>(curve));
+            glProgramUniform1f(pass->program(), kExposureLocation, exposure);
+            GLuint after = ctx.native(linear);
+            pass->draw({after, view ? ctx.native(view->before) : after});
+        });
     declared.read(linear);
     if (view) declared.read(view->before);
     declared.writeColor(graph.output()).setState(FullscreenPass::state());

@@ -49,8 +49,8 @@ public:
 
     // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,
-                  const std::optional<SplitView>& split = std::nullopt,
-                  ToneCurve curve = ToneCurve::clip, float exposure = 1.0f) const;
+                  const std::optional<SplitView>& split = std::nullopt, ToneCurve curve = ToneCurve::clip,
+                  float exposure = 1.0f) const;
 
 private:
     FullscreenPass pass_;

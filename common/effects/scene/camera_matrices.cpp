@@ -14,7 +14,8 @@ CameraMatrices cameraMatrices(const Camera& camera, int width, int height) {
     // Looking straight up or down makes +Y a useless up vector; pick another one.
     glm::vec3 up = std::abs(direction.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
     m.view = glm::lookAt(camera.position, camera.position + direction, up);
-    m.projection = glm::perspective(glm::radians(verticalFovDegrees(camera, m.aspect)), m.aspect, camera.near, camera.far);
+    m.projection = glm::perspective(glm::radians(verticalFovDegrees(camera, m.aspect)), m.aspect, camera.near,
+                                    camera.far);
     m.viewProjection = m.projection * m.view;
     return m;
 }

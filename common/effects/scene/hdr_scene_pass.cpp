@@ -21,7 +21,8 @@ PassState hdrSceneState(const Scene& scene) {
             .faceCulling = true,
             .cullFace = CullFace::Back,
             .colorMask = ColorMask{},
-            .clearColor = ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
+            .clearColor =
+                ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
             .clearDepth = 1.0f};
 }
 

@@ -4,7 +4,6 @@
 #include <climits>
 #include <cstring>
 
-
 #include "base/log.hpp"
 #include "image/png_file.hpp"
 

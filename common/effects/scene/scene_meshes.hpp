@@ -84,7 +84,8 @@ public:
     // Draws the objects with their materials. Poses first if the last update() was for another time.
     void draw(GLuint program, const Scene& scene, double seconds) const;
     // Returns how many objects it drew.
-    std::size_t draw(GLuint program, const Scene& scene, double seconds, const MeshDrawOptions& options) const;
+    std::size_t draw(GLuint program, const Scene& scene, double seconds,
+                     const MeshDrawOptions& options) const;
 
     std::size_t drawnObjects() const;
     // One entry per scene object, drawable or not (the indices model() and isSkinned() take).

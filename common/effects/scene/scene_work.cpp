@@ -35,10 +35,10 @@ SceneFeature featureOf(Simulation simulation) {
 namespace {
 
 constexpr SceneFeature kEveryFeature[] = {
-    SceneFeature::skinnedMeshes, SceneFeature::shadows,      SceneFeature::particles,
-    SceneFeature::clouds,        SceneFeature::hdrEmissive,  SceneFeature::physicalLens,
+    SceneFeature::skinnedMeshes, SceneFeature::shadows,       SceneFeature::particles,
+    SceneFeature::clouds,        SceneFeature::hdrEmissive,   SceneFeature::physicalLens,
     SceneFeature::manyLights,    SceneFeature::movingObjects, SceneFeature::bloom,
-    SceneFeature::colorMatrix,   SceneFeature::radialBlur,   SceneFeature::depthOfField,
+    SceneFeature::colorMatrix,   SceneFeature::radialBlur,    SceneFeature::depthOfField,
     SceneFeature::toneMap,
 };
 

@@ -30,8 +30,11 @@ void drawWithPlacements(GLuint program, const Scene& scene, const SceneMeshes& m
 
 ShadowLitPass ShadowLitPass::create() {
     ShadowLitPass pass;
-    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert", "effects/shadow/shadowed_scene.frag",
-                                           {}, {}, "scene with shadows (linear HDR)"});
+    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
+                                           "effects/shadow/shadowed_scene.frag",
+                                           {},
+                                           {},
+                                           "scene with shadows (linear HDR)"});
     return pass;
 }
 
@@ -62,9 +65,11 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
     return targets;
 }
 
-TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                              double seconds, const DeclaredShadowMap& shadow,
-                                              const std::vector<glm::mat4>& skinnedPlacements, int size) const {
+TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& scene,
+                                              const SceneMeshes& meshes, double seconds,
+                                              const DeclaredShadowMap& shadow,
+                                              const std::vector<glm::mat4>& skinnedPlacements,
+                                              int size) const {
     size = std::max(size, 1);
     const gl::ReloadableProgram* program = &program_;
     ShadowLookup lookup = shadow.lookup;
@@ -83,8 +88,9 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
         drawWithPlacements(name, scene, meshes, seconds, skinnedPlacements);
     });
     if (hasMap) pass.read(map);
-    TextureHandle color = pass.create("shadow.light_view", {TextureSize::absolute(size, size), TextureFormat::RGBA16F, 1},
-                                      TextureUsage::ColorAttachment);
+    TextureHandle color =
+        pass.create("shadow.light_view", {TextureSize::absolute(size, size), TextureFormat::RGBA16F, 1},
+                    TextureUsage::ColorAttachment);
     pass.create("shadow.light_view_depth", {TextureSize::absolute(size, size), TextureFormat::Depth32F, 1},
                 TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);

@@ -35,9 +35,10 @@ public:
                             const std::vector<glm::mat4>& skinnedPlacements = {}) const;
 
     // Declares "shadow light view": the scene from the light, `size` squared, only when inspected.
-    TextureHandle declareLightView(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                                   const DeclaredShadowMap& shadow,
-                                   const std::vector<glm::mat4>& skinnedPlacements = {}, int size = 512) const;
+    TextureHandle declareLightView(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                   double seconds, const DeclaredShadowMap& shadow,
+                                   const std::vector<glm::mat4>& skinnedPlacements = {},
+                                   int size = 512) const;
 
 private:
     gl::ReloadableProgram program_;

@@ -117,7 +117,8 @@ ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double s
         glm::mat4 model = SceneMeshes::modelAt(object, seconds);
         Bounds world = local.transformed(model);
         if (meshes.isSkinned(i))
-            for (const glm::mat4& placement : skinnedPlacements) world.add(local.transformed(placement * model));
+            for (const glm::mat4& placement : skinnedPlacements)
+                world.add(local.transformed(placement * model));
         out.everything.add(world);
         if (object.castsShadows) out.casters.add(world);
     }
@@ -129,9 +130,14 @@ ShadowMap ShadowMap::create() {
     s.static_ = gl::ReloadableProgram(
         {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"});
     s.skinned_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                        "effects/shadow/shadow_depth.frag", {}, {}, "shadow (skinned, T*(J*p))"});
+                                        "effects/shadow/shadow_depth.frag",
+                                        {},
+                                        {},
+                                        "shadow (skinned, T*(J*p))"});
     s.skinnedGrouped_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                               "effects/shadow/shadow_depth.frag", {}, "#define GROUPED_PRODUCT\n",
+                                               "effects/shadow/shadow_depth.frag",
+                                               {},
+                                               "#define GROUPED_PRODUCT\n",
                                                "shadow (skinned, (T*J)*p)"});
     s.depthView_ = gl::ReloadableProgram(
         {"common/fullscreen.vert", "effects/shadow/shadow_depth_view.frag", {}, {}, "shadow depth view"});
@@ -179,8 +185,8 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
 
     const gl::ReloadableProgram* staticProgram = &static_;
     const gl::Program* skinnedProgram = &this->skinnedProgram(options.product);
-    Pass& pass = graph.addPass(options.passName, [staticProgram, skinnedProgram, &scene, &meshes, seconds, light,
-                                                  options](PassContext&) {
+    Pass& pass = graph.addPass(options.passName, [staticProgram, skinnedProgram, &scene, &meshes, seconds,
+                                                  light, options](PassContext&) {
         ShadowPassStats stats;
         const float* vp = glm::value_ptr(light.viewProjection);
         glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
@@ -202,7 +208,8 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
             o.skinned = SkinnedDraw::source;
             o.skinFilter = SkinFilter::skinnedOnly;
             // The fix asks the program (its active uniforms were listed once, at link time).
-            o.setMaterial = options.materialUpload == MaterialUpload::always || skinnedProgram->hasUniform("baseColor");
+            o.setMaterial =
+                options.materialUpload == MaterialUpload::always || skinnedProgram->hasUniform("baseColor");
             std::optional<gl::ExpectedErrorScope> expected;
             if (options.materialUpload == MaterialUpload::always)
                 expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
@@ -219,9 +226,10 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
         if (options.stats) *options.stats = stats;
     });
     std::string texName = options.textureName;
-    out.map = pass.create(texName, {TextureSize::absolute(out.settings.mapSize, out.settings.mapSize),
-                                    TextureFormat::Depth32F, 1},
-                          TextureUsage::DepthAttachment);
+    out.map = pass.create(
+        texName,
+        {TextureSize::absolute(out.settings.mapSize, out.settings.mapSize), TextureFormat::Depth32F, 1},
+        TextureUsage::DepthAttachment);
     out.pass = &pass;
     if (options.setsItsOwnState) {
         // Shader effects §3.3: the pass enables its own depth test (without it GL writes no depth,
@@ -256,10 +264,14 @@ TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShado
         glBindVertexArray(vao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     });
-    TextureHandle out = pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
-                                    TextureUsage::ColorAttachment);
+    TextureHandle out =
+        pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
+                    TextureUsage::ColorAttachment);
     if (map.pass) pass.read(map.map);
-    pass.setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false,
+    pass.setState({.depthTest = false,
+                   .depthWrite = false,
+                   .blend = false,
+                   .faceCulling = false,
                    .colorMask = ColorMask{}});
     if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
     if (!depthView_.usable()) pass.disable("the depth view program did not build: " + depthView_.error());

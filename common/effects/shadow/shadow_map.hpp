@@ -58,8 +58,8 @@ enum class MaterialUpload {
 struct ShadowPassStats {
     std::size_t staticDraws = 0;
     std::size_t skinnedDraws = 0;
-    int programSwitches = 0;  // glUseProgram changes from one shadow program to the other
-    std::int64_t glErrors = 0;  // errors raised by the pass (expected ones: MaterialUpload::always)
+    int programSwitches = 0;          // glUseProgram changes from one shadow program to the other
+    std::int64_t glErrors = 0;        // errors raised by the pass (expected ones: MaterialUpload::always)
     std::size_t skinnedVertices = 0;  // vertices the skinned program transformed
 };
 
@@ -95,13 +95,14 @@ struct ShadowLookup {
 // The lookup for `settings` and `light`. The filter's radius is given in metres so that maps of
 // different sizes blur the same width (a quality comparison needs the same picture at every size);
 // filterRadiusMetres <= 0 means 1.5 texels of this map.
-ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light, float filterRadiusMetres = 0.0f);
+ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light,
+                          float filterRadiusMetres = 0.0f);
 
 struct DeclaredShadowMap {
-    Pass* pass = nullptr;      // null when the scene has no shadow-casting light
-    TextureHandle map;         // "shadow.map", Depth32F
-    ShadowSettings settings;   // as used: map size and taps in range
-    ShadowLookup lookup;       // enabled only when the pass exists and is switched on
+    Pass* pass = nullptr;     // null when the scene has no shadow-casting light
+    TextureHandle map;        // "shadow.map", Depth32F
+    ShadowSettings settings;  // as used: map size and taps in range
+    ShadowLookup lookup;      // enabled only when the pass exists and is switched on
 };
 
 // The first directional light that casts shadows, or null.
@@ -127,14 +128,15 @@ public:
 
     // Declares the shadow pass. `settings` comes from the light's shadow block (a lesson may override
     // mapSize and filterTaps: mapSize is clamped to [1, 8192], filterTaps to [1, 64]). The light view
-    // is fitted to the scene (fitLightFrustum: across the light to the casters, along it to everything). `scene`, `meshes` and `options.stats` must outlive
-    // the frame's execution. When the scene has no shadow-casting light, nothing is declared and the
-    // lookup comes back disabled.
-    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                              const ShadowSettings& settings, const ShadowPassOptions& options) const;
+    // is fitted to the scene (fitLightFrustum: across the light to the casters, along it to everything).
+    // `scene`, `meshes` and `options.stats` must outlive the frame's execution. When the scene has no
+    // shadow-casting light, nothing is declared and the lookup comes back disabled.
+    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                              double seconds, const ShadowSettings& settings,
+                              const ShadowPassOptions& options) const;
     // The same with a light view the caller fitted.
-    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                              const ShadowSettings& settings, const LightView& light,
+    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                              double seconds, const ShadowSettings& settings, const LightView& light,
                               const ShadowPassOptions& options) const;
 
     // For the inspector: "shadow.depth_metres" (R32F, `size` squared), the map as metres from the

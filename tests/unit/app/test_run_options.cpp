@@ -230,7 +230,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFlag{{"--frames"}, "--frames: needs a value"},
                       BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
 
-
 TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto o = parseRunOptions({"--graph", "out/frame.dot"});
     ASSERT_TRUE(o.ok()) << o.error();

@@ -1,7 +1,7 @@
 // The generator is deterministic and the committed files are what it writes: two runs give the same
 // bytes, and a run into a fresh folder reproduces res/models and res/textures byte for byte.
-#include "base/paths.hpp"
 #include <gtest/gtest.h>
+#include "base/paths.hpp"
 
 #include <filesystem>
 #include <set>

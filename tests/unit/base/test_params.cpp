@@ -17,7 +17,8 @@ TEST(Params, ChecksTypeAndRangeAndKeepsTheOldValue) {
     EXPECT_FLOAT_EQ(length, 0.25f);
     auto bad = params.assign("length=2");
     ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().find("parameter length: 2 is out of range; expected a number from 0 to 0.5"), std::string::npos)
+    EXPECT_NE(bad.error().find("parameter length: 2 is out of range; expected a number from 0 to 0.5"),
+              std::string::npos)
         << bad.error();
     EXPECT_FLOAT_EQ(length, 0.25f);
 
@@ -67,7 +68,8 @@ TEST(Params, EveryValueKnowsWhereItCameFrom) {
     fx::ParamSet params;
     params.addFloat("threshold", &threshold, 0.0f, 16.0f, "").fromScene("postEffects.bloom.threshold");
     params.addInt("levels", &levels, 1, 8, "").fromScene("postEffects.bloom.levels");
-    params.addChoice("tone_map", &curve, {"clip", "reinhard", "filmic"}, "").fromScene("postEffects.toneMap.operator");
+    params.addChoice("tone_map", &curve, {"clip", "reinhard", "filmic"}, "")
+        .fromScene("postEffects.toneMap.operator");
     const std::vector<std::string> known{"postEffects.bloom.threshold", "postEffects.bloom.levels",
                                          "postEffects.bloom.knee", "postEffects.toneMap.operator"};
     auto source = [&](const char* name) { return fx::toString(params.find(name)->source()); };
@@ -120,12 +122,13 @@ TEST(Params, SceneValuesOutsideTheRangeAreRefusedByFileFieldAndRange) {
     params.addFloat("knee", &knee, 0.0f, 1.0f, "").fromScene("postEffects.bloom.knee");
     params.addFloat("intensity", &intensity, 0.0f, 4.0f, "").fromScene("postEffects.bloom.intensity");
     const std::vector<std::string> known{"postEffects.bloom.knee", "postEffects.bloom.intensity"};
-    auto bad = params.applyScene({{"postEffects.bloom.knee", "0.25"}, {"postEffects.bloom.intensity", "50"}}, known,
-                                 "res/scenes/class.json");
+    auto bad = params.applyScene({{"postEffects.bloom.knee", "0.25"}, {"postEffects.bloom.intensity", "50"}},
+                                 known, "res/scenes/class.json");
     ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().find("res/scenes/class.json: postEffects.bloom.intensity: parameter intensity: 50 is out "
-                               "of range; expected a number from 0 to 4"),
-              std::string::npos)
+    EXPECT_NE(
+        bad.error().find("res/scenes/class.json: postEffects.bloom.intensity: parameter intensity: 50 is out "
+                         "of range; expected a number from 0 to 4"),
+        std::string::npos)
         << bad.error();
     EXPECT_FLOAT_EQ(knee, 0.5f);  // nothing changed, not even the good setting
     EXPECT_EQ(params.find("knee")->source(), fx::ParamSource::lessonDefault);
@@ -135,6 +138,7 @@ TEST(Params, SceneValuesOutsideTheRangeAreRefusedByFileFieldAndRange) {
     params.addFloat("typo", &typo, 0.0f, 1.0f, "").fromScene("postEffects.blom.knee");
     auto unknown = params.applyScene({}, known, "res/scenes/class.json");
     ASSERT_FALSE(unknown.ok());
-    EXPECT_NE(unknown.error().find("\"postEffects.blom.knee\", which scene files do not have"), std::string::npos)
+    EXPECT_NE(unknown.error().find("\"postEffects.blom.knee\", which scene files do not have"),
+              std::string::npos)
         << unknown.error();
 }

@@ -16,7 +16,8 @@ void expectConsistent(const MeshData& m) {
     ASSERT_EQ(m.indices.size() % 3, 0u);
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
         for (int k = 0; k < 3; ++k) ASSERT_LT(m.indices[t + k], m.positions.size());
-        glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+        glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                  c = m.positions[m.indices[t + 2]];
         glm::vec3 face = glm::cross(b - a, c - a);
         if (glm::length(face) < 1e-5f) continue;  // collapsed at a pole
         glm::vec3 n = m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];

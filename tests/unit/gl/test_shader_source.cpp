@@ -16,9 +16,10 @@ namespace {
 // Real temporary files: the expander resolves includes by looking at the file system.
 struct Files {
     // One folder per test and process: ctest runs these tests in parallel.
-    fs::path root = fs::temp_directory_path() /
-                    ("fx_shader_source_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                     "_" + std::to_string(::getpid()));
+    fs::path root =
+        fs::temp_directory_path() /
+        ("fx_shader_source_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+         "_" + std::to_string(::getpid()));
     Files() {
         fs::remove_all(root);
         fs::create_directories(root / "common");
@@ -42,8 +43,9 @@ TEST(ShaderSource, IncludesAreExpandedWithLineDirectives) {
     auto main = files.add("main.frag", "#version 450 core\n#include \"common/a.glsl\"\nvoid main() {}\n");
     auto source = expandShaderSource(main, files.root);
     ASSERT_TRUE(source.ok()) << source.error();
-    EXPECT_EQ(source->text,
-              "#version 450 core\n#line 2 0\n#line 1 1\nfloat a() { return 1.0; }\n#line 3 0\nvoid main() {}\n");
+    EXPECT_EQ(
+        source->text,
+        "#version 450 core\n#line 2 0\n#line 1 1\nfloat a() { return 1.0; }\n#line 3 0\nvoid main() {}\n");
     ASSERT_EQ(source->fileNames.size(), 2u);
     EXPECT_EQ(source->fileNames[0], "main.frag");
     EXPECT_EQ(source->fileNames[1], "common/a.glsl");
@@ -62,7 +64,8 @@ TEST(ShaderSource, AFileIsIncludedOnce) {
     Files files;
     files.add("common/once.glsl", "float once;\n");
     files.add("common/b.glsl", "#include \"once.glsl\"\nfloat b;\n");
-    auto main = files.add("m.frag", "#version 450 core\n#include \"common/once.glsl\"\n#include \"common/b.glsl\"\n");
+    auto main =
+        files.add("m.frag", "#version 450 core\n#include \"common/once.glsl\"\n#include \"common/b.glsl\"\n");
     auto source = expandShaderSource(main, files.root);
     ASSERT_TRUE(source.ok()) << source.error();
     EXPECT_EQ(source->fileNames.size(), 3u);
@@ -87,7 +90,8 @@ TEST(ShaderSource, AMissingIncludeNamesTheFileAndLineOfTheDirective) {
     auto main = files.add("miss.frag", "#version 450 core\n\n#include \"nowhere.glsl\"\n");
     auto source = expandShaderSource(main, files.root);
     ASSERT_FALSE(source.ok());
-    EXPECT_NE(source.error().find("miss.frag:3: cannot find included file \"nowhere.glsl\""), std::string::npos)
+    EXPECT_NE(source.error().find("miss.frag:3: cannot find included file \"nowhere.glsl\""),
+              std::string::npos)
         << source.error();
 }
 
@@ -101,7 +105,8 @@ TEST(ShaderSource, MissingVersionIsAnError) {
 
 TEST(ShaderSource, CompilerLogsOfThreeVendorsAreMapped) {
     std::vector<std::string> names = {"main.frag", "common/a.glsl"};
-    EXPECT_EQ(mapCompilerLog("0:12(5): error: `x' undeclared\n", names), "main.frag:12:5: error: `x' undeclared\n");
+    EXPECT_EQ(mapCompilerLog("0:12(5): error: `x' undeclared\n", names),
+              "main.frag:12:5: error: `x' undeclared\n");
     EXPECT_EQ(mapCompilerLog("1(3) : error C1008: undefined variable \"y\"\n", names),
               "common/a.glsl:3: error C1008: undefined variable \"y\"\n");
     EXPECT_EQ(mapCompilerLog("ERROR: 1:7: 'z' : undeclared identifier\n", names),

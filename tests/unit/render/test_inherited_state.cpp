@@ -58,14 +58,16 @@ TEST(InheritedState, APassThatClearsDepthInheritsTheDepthMaskOffEvenWithoutTesti
 TEST(InheritedState, ColourPassInheritsBlendingAndItsFunction) {
     Names names = inheritedDependencies(PassState{.faceCulling = false}, afterUiQueue(),
                                         {.depth = false, .color = true});
-    EXPECT_EQ(names, (Names{"blend: on (inherited)", "blend function: rgb Add(SrcAlpha, OneMinusSrcAlpha), "
-                                                     "alpha Add(One, OneMinusSrcAlpha) (inherited)",
+    EXPECT_EQ(names, (Names{"blend: on (inherited)",
+                            "blend function: rgb Add(SrcAlpha, OneMinusSrcAlpha), "
+                            "alpha Add(One, OneMinusSrcAlpha) (inherited)",
                             "colour mask: RGBA (inherited)"}));
 }
 
 TEST(InheritedState, BlendingDeclaredOffMakesTheFunctionIrrelevant) {
-    Names names = inheritedDependencies(PassState{.blend = false, .faceCulling = false, .colorMask = ColorMask{}},
-                                        afterUiQueue(), {.depth = false, .color = true});
+    Names names =
+        inheritedDependencies(PassState{.blend = false, .faceCulling = false, .colorMask = ColorMask{}},
+                              afterUiQueue(), {.depth = false, .color = true});
     EXPECT_TRUE(names.empty()) << names.front();
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Shared by the scene tests: where the fixtures are, and loading them with the test asset root.
-#include "base/paths.hpp"
 #include <filesystem>
 #include <string>
+#include "base/paths.hpp"
 
 #include "base/file_io.hpp"
 #include "scene/scene_loader.hpp"

@@ -59,13 +59,14 @@ TEST(ClipSelection, AMissingClipListsTheFilesClipsAndTheNearestName) {
 }
 
 TEST(ClipSelection, SceneFilesNameSeveralClipsAsAListOrAllAsAStar) {
-    const std::pair<const char*, std::vector<std::string>> cases[] = {{R"(["walk", "wave"])", {"walk", "wave"}},
-                                                                      {R"("*")", {"*"}}};
+    const std::pair<const char*, std::vector<std::string>> cases[] = {
+        {R"(["walk", "wave"])", {"walk", "wave"}}, {R"("*")", {"*"}}};
     for (const auto& [clip, expected] : cases) {
         SCOPED_TRACE(clip);
-        std::string text = std::string(R"({"name": "clips", "camera": {"position": [0, 1, 4], "target": [0, 0, 0]},
+        std::string text =
+            std::string(R"({"name": "clips", "camera": {"position": [0, 1, 4], "target": [0, 0, 0]},
             "objects": [{"gltf": "assets/robot.gltf", "animation": {"clip": )") +
-                           clip + "}}]}";
+            clip + "}}]}";
         auto scene = fx::parseScene(text, scene_test::dataDir() / "clips.json", scene_test::testOptions());
         ASSERT_TRUE(scene.ok()) << scene.error();
         EXPECT_EQ(scene->objects[0].animation.clips, expected);

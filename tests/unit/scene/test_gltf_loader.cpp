@@ -481,8 +481,9 @@ TEST(GltfLoader, HugeCountsAreRefusedNotWrappedAround) {
         for (const char* which : {"times", "positions", "indices"}) {
             SCOPED_TRACE(std::string(which) + " " + std::to_string(count));
             Hostile h;
-            int index = std::string(which) == "times" ? h.times : std::string(which) == "positions" ? h.positions
-                                                                                                    : h.indices;
+            int index = std::string(which) == "times"       ? h.times
+                        : std::string(which) == "positions" ? h.positions
+                                                            : h.indices;
             h.accessor(index)["count"] = count;
             auto model = parse(h.d.finish());
             ASSERT_FALSE(model.ok());
@@ -498,7 +499,8 @@ TEST(GltfLoader, AnAccessorWithoutDataCannotAskForUnboundedMemory) {
     h.accessor(h.positions)["count"] = std::uint64_t(1) << 40;
     auto model = parse(h.d.finish());
     ASSERT_FALSE(model.ok());
-    EXPECT_TRUE(scene_test::contains(model.error(), "fxlab reads at most 16777216 per accessor")) << model.error();
+    EXPECT_TRUE(scene_test::contains(model.error(), "fxlab reads at most 16777216 per accessor"))
+        << model.error();
 }
 
 TEST(GltfLoader, HugeOffsetsAndStridesAreRefused) {
@@ -536,10 +538,12 @@ TEST(GltfLoader, AFloatJointsAccessorIsNamedAsTheWrongTypeNotAsReadingPastTheBuf
     int joints = d.accessor(std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 5126, "VEC4", 3);
     int weights = d.floats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4", 4);
     d["meshes"] = json::array(
-        {{{"primitives", {{{"attributes", {{"POSITION", pos}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}}}}}}});
+        {{{"primitives",
+           {{{"attributes", {{"POSITION", pos}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}}}}}}});
     auto model = parse(d.finish());
     ASSERT_FALSE(model.ok());
-    EXPECT_TRUE(scene_test::contains(model.error(), "JOINTS_0: must be unsigned 8- or 16-bit VEC4, not float"))
+    EXPECT_TRUE(
+        scene_test::contains(model.error(), "JOINTS_0: must be unsigned 8- or 16-bit VEC4, not float"))
         << model.error();
 }
 
@@ -550,8 +554,8 @@ TEST(GltfLoader, RequiredExtensionsFxlabDoesNotImplementAreRefusedByName) {
     doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     auto model = parse(doc.dump());
     ASSERT_FALSE(model.ok());
-    EXPECT_TRUE(scene_test::contains(model.error(),
-                                     "requires the extension KHR_draco_mesh_compression, which fxlab does not implement"))
+    EXPECT_TRUE(scene_test::contains(
+        model.error(), "requires the extension KHR_draco_mesh_compression, which fxlab does not implement"))
         << model.error();
     // Used but not required: loaded, with a warning naming it.
     doc.erase("extensionsRequired");

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "scene/light_frustum.hpp"
 
@@ -33,7 +33,8 @@ Bounds box(glm::vec3 min, glm::vec3 max) {
 
 void expectCornersInside(const LightView& light, const Bounds& b) {
     for (int i = 0; i < 8; ++i) {
-        glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+        glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                         (i & 4) ? b.max.z : b.min.z);
         glm::vec3 p = ndc(light, corner);
         for (int k = 0; k < 3; ++k) {
             EXPECT_GE(p[k], -1.0001f) << "corner " << i << " axis " << k;
@@ -107,7 +108,8 @@ TEST(LightFrustum, CentreIsSnappedToWholeTexels) {
     LightView a = fitLightFrustum(box({-3, 0, -3}, {3, 2, 3}), dir, 4.0f, 256);
     // Moving everything by a tenth of a texel across the light keeps the map where it was.
     glm::vec3 shift = glm::vec3(a.view[0][0], a.view[1][0], a.view[2][0]) * (0.1f * a.texelWorldSize);
-    LightView b = fitLightFrustum(box(glm::vec3(-3, 0, -3) + shift, glm::vec3(3, 2, 3) + shift), dir, 4.0f, 256);
+    LightView b =
+        fitLightFrustum(box(glm::vec3(-3, 0, -3) + shift, glm::vec3(3, 2, 3) + shift), dir, 4.0f, 256);
     glm::vec3 pa = ndc(a, glm::vec3(0.3f, 0.1f, 0.2f));
     glm::vec3 pb = ndc(b, glm::vec3(0.3f, 0.1f, 0.2f));
     EXPECT_NEAR(pa.x, pb.x, 1e-4f);

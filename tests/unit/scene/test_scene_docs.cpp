@@ -1,6 +1,6 @@
 // docs/scene-format.md shows the every-field fixture and the smallest scene; they must stay true.
-#include "base/paths.hpp"
 #include <gtest/gtest.h>
+#include "base/paths.hpp"
 
 #include <string>
 #include <vector>
@@ -48,7 +48,9 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
     auto markdown = fx::readTextFile(fx::projectRoot() / "docs" / "scene-format.md");
     ASSERT_TRUE(markdown.ok()) << markdown.error();
     namespace limits = fx::scene_limits;
-    auto row = [](const std::string& what, const std::string& value) { return "| " + what + " | " + value + " |"; };
+    auto row = [](const std::string& what, const std::string& value) {
+        return "| " + what + " | " + value + " |";
+    };
     const std::string rows[] = {
         row("scene file size", fx::describeByteCount(fx::file_limits::scene.maxBytes)),
         row("`objects`", std::to_string(limits::kMaxObjects)),
@@ -56,12 +58,15 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         row("`emitters`", std::to_string(limits::kMaxEmitters)),
         row("`clouds`", std::to_string(limits::kMaxClouds)),
         row("clips named by one object", std::to_string(limits::kMaxClipsPerObject)),
-        row("any string (names, descriptions, paths, field names)", std::to_string(limits::kMaxStringBytes) + " bytes"),
+        row("any string (names, descriptions, paths, field names)",
+            std::to_string(limits::kMaxStringBytes) + " bytes"),
         row("nesting of objects and arrays", std::to_string(limits::kMaxNesting) + " levels"),
-        row("glTF file, its `.bin` buffers and images", fx::describeByteCount(fx::file_limits::gltf.maxBytes) + " each"),
+        row("glTF file, its `.bin` buffers and images",
+            fx::describeByteCount(fx::file_limits::gltf.maxBytes) + " each"),
         row("PNG texture", fx::describeByteCount(fx::file_limits::png.maxBytes)),
     };
-    for (const std::string& expected : rows) EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
+    for (const std::string& expected : rows)
+        EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
     EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(limits::kExcerptBytes) + " bytes"),
               std::string::npos);
 }

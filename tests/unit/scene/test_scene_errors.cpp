@@ -490,8 +490,9 @@ TEST(SceneErrors, DeepNestingIsRefusedNotACrash) {
 
 // Scenes a hostile or broken file can be: each refused with a message naming the file and the reason.
 TEST(SceneErrors, ARepeatedKeyIsAnErrorNotLastOneWins) {
-    expectRefused(R"({"name": "a", "camera": {"position": [0, 1, 2], "near": 0.1, "near": 5, "target": [0, 0, 0]}})",
-                  "camera.near", {"appears twice in the same object"});
+    expectRefused(
+        R"({"name": "a", "camera": {"position": [0, 1, 2], "near": 0.1, "near": 5, "target": [0, 0, 0]}})",
+        "camera.near", {"appears twice in the same object"});
 }
 
 TEST(SceneErrors, NulBytesAreRefusedWithTheirPosition) {
@@ -518,16 +519,19 @@ TEST(SceneErrors, AFolderGivenAsASceneSaysItIsAFolder) {
 
 TEST(SceneErrors, AHugeStringIsRefusedAndQuotedOnlyInPart) {
     std::string huge(16 * 1024 * 1024, 'x');
-    auto scene = fx::parseScene(R"({"name": ")" + huge + R"(", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}})",
-                                nominalFile(), scene_test::testOptions());
+    auto scene = fx::parseScene(
+        R"({"name": ")" + huge + R"(", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}})",
+        nominalFile(), scene_test::testOptions());
     ASSERT_FALSE(scene.ok());
-    EXPECT_TRUE(contains(scene.error(), ": name: a string of 16777216 bytes")) << scene.error().substr(0, 300);
+    EXPECT_TRUE(contains(scene.error(), ": name: a string of 16777216 bytes"))
+        << scene.error().substr(0, 300);
     EXPECT_TRUE(contains(scene.error(), "at most 4096")) << scene.error().substr(0, 300);
     EXPECT_LT(scene.error().size(), 400u);
     // An unknown enum value is quoted in part too.
     std::string longType(3000, 'q');
     auto light = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]},
-        "lights": [{"type": ")" + longType + R"(", "direction": [0, -1, 0]}]})",
+        "lights": [{"type": ")" + longType +
+                                    R"(", "direction": [0, -1, 0]}]})",
                                 nominalFile(), scene_test::testOptions());
     ASSERT_FALSE(light.ok());
     EXPECT_TRUE(contains(light.error(), "(3000 bytes)")) << light.error().substr(0, 300);
@@ -538,17 +542,20 @@ TEST(SceneErrors, TooManyObjectsAreRefusedBeforeAnyIsRead) {
     std::string objects;
     for (int i = 0; i < 100000; ++i)
         objects += std::string(i ? "," : "") + R"({"primitive": {"shape": "box"}})";
-    auto scene = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "objects": [)" +
-                                    objects + "]}",
-                                nominalFile(), scene_test::testOptions());
+    auto scene = fx::parseScene(
+        R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "objects": [)" + objects +
+            "]}",
+        nominalFile(), scene_test::testOptions());
     ASSERT_FALSE(scene.ok());
-    EXPECT_TRUE(contains(scene.error(), ": objects: 100000 entries; a scene may have at most 4096")) << scene.error();
+    EXPECT_TRUE(contains(scene.error(), ": objects: 100000 entries; a scene may have at most 4096"))
+        << scene.error();
     std::string lights;
     for (int i = 0; i < 300; ++i)
         lights += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
-    auto lit = fx::parseScene(R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "lights": [)" +
-                                  lights + "]}",
-                              nominalFile(), scene_test::testOptions());
+    auto lit = fx::parseScene(
+        R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "lights": [)" + lights +
+            "]}",
+        nominalFile(), scene_test::testOptions());
     ASSERT_FALSE(lit.ok());
     EXPECT_TRUE(contains(lit.error(), ": lights: 300 entries; a scene may have at most 256")) << lit.error();
 }

@@ -49,7 +49,8 @@ protected:
     void SetUp() override {
         // One folder per test and process: ctest runs tests of this fixture in parallel.
         root_ = fs::temp_directory_path() /
-                ("fx_scene_paths_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                ("fx_scene_paths_" +
+                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
                  std::to_string(::getpid()));
         fs::remove_all(root_);
         fs::create_directories(root_ / "scenes");
@@ -78,7 +79,8 @@ TEST_F(AssetRootFixture, AbsoluteOrDottedPathsOutsideAreRefused) {
     // A sibling folder whose name starts like the root's is still outside it.
     fs::create_directories(root_.string() + "_sibling");
     EXPECT_FALSE(
-        fx::resolveAssetPath("../../" + root_.filename().string() + "_sibling/a.png", root_ / "scenes", root_).ok());
+        fx::resolveAssetPath("../../" + root_.filename().string() + "_sibling/a.png", root_ / "scenes", root_)
+            .ok());
     fs::remove_all(root_.string() + "_sibling");
     // Neither the root folder itself nor an empty path names a file.
     EXPECT_FALSE(fx::resolveAssetPath("..", root_ / "scenes", root_).ok());
