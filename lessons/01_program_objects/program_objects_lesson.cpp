@@ -9,6 +9,7 @@
 
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "raw_programs.hpp"
 
 namespace lesson01 {
@@ -160,14 +161,9 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         glUseProgram(program);
         denseSphere_.draw(row * row);
     };
-    PassState sceneState{.depthTest = true,
-                         .depthWrite = true,
-                         .depthFunction = DepthFunction::Less,
-                         .blend = false,
-                         .faceCulling = true,
-                         .cullFace = CullFace::Back,
-                         .clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f},
-                         .clearDepth = 1.0f};
+    // The opaque scene's state, on a near-black background of its own so the two products stand out.
+    PassState sceneState = hdrSceneState(*scene_);
+    sceneState.clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f};
     TextureHandle grouped[2], parenthesised[2];
     auto& a = graph
                   .addPass("skinning (T*J)*p",
@@ -209,16 +205,7 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         buildSkinningComparison(graph, frame);
         return;
     }
-    PassState sceneState{.depthTest = true,
-                         .depthWrite = true,
-                         .depthFunction = DepthFunction::Less,
-                         .blend = false,
-                         .faceCulling = true,
-                         .cullFace = CullFace::Back,
-                         .clearColor = ClearColor{0.0f, 0.0f, 0.0f, 1.0f},
-                         .clearDepth = 1.0f};
-    glm::vec3 sky = scene_->background;
-    sceneState.clearColor = ClearColor{sky.r, sky.g, sky.b, 1.0f};
+    PassState sceneState = hdrSceneState(*scene_);
     graph
         .addPass("scene",
                  [this, frame](PassContext&) {
