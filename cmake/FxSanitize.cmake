@@ -3,8 +3,9 @@
 # shift) stops the test that caused it with a report. `./fxlab test --sanitize` configures such a build
 # in build-sanitize/ and runs the unit, gl and smoke tests with tests/sanitize/lsan.supp.
 #
-# -O1 and no -g: the sanitizers need neither for their reports to name the function and line (they
-# symbolise from the frame pointers and the symbol table), and the build is about twice as fast.
+# -O1 and no -g: a report still names the functions of its stack (from the frame pointers and the
+# symbol table), and the build is about twice as fast. Chasing a report to its line wants -g: configure
+# build-sanitize/ again with CMAKE_CXX_FLAGS=-g.
 option(FXLAB_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 if(FXLAB_SANITIZE)
   set(fx_sanitize_flags -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
