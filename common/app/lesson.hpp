@@ -45,7 +45,7 @@ struct FrameInfo {
     bool headless = false;
     // The last frame's passes and times, if any (in Lesson::facts after the run: the last frame's).
     const FrameReport* previousFrame = nullptr;
-    bool benchmark = false;  // a bench frame: leave out side-by-side views that only help people
+    bool benchmark = false;  // a bench frame: leave out views and diagnostics that only help people
     Pointer pointer;
 };
 
