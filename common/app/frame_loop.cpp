@@ -63,6 +63,7 @@ void FrameLoop::run() {
         Size2D extent = context_.framebufferSize();
         FrameInfo frame = frameInfo(index, delta, extent);
         frame.seconds = seconds;
+        if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, frame.deltaSeconds);
         s_.lesson->update(frame);
         if (extent.empty()) {
             // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.

@@ -41,7 +41,9 @@ public:
 
     // The scene's features: what it lacks is told to every frame's graph before the lesson declares,
     // so passes that need it are not called for, with the scene's reason (Pass::needs).
-    void setSceneWork(const SceneWork* work) { work_ = work; }
+    // The same SceneWork runs the lesson's simulations (FrameLoop, before Lesson::update).
+    void setSceneWork(SceneWork* work) { work_ = work; }
+    SceneWork* sceneWork() const { return work_; }
 
     PassTimer& timer() { return timer_; }
     TexturePool& pool() { return pool_; }
@@ -53,7 +55,7 @@ private:
     PassTimer timer_;
     GlPassExecutor executor_;
     std::uint64_t destroyedSeen_ = 0;
-    const SceneWork* work_ = nullptr;
+    SceneWork* work_ = nullptr;
 };
 
 }  // namespace fx

@@ -14,6 +14,7 @@
 #include "app/lesson_facts.hpp"
 #include "base/params.hpp"
 #include "base/result.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene.hpp"
 
@@ -65,7 +66,11 @@ public:
     // that does not build fails the run after init, with its error; no need to check here.
     virtual Status init(const Scene& scene) = 0;
 
-    // Simulation for the frame (only what the scene has).
+    // The per-frame simulations the lesson runs (skinning, particles, clouds), each under the scene
+    // feature it exists for: work.onUpdate(Simulation::animation, "skinning", ...). The runner calls
+    // the ones the scene calls for every frame, before update(), and never the others.
+    virtual void simulations(SceneWork& work) { (void)work; }
+    // Anything else the lesson does once a frame before declaring it (a drag, a clock of its own).
     virtual void update(const FrameInfo& frame) { (void)frame; }
     // Declares this frame's passes for the current step. Their bodies run after this returns, so
     // they capture handles and values by copy, never a local by reference (docs/frame-graph.md).

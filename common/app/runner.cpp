@@ -50,6 +50,7 @@ int run(RunSession& s) {
     SceneWork work(s.scene);
     FrameRenderer renderer(*context, o.timing, !o.bench);
     renderer.setSceneWork(&work);
+    s.lesson->simulations(work);
     if (o.bench) return runBenchMode(s, renderer, *context);
 
     std::unique_ptr<Overlay> overlay;

@@ -100,8 +100,10 @@ ShadowPassOptions SkinnedShadowsLesson::shadowOptionsForStep(int step, bool benc
     return o;
 }
 
-void SkinnedShadowsLesson::update(const FrameInfo& frame) {
-    meshes_.update(frame.seconds);  // animation and GPU skinning, once a frame
+void SkinnedShadowsLesson::simulations(SceneWork& work) {
+    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
+    work.onUpdate(Simulation::animation, "skinning",
+                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
 }
 
 void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {

@@ -18,7 +18,7 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void update(const fx::FrameInfo& frame) override;
+    void simulations(fx::SceneWork& work) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show

@@ -68,8 +68,10 @@ Status FboPipelineLesson::init(const Scene& scene) {
     return Status::success();
 }
 
-void FboPipelineLesson::update(const FrameInfo& frame) {
-    meshes_.update(frame.seconds);
+void FboPipelineLesson::simulations(SceneWork& work) {
+    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
+    work.onUpdate(Simulation::animation, "skinning",
+                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
 }
 
 void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {

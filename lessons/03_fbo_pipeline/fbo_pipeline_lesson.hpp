@@ -20,7 +20,7 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void update(const fx::FrameInfo& frame) override;
+    void simulations(fx::SceneWork& work) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
