@@ -1,6 +1,7 @@
 #pragma once
-// Lesson 06: bloom, with the whole chain live (Shader effects §3.7, the Bloom chapter, reference/effects.md
-// section 1). Float targets first, then the two chapters' chains, then what the chapters leave out.
+// Lesson 06: bloom, with the whole chain live (Shader effects §3.7 and the Bloom chapter,
+// docs/chapters.md). Float targets first, then the two chapters' chains, then what the chapters leave
+// out (Karis average, soft knee, level-independent energy, tone curves).
 #include <string>
 #include <vector>
 

@@ -4,7 +4,7 @@
 //   scene.color  RGBA16F, the size of the output: linear light, values above 1 kept for later passes;
 //   scene.depth  Depth32F (a texture, so later passes can read it).
 // No gamma is applied here: one output transform at the end of the frame encodes for the display.
-// What is written is clamped to [0, kSceneHdrMax] with NaN turned to 0 (DESIGN.md "Numbers"), so no
+// What is written is clamped to [0, kSceneHdrMax] with NaN turned to 0 (docs/numbers.md), so no
 // infinite or NaN texel can enter the post-processing chain and spread through a blur.
 //
 //   HdrScenePass scenePass;                       // in Lesson::init, with the context current:

@@ -23,7 +23,7 @@ void main() {
     vec3 albedo = baseColor * texture(baseColorTexture, texcoord).rgb;
     vec3 emitted = emissiveColor * texture(emissiveTexture, texcoord).rgb;
     vec3 linear = shadowedLighting(worldNormal, worldPosition, albedo) + emitted;
-    // Finite and non-negative before anything reads it (DESIGN.md "Numbers").
+    // Finite and non-negative before anything reads it (docs/numbers.md).
     linear = mix(clamp(linear, 0.0, hdrMax), vec3(0.0), isnan(linear));
     color = vec4(encodeForDisplay != 0 ? linearToSrgb(linear) : linear, 1.0);
 }
