@@ -37,12 +37,12 @@ def read_layers(cmake_file):
 
 def builds_on(layers, layer):
     """The layer itself and every layer below it."""
-    seen, todo = set(), [layer]
-    while todo:
-        current = todo.pop()
+    seen, pending = set(), [layer]
+    while pending:
+        current = pending.pop()
         if current not in seen:
             seen.add(current)
-            todo.extend(layers[current][0])
+            pending.extend(layers[current][0])
     return seen
 
 

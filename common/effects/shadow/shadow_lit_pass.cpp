@@ -26,6 +26,17 @@ void drawWithPlacements(GLuint program, const Scene& scene, const SceneMeshes& m
     }
 }
 
+// The lit scene seen by `camera`, receiving the shadow map (`map` 0: none), skinned objects at each
+// placement: the body of both the scene pass and the light's view.
+void drawShadowed(GLuint program, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                  const CameraMatrices& camera, GLuint map, const ShadowLookup& lookup,
+                  const std::vector<glm::mat4>& placements) {
+    SceneMeshes::setFrameUniforms(program, scene, camera);
+    glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+    ShadowMap::bindForLookup(program, map, lookup);
+    drawWithPlacements(program, scene, meshes, seconds, placements);
+}
+
 }  // namespace
 
 ShadowLitPass ShadowLitPass::create() {
@@ -48,11 +59,8 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
     Pass& pass = graph.addPass("scene", [=, &scene, &meshes](PassContext& ctx) {
         Size2D size = ctx.targetSize();
         CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        GLuint name = program->name();
-        SceneMeshes::setFrameUniforms(name, scene, camera);
-        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
-        ShadowMap::bindForLookup(name, hasMap ? ctx.native(map) : 0, lookup);
-        drawWithPlacements(name, scene, meshes, seconds, skinnedPlacements);
+        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
+                     skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     HdrSceneTargets targets;
@@ -81,11 +89,8 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
         camera.projection = lookup.light.projection;
         camera.viewProjection = lookup.light.viewProjection;
         camera.position = lookup.light.centre + lookup.light.directionToLight * lookup.light.farDistance;
-        GLuint name = program->name();
-        SceneMeshes::setFrameUniforms(name, scene, camera);
-        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
-        ShadowMap::bindForLookup(name, hasMap ? ctx.native(map) : 0, lookup);
-        drawWithPlacements(name, scene, meshes, seconds, skinnedPlacements);
+        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
+                     skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     TextureHandle color =
