@@ -1,0 +1,50 @@
+#include "effects/particles/emitter_clock.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fx {
+
+EmitterClock::EmitterClock(float ratePerSecond, float lifetimeSeconds, bool chapterTimer)
+    : period_(1.0 / std::max(double(ratePerSecond), 1e-6)),
+      lifetime_(std::max(double(lifetimeSeconds), 1e-6)),
+      chapter_(chapterTimer) {}
+
+std::uint32_t EmitterClock::maxBurst() const {
+    if (chapter_) return 1;
+    return std::uint32_t(std::floor(lifetime_ / period_)) + 1;
+}
+
+SpawnBatch EmitterClock::tick(double dt) {
+    if (!(dt > 0)) dt = 0;  // NaN and negative frames do not run the clock backwards
+    SpawnBatch batch;
+    batch.period = float(period_);
+    timer_ += dt;
+    if (chapter_) {
+        if (timer_ >= period_) {
+            timer_ -= period_;
+            batch.count = 1;
+            batch.firstNumber = number_++;
+        }
+        return batch;
+    }
+    // Spawns owed; the newest was due `timer_` seconds ago after taking them out.
+    double owed = std::floor(timer_ / period_);
+    timer_ -= owed * period_;
+    timer_ = std::clamp(timer_, 0.0, period_);
+    double alive = std::min(owed, double(maxBurst()));
+    // Of the owed spawns, the newest `alive` ones; drop those already past their lifetime.
+    std::uint32_t count = 0;
+    for (std::uint32_t k = 0; k < std::uint32_t(alive); ++k) {
+        if (timer_ + double(k) * period_ < lifetime_) count = k + 1;
+    }
+    std::uint64_t total = std::uint64_t(owed);
+    batch.count = count;
+    batch.skipped = total - count;
+    batch.firstNumber = number_ + batch.skipped;
+    batch.newestAge = float(timer_);
+    number_ += total;
+    return batch;
+}
+
+}  // namespace fx
