@@ -24,6 +24,15 @@ double msSince(Clock::time_point start) {
 
 const char* kPathNames[] = {"objects", "instanced", "gpu"};
 const int kOffscreenDivisors[] = {1, 2, 4};
+// The bench's workloads: every path at every count, in one sweep so their times share one run.
+const int kWorkloadCounts[] = {100, 1000, 10000, 100000};
+
+std::vector<std::string> workloadNames() {
+    std::vector<std::string> names{"params"};
+    for (const char* path : kPathNames)
+        for (int count : kWorkloadCounts) names.push_back(cat(path, " ", count));
+    return names;
+}
 constexpr int kInstancedCount = 2000;  // step 3's fire
 constexpr int kGpuCount = 100000;      // step 4's fire
 // The chapter's emitter moved aside by this much for step 2's two fires (m, along x).
@@ -65,10 +74,16 @@ void FireLesson::declareParams(ParamSet& params) {
     params.addChoice("path", &path_, {"step", "objects", "instanced", "gpu"},
                      "The simulation path: the step's own, one object per particle, one instanced draw, or "
                      "the GPU (compute and an indirect draw)");
-    Param& count = params.addInt("count", &count_, 0, 100000,
-                                 "Particles alive in the fire (0: the step's own: the scene's rate in steps "
-                                 "1 and 2, 2000 in step 3, 100000 in step 4)");
-    (void)count;
+    params.addInt(
+        "count", &count_, 0, 100000,
+        "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, 2000 in "
+        "step 3, 100000 in step 4)");
+    // Not a quality knob but the bench's sweep of the three paths at 100 to 100000 particles: one knob,
+    // so every row is timed in the same run against the same full-screen copy.
+    Param& workload = params.addChoice("workload", &workload_, workloadNames(),
+                                       "The bench: a simulation path and a particle count together "
+                                       "(params: the path and count parameters)");
+    workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
     params.addFloat("spin", &spin_, -720.0f, 720.0f,
                     "Degrees per second the fire's sprites turn (the chapter's exercise: 120)");
     params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)");
@@ -81,6 +96,10 @@ void FireLesson::declareParams(ParamSet& params) {
                                         "Step 5: the resolution of the off-screen particle target");
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
+    params.addFloat("threshold", &threshold_, 0.0f, 16.0f, "Bloom: brightness above which light blooms")
+        .fromScene("postEffects.bloom.threshold");
+    params.addFloat("intensity", &intensity_, 0.0f, 4.0f, "Bloom: the Shader effects chapter's intensity")
+        .fromScene("postEffects.bloom.intensity");
 }
 
 Status FireLesson::init(const Scene& scene) {
@@ -125,6 +144,7 @@ FireLesson::Setup FireLesson::setupFor(int step) const {
             s.emitter.position.x += kSideBySide;
         }
         int count = count_ > 0 ? count_ : step == Instanced ? kInstancedCount : step == Gpu ? kGpuCount : 0;
+        if (workload_ > 0) count = kWorkloadCounts[(workload_ - 1) % 4];
         if (count > 0 && e.kind == EmitterKind::fire) s = swarm(s, count);
         setup.emitters.push_back(s);
     }
@@ -139,6 +159,7 @@ FireLesson::Setup FireLesson::setupFor(int step) const {
                  : step == Instanced              ? Path::instanced
                                                   : Path::gpu;
     if (path_ > 0) setup.path = static_cast<Path>(path_ - 1);
+    if (workload_ > 0) setup.path = static_cast<Path>(std::clamp((workload_ - 1) / 4, 0, 2));
     setup.sort = (step == Hitch || step == Instanced) && sort_ && setup.path != Path::gpu;
     setup.premultiplied = beyond;
     return setup;
@@ -346,7 +367,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     TextureHandle shown = hdr.color;
     {
         PassGroup::Scope in(graph, bloomGroup_);
-        BloomChainSettings settings = chapter000Bloom(1.0f, 2.0f, 6);
+        BloomChainSettings settings = chapter000Bloom(threshold_, intensity_, 6);
         BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
         if (!d.empty()) {
             BloomCompositeSettings c{settings.filters, settings.upOffset,
@@ -401,6 +422,7 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("live", std::to_string(live), "particles alive");
     out.add("capacity", std::to_string(system_.capacity()), "pool slots");
     out.add("replaced", std::to_string(replaced), "pool full: oldest particles replaced");
+    out.add("dropped", std::to_string(system_.droppedCount()), "pool full: new particles dropped");
     out.add("simulateCpuMs", cat(simulateMs_), "simulation on the CPU (ms)");
     out.add("drawCpuMs", cat(drawCpuMs_), "issuing the draws on the CPU (ms)");
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");

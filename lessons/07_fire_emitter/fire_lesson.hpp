@@ -56,14 +56,17 @@ private:
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
 
     // Parameters.
-    int path_ = 0;        // 0: the step's own path; else objects, instanced, gpu
-    int count_ = 0;       // particles alive in the fire (0: the step's own)
-    float spin_ = 0.0f;   // deg/s added to the fire (the chapter's exercise: 120)
-    float hitch_ = 0.5f;  // step 2: the long frame (s)
-    bool sort_ = true;    // steps 2 (fixed side) and 3: back to front
-    float soft_ = 0.3f;   // step 5: soft-fade distance (m)
-    int offscreen_ = 1;   // step 5: particles at full, half or quarter resolution
-    int pool_ = 0;        // slots per emitter (0: from rate x lifetime)
+    int path_ = 0;            // 0: the step's own path; else objects, instanced, gpu
+    int count_ = 0;           // particles alive in the fire (0: the step's own)
+    float spin_ = 0.0f;       // deg/s added to the fire (the chapter's exercise: 120)
+    float hitch_ = 0.5f;      // step 2: the long frame (s)
+    bool sort_ = true;        // steps 2 (fixed side) and 3: back to front
+    float soft_ = 0.3f;       // step 5: soft-fade distance (m)
+    int offscreen_ = 1;       // step 5: particles at full, half or quarter resolution
+    int pool_ = 0;            // slots per emitter (0: from rate x lifetime)
+    int workload_ = 0;        // the bench: a path and a count together (0: the parameters above)
+    float threshold_ = 1.0f;  // the chapter's bloom (lesson 06, step 3)
+    float intensity_ = 2.0f;
 
     const fx::Scene* scene_ = nullptr;
     fx::SceneMeshes meshes_;

@@ -33,16 +33,18 @@ SpawnBatch EmitterClock::tick(double dt) {
     timer_ -= owed * period_;
     timer_ = std::clamp(timer_, 0.0, period_);
     double alive = std::min(owed, double(maxBurst()));
-    // Of the owed spawns, the newest `alive` ones; drop those already past their lifetime.
+    // Of the owed spawns, the newest `alive` ones; drop those already past their lifetime. The age is
+    // computed in float as the spawn will compute it, so none is born at exactly its lifetime.
+    const float newest = float(timer_), period = float(period_), lifetime = float(lifetime_);
     std::uint32_t count = 0;
     for (std::uint32_t k = 0; k < std::uint32_t(alive); ++k) {
-        if (timer_ + double(k) * period_ < lifetime_) count = k + 1;
+        if (newest + float(k) * period < lifetime) count = k + 1;
     }
     std::uint64_t total = std::uint64_t(owed);
     batch.count = count;
     batch.skipped = total - count;
     batch.firstNumber = number_ + batch.skipped;
-    batch.newestAge = float(timer_);
+    batch.newestAge = newest;
     number_ += total;
     return batch;
 }

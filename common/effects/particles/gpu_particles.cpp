@@ -77,7 +77,6 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
 
     const GLuint compact = compact_.name();
     glUseProgram(compact);
-    glProgramUniform1ui(compact, 0, GLuint(system.emitters().size()));
     glProgramUniform1ui(compact, 1, capacity_);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -106,6 +105,13 @@ std::vector<GpuParticle> GpuParticles::readPool() const {
         glGetNamedBufferSubData(pool_.name(), 0, GLsizeiptr(slots.size() * sizeof(GpuParticle)),
                                 slots.data());
     return slots;
+}
+
+std::vector<std::uint32_t> GpuParticles::readLiveList() const {
+    std::vector<std::uint32_t> list(readStats().live);
+    if (live_ && !list.empty())
+        glGetNamedBufferSubData(live_.name(), 0, GLsizeiptr(list.size() * 4), list.data());
+    return list;
 }
 
 }  // namespace fx

@@ -37,8 +37,9 @@ public:
     void bindForDraw() const;
     // Reads the stats back (a stall: for facts and tests, not in bench frames).
     GpuParticleStats readStats() const;
-    // The slots as they are now (tests).
+    // The slots as they are now, and the live list the draw reads (tests).
     std::vector<GpuParticle> readPool() const;
+    std::vector<std::uint32_t> readLiveList() const;
 
 private:
     gl::ReloadableProgram simulate_;

@@ -63,10 +63,18 @@ const std::vector<SpawnBatch>& ParticleSystem::update(double dt) {
         GpuEmitter& g = table_[e];
         const bool chapter = setups_[e].rules.chapterLifetime;
         SpawnBatch batch = clocks_[e].tick(dt);
+        const std::uint32_t first = g.ring.x, slots = g.ring.y;
+        if (batch.count > slots) {
+            // More spawns in one frame than the ring has slots: the oldest of them would be overwritten
+            // by the newest at once, so they are dropped (counted), on every path alike.
+            const std::uint32_t excess = batch.count - slots;
+            dropped_ += excess;
+            batch.firstNumber += excess;
+            batch.count = slots;
+        }
         batches_[e] = batch;
         spawnedLastFrame_ += batch.count;
         largestBurst_ = std::max<std::uint64_t>(largestBurst_, batch.count);
-        const std::uint32_t first = g.ring.x, slots = g.ring.y;
         // Ring position of this frame's first spawn; the ring's oldest slot after them.
         std::uint32_t head = g.ring.z;
         g.ring.z = std::uint32_t((std::uint64_t(head) + batch.count) % slots);
@@ -105,6 +113,7 @@ void ParticleSystem::prewarm(double seconds) {
     for (int i = 0; i < frames; ++i) update(1.0 / 60.0);
     largestBurst_ = 0;
     replaced_ = 0;
+    dropped_ = 0;
 }
 
 void ParticleSystem::collect(std::vector<GpuParticle>& out) const {

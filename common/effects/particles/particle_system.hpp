@@ -52,6 +52,8 @@ public:
     // Runs `seconds` at 60 Hz, so the first picture shows a steady flame.
     void prewarm(double seconds);
 
+    // Every slot of the pool (CPU path; tests compare it with the GPU's).
+    const std::vector<GpuParticle>& slots() const { return slots_; }
     // Live particles, oldest first per emitter (the chapter's draw order: spawn order).
     void collect(std::vector<GpuParticle>& out) const;
     // Sorts particles back to front for `view` (farthest first; ties keep their order).
@@ -63,6 +65,8 @@ public:
     std::uint32_t capacity() const { return capacity_; }
     std::uint32_t liveCount() const { return live_; }
     std::uint64_t replacedCount() const { return replaced_; }
+    // Spawns that never got a slot: one frame owed more than the emitter's ring holds.
+    std::uint64_t droppedCount() const { return dropped_; }
     std::uint64_t spawnedLastFrame() const { return spawnedLastFrame_; }
     std::uint64_t largestBurst() const { return largestBurst_; }
     const std::vector<EmitterClock>& clocks() const { return clocks_; }
@@ -81,6 +85,7 @@ private:
     std::uint32_t capacity_ = 0;
     std::uint32_t live_ = 0;
     std::uint64_t replaced_ = 0;
+    std::uint64_t dropped_ = 0;
     std::uint64_t spawnedLastFrame_ = 0;
     std::uint64_t largestBurst_ = 0;
 };
