@@ -278,10 +278,8 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
     // The simulation's setup follows the step and the parameters; a change starts it over. Without an
     // emitter in the scene nothing is made: no buffer, no dispatch.
-    if (particles) {
-        Setup wanted = setupFor(step);
-        if (!configured_ || !(wanted == setup_)) configure(wanted);
-    }
+    const Setup wanted = setupFor(step);
+    if (particles && (!configured_ || !(wanted == setup_))) configure(wanted);
     hitchNow_ = hitchOn(frame);
     pendingDt_ = frame.deltaSeconds + (hitchNow_ ? double(hitch_) : 0.0);
 
@@ -293,7 +291,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         Pass& sim = graph.addPass("particles.simulate", [this](PassContext&) { simulate(pendingDt_); });
         sim.keepAlive();
 
-        if (!setup_.premultiplied) {
+        if (!wanted.premultiplied) {
             // Steps 1 to 4: straight into scene.color, tested against scene.depth with depth writes off
             // (the chapter's transparent queue), straight alpha.
             Pass& drawPass = graph.addPass("particles.draw", [this, cam](PassContext& ctx) {
