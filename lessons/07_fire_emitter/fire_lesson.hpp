@@ -51,7 +51,8 @@ public:
 
 private:
     void configure(const Setup& setup);
-    void simulate(double dt);                            // the "particles.simulate" pass body
+    void restart();            // the steady flame again, from the same state (prewarmed)
+    void simulate(double dt);  // the "particles.simulate" pass body
     int draw(const fx::ParticleDrawSettings& settings);  // the draw pass bodies: draw calls made
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
 

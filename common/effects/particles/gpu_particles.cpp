@@ -83,6 +83,13 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
     glUseProgram(0);
 }
 
+void GpuParticles::clear() const {
+    if (!pool_) return;
+    const GLuint zero = 0;
+    glClearNamedBufferData(pool_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(stats_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
 void GpuParticles::bindForDraw() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pool_.name());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, live_.name());

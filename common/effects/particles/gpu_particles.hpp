@@ -33,6 +33,8 @@ public:
     // Runs one frame on the GPU: `system.update(dt)` on the CPU gives the spawn batches and the ring
     // heads; `emitters` is the buffer holding system.emitters() (binding 1) after that update.
     void simulate(const ParticleSystem& system, double dt, GLuint emitters) const;
+    // Frees every slot and zeroes the stats (the bench starts each frame from the same state).
+    void clear() const;
     // Binds the pool (0), the live list (2) and the command buffer for glDrawArraysIndirect.
     void bindForDraw() const;
     // Reads the stats back (a stall: for facts and tests, not in bench frames).
