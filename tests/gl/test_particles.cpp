@@ -237,6 +237,9 @@ TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
         }
     }
     EXPECT_EQ(gpu.readLiveList(), expectedList);
+    // The indirect draw's command: four vertices per particle, exactly the live ones.
+    EXPECT_EQ(gpu.readDrawCommand(),
+              (std::array<std::uint32_t, 4>{4, std::uint32_t(expectedList.size()), 0, 0}));
     // The same run again: the same bytes.
     ParticleSystem clocks2(setups, false);
     GpuParticles gpu2 = GpuParticles::create(clocks2);
@@ -262,6 +265,7 @@ TEST_F(Particles, ZeroLiveParticlesDrawNothingWithoutError) {
     EXPECT_EQ(renderer.drawIndirect(gpu, camera(32, 32)), 1);
     target.unbind();
     EXPECT_EQ(gpu.readStats().live, 0u);
+    EXPECT_EQ(gpu.readDrawCommand()[1], 0u);
     Extremes e = extremes(target.read());
     EXPECT_EQ(e.min, 0.25f);
     EXPECT_EQ(e.max, 0.75f);
@@ -279,6 +283,7 @@ TEST_F(Particles, FullGpuPoolReplacesTheOldestAndDrawsTheCapacity) {
     }
     GpuParticleStats stats = gpu.readStats();
     EXPECT_EQ(stats.live, 10u);
+    EXPECT_EQ(gpu.readDrawCommand()[1], 10u);  // the draw draws the capacity, no more
     EXPECT_GT(stats.replaced, 20u);
 }
 

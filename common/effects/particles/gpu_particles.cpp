@@ -114,6 +114,12 @@ std::vector<GpuParticle> GpuParticles::readPool() const {
     return slots;
 }
 
+std::array<std::uint32_t, 4> GpuParticles::readDrawCommand() const {
+    std::array<std::uint32_t, 4> words{};
+    if (command_) glGetNamedBufferSubData(command_.name(), 0, sizeof(words), words.data());
+    return words;
+}
+
 std::vector<std::uint32_t> GpuParticles::readLiveList() const {
     std::vector<std::uint32_t> list(readStats().live);
     if (live_ && !list.empty())

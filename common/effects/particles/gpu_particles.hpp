@@ -7,6 +7,7 @@
 //
 // Buffers, by their GL labels: particles.pool (48 bytes a slot), particles.live (one index a slot),
 // particles.draw_command (glDrawArraysIndirect's four words) and particles.stats (replaced, live).
+#include <array>
 #include <cstdint>
 
 #include "effects/particles/particle_system.hpp"
@@ -42,6 +43,8 @@ public:
     // The slots as they are now, and the live list the draw reads (tests).
     std::vector<GpuParticle> readPool() const;
     std::vector<std::uint32_t> readLiveList() const;
+    // glDrawArraysIndirect's four words as the draw will read them: count, instances, first, base.
+    std::array<std::uint32_t, 4> readDrawCommand() const;
 
 private:
     gl::ReloadableProgram simulate_;
