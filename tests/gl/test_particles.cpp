@@ -159,6 +159,9 @@ TEST(ParticleClock, OneSecondHitchFixedRulesNoNegativeAlphaAndABoundedBurst) {
     // A very long frame (a day) is bounded the same way.
     system.update(86400.0);
     EXPECT_LE(system.spawnedLastFrame(), 6u);
+    system.update(1.0e300);  // and an absurd one: no overflow converting what is owed to an integer
+    EXPECT_LE(system.spawnedLastFrame(), 6u);
+    EXPECT_LE(system.liveCount(), 6u);
 }
 
 TEST(ParticleClock, OneSecondHitchChapterRulesShowTheBugs) {

@@ -16,7 +16,8 @@ std::uint32_t EmitterClock::maxBurst() const {
 }
 
 SpawnBatch EmitterClock::tick(double dt) {
-    if (!(dt > 0)) dt = 0;  // NaN and negative frames do not run the clock backwards
+    if (!(dt > 0)) dt = 0;     // NaN and negative frames do not run the clock backwards
+    dt = std::min(dt, 1.0e9);  // a frame longer than 30 years counts as 30 years (owed stays an integer)
     SpawnBatch batch;
     batch.period = float(period_);
     timer_ += dt;
