@@ -239,6 +239,15 @@ void FireLesson::simulate(double dt) {
     simulateMs_ = msSince(start);
 }
 
+void FireLesson::drawPoolView(GLuint texture, int rows) const {
+    if (setup_.path == Path::gpu) {
+        gpu_.drawPoolView(texture, int(system_.emitters().size()));
+    } else {
+        std::vector<float> texels = system_.poolViewTexels(rows);
+        glTextureSubImage2D(texture, 0, 0, 0, 256, rows, GL_RGBA, GL_FLOAT, texels.data());
+    }
+}
+
 int FireLesson::draw(const ParticleDrawSettings& settings) {
     Clock::time_point start = Clock::now();
     int calls = 0;
@@ -301,6 +310,16 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         PassGroup::Scope in(graph, particleGroup_);
         Pass& sim = graph.addPass("particles.simulate", [this](PassContext&) { simulate(pendingDt_); });
         sim.keepAlive();
+
+        // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the
+        // graph runs this pass only when someone inspects or captures it.
+        const int rows = std::max(1, int((system_.capacity() + 255) / 256));
+        Pass& poolView = graph.addPass("particles.pool view", [this, rows](PassContext& ctx) {
+            drawPoolView(GLuint(ctx.native(poolTexture_)), rows);
+        });
+        poolTexture_ =
+            poolView.create("particles.pool", {TextureSize::absolute(256, rows), TextureFormat::RGBA32F, 1},
+                            TextureUsage::Storage);
 
         if (!wanted.premultiplied) {
             // Steps 1 to 4: straight into scene.color, tested against scene.depth with depth writes off

@@ -55,6 +55,7 @@ private:
     void simulate(double dt);  // the "particles.simulate" pass body
     int draw(const fx::ParticleDrawSettings& settings);  // the draw pass bodies: draw calls made
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
+    void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
 
     // Parameters.
     int path_ = 0;            // 0: the step's own path; else objects, instanced, gpu
@@ -89,6 +90,7 @@ private:
     std::vector<fx::GpuParticle> visible_;  // CPU paths: the live particles in draw order
     double pendingDt_ = 0;                  // this frame's step, set in buildFrame for the pass body
     bool hitchNow_ = false;
+    fx::TextureHandle poolTexture_;  // this frame's particles.pool (the pool view pass writes it)
     double simulateMs_ = 0, drawCpuMs_ = 0;
     int drawCalls_ = 0;
     int negativeAlpha_ = 0;  // step 2: particles drawn with alpha below 0 (the chapter's side)

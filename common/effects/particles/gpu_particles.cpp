@@ -22,6 +22,8 @@ GpuParticles GpuParticles::create(const ParticleSystem& system) {
     g.simulate_ =
         gl::ReloadableProgram({{}, {}, "effects/particles/simulate.comp", {}, "particles: simulate"});
     g.compact_ = gl::ReloadableProgram({{}, {}, "effects/particles/compact.comp", {}, "particles: compact"});
+    g.poolView_ =
+        gl::ReloadableProgram({{}, {}, "effects/particles/pool_view.comp", {}, "particles: pool view"});
     g.capacity_ = std::max(system.capacity(), 1u);
     g.pool_ = buffer("particles.pool", GLsizeiptr(g.capacity_) * GLsizeiptr(sizeof(GpuParticle)));
     g.live_ = buffer("particles.live", GLsizeiptr(g.capacity_) * 4);
@@ -80,6 +82,20 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
     glProgramUniform1ui(compact, 1, capacity_);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+void GpuParticles::drawPoolView(GLuint view, int emitters) const {
+    if (!pool_ || !poolView_.usable() || view == 0) return;
+    const GLuint p = poolView_.name();
+    glProgramUniform1ui(p, 0, capacity_);
+    glProgramUniform1f(p, 1, emitters > 1 ? 1.0f / float(emitters - 1) : 0.0f);
+    glUseProgram(p);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pool_.name());
+    glBindImageTexture(0, view, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute((capacity_ + kGroupSize - 1) / kGroupSize, 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUseProgram(0);
 }
 

@@ -36,6 +36,8 @@ public:
     void simulate(const ParticleSystem& system, double dt, GLuint emitters) const;
     // Frees every slot and zeroes the stats (the bench starts each frame from the same state).
     void clear() const;
+    // Writes the pool into `view` (RGBA32F, 256 texels a row): the inspector's particles.pool.
+    void drawPoolView(GLuint view, int emitters) const;
     // Binds the pool (0), the live list (2) and the command buffer for glDrawArraysIndirect.
     void bindForDraw() const;
     // Reads the stats back (a stall: for facts and tests, not in bench frames).
@@ -49,6 +51,7 @@ public:
 private:
     gl::ReloadableProgram simulate_;
     gl::ReloadableProgram compact_;
+    gl::ReloadableProgram poolView_;
     gl::BufferName pool_, live_, command_, stats_;
     std::uint32_t capacity_ = 0;
 };

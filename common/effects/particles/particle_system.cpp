@@ -128,6 +128,21 @@ void ParticleSystem::collect(std::vector<GpuParticle>& out) const {
     }
 }
 
+std::vector<float> ParticleSystem::poolViewTexels(int rows) const {
+    std::vector<float> texels(std::size_t(std::max(rows, 0)) * 256 * 4, 0.0f);
+    const float emitterScale = table_.size() > 1 ? 1.0f / float(table_.size() - 1) : 0.0f;
+    for (std::size_t i = 0; i * 4 < texels.size(); ++i) {
+        float* t = &texels[i * 4];
+        t[3] = 1.0f;
+        if (i >= slots_.size() || slots_[i].extra.z == 0.0f) continue;
+        const GpuParticle& p = slots_[i];
+        t[0] = std::clamp(p.originAge.w / std::max(p.velocityLife.w, 1e-6f), 0.0f, 1.0f);
+        t[1] = 1.0f;
+        t[2] = p.extra.y * emitterScale;
+    }
+    return texels;
+}
+
 void ParticleSystem::sortBackToFront(std::vector<GpuParticle>& particles, const glm::mat4& view) {
     auto depth = [&view](const GpuParticle& p) {
         glm::vec3 position = glm::vec3(p.originAge) + glm::vec3(p.velocityLife) * p.originAge.w;

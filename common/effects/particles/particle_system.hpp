@@ -54,6 +54,9 @@ public:
 
     // Every slot of the pool (CPU path; tests compare it with the GPU's).
     const std::vector<GpuParticle>& slots() const { return slots_; }
+    // The pool as the inspector's picture (particles.pool, RGBA floats, 256 slots a row, `rows` rows):
+    // red how far through its life, green alive, blue which emitter; as pool_view.comp on the GPU.
+    std::vector<float> poolViewTexels(int rows) const;
     // Live particles, oldest first per emitter (the chapter's draw order: spawn order).
     void collect(std::vector<GpuParticle>& out) const;
     // Sorts particles back to front for `view` (farthest first; ties keep their order).
