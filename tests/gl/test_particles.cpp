@@ -243,6 +243,22 @@ TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
     // The indirect draw's command: four vertices per particle, exactly the live ones.
     EXPECT_EQ(gpu.readDrawCommand(),
               (std::array<std::uint32_t, 4>{4, std::uint32_t(expectedList.size()), 0, 0}));
+    // The inspector's picture of the pool (particles.pool) is the same from either side.
+    const int rows = int((cpu.capacity() + 255) / 256);
+    gl::Texture view = gl::Texture::create2D(TextureFormat::RGBA32F, 256, rows, 1, "test particles.pool");
+    gpu.drawPoolView(view.name(), int(clocks.emitters().size()));
+    FloatImage gpuView = gl::readTexture(view);
+    std::vector<float> cpuView = cpu.poolViewTexels(rows);
+    int differing = 0;
+    for (int i = 0; i < 256 * rows; ++i)
+        for (int c = 0; c < 4; ++c)
+            differing +=
+                std::abs(gpuView.texel(i % 256, i / 256, c) - cpuView[std::size_t(i * 4 + c)]) > 1e-5f;
+    EXPECT_EQ(differing, 0);
+    std::size_t green = 0;
+    for (std::size_t i = 1; i < cpuView.size(); i += 4) green += cpuView[i] == 1.0f ? 1 : 0;
+    EXPECT_EQ(green, expectedList.size());  // one green texel per live slot
+
     // The same run again: the same bytes.
     ParticleSystem clocks2(setups, false);
     GpuParticles gpu2 = GpuParticles::create(clocks2);
