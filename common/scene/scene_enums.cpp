@@ -24,7 +24,8 @@ std::span<const EnumName<MotionType>> enumNames(MotionType) {
 }
 
 std::span<const EnumName<EmitterKind>> enumNames(EmitterKind) {
-    static constexpr EnumName<EmitterKind> names[] = {{EmitterKind::fire, "fire"}};
+    static constexpr EnumName<EmitterKind> names[] = {
+        {EmitterKind::fire, "fire"}, {EmitterKind::smoke, "smoke"}, {EmitterKind::sparks, "sparks"}};
     return names;
 }
 

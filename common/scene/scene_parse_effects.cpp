@@ -101,6 +101,9 @@ ParticleEmitter parseEmitter(JsonFieldReader& reader, const AssetPathReader& ass
     emitter.startColor = readParticleColor(reader, "startColor", emitter.startColor);
     emitter.endColor = readParticleColor(reader, "endColor", emitter.endColor);
     emitter.riseSpeed = reader.number("riseSpeed", emitter.riseSpeed, NumberRange::closed(-100.0, 100.0));
+    emitter.spinDegreesPerSecond =
+        reader.number("spin", emitter.spinDegreesPerSecond, NumberRange::closed(-3600.0, 3600.0));
+    emitter.spread = reader.number("spread", emitter.spread, NumberRange::closed(0.0, 100.0));
     emitter.sprite = assets.optional(reader, "sprite");
     emitter.seed = reader.integer("seed", emitter.seed, NumberRange::closed(0, 2147483647.0));
     reader.reportUnknown();

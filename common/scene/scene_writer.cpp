@@ -171,6 +171,8 @@ Json emitterJson(const ParticleEmitter& emitter) {
     json["startColor"] = vector(emitter.startColor);
     json["endColor"] = vector(emitter.endColor);
     json["riseSpeed"] = number(emitter.riseSpeed);
+    json["spin"] = number(emitter.spinDegreesPerSecond);
+    json["spread"] = number(emitter.spread);
     if (!emitter.sprite.empty()) json["sprite"] = emitter.sprite.path;
     json["seed"] = emitter.seed;
     return json;

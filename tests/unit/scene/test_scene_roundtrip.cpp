@@ -109,6 +109,8 @@ TEST(SceneRoundTrip, EveryFieldIsRead) {
     EXPECT_EQ(fire.startColor, glm::vec4(6, 2.5f, 0.5f, 0.9f));
     EXPECT_EQ(fire.endColor, glm::vec4(0.8f, 0.1f, 0.02f, 0.1f));
     EXPECT_EQ(fire.riseSpeed, 1.2f);
+    EXPECT_EQ(fire.spinDegreesPerSecond, 120.0f);
+    EXPECT_EQ(fire.spread, 0.25f);
     EXPECT_EQ(fire.sprite.path, "assets/fire.png");
     EXPECT_EQ(fire.seed, 42);
 

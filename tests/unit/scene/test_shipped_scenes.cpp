@@ -28,6 +28,7 @@ using fx::SceneFeature;
 const std::set<std::string> kGeneratedAssets = {
     "models/character.gltf",        // skinned, with an animation clip named "walk"
     "textures/ground_checker.png",  // ground texture
+    "textures/fire_sprite.png",     // the fire particle's alpha shape (lesson 07)
 };
 
 struct ShippedScene {
@@ -42,6 +43,7 @@ const ShippedScene kShippedScenes[] = {
     {"04_colour_matrix.json", {}},
     {"05_radial_blur.json", {}},
     {"06_bloom.json", {}},
+    {"07_fire_emitter.json", {"textures/fire_sprite.png"}},
 };
 
 fs::path scenesDir() {
@@ -214,3 +216,25 @@ TEST(ShippedScenes, DefaultAssetRootIsRes) {
 }
 
 }  // namespace
+
+TEST(ShippedScenes, FireEmitterHasTheChaptersFireSmokeAndSparks) {
+    fx::Scene scene = loadShipped("07_fire_emitter.json");
+    EXPECT_TRUE(fx::features(scene).has(SceneFeature::particles));
+    EXPECT_TRUE(fx::features(scene).has(SceneFeature::bloom));
+    ASSERT_EQ(scene.emitters.size(), 3u);
+    // The Shader effects chapter's fire: one every 0.2 s, 1 s of life, 0.5 m growing to 2 m, 2 m/s up,
+    // emission (3, 0.8, 0.2) fading from alpha 1 to 0, at (-2, 0.7, -4).
+    const fx::ParticleEmitter& fire = scene.emitters[0];
+    EXPECT_EQ(fire.kind, fx::EmitterKind::fire);
+    EXPECT_EQ(fire.position, glm::vec3(-2.0f, 0.7f, -4.0f));
+    EXPECT_EQ(fire.ratePerSecond, 5.0f);
+    EXPECT_EQ(fire.lifetimeSeconds, 1.0f);
+    EXPECT_EQ(fire.startSize, 0.5f);
+    EXPECT_EQ(fire.endSize, 2.0f);
+    EXPECT_EQ(fire.riseSpeed, 2.0f);
+    EXPECT_EQ(fire.startColor, glm::vec4(3.0f, 0.8f, 0.2f, 1.0f));
+    EXPECT_EQ(fire.endColor, glm::vec4(3.0f, 0.8f, 0.2f, 0.0f));
+    EXPECT_EQ(fire.sprite.path, "../textures/fire_sprite.png");
+    EXPECT_EQ(scene.emitters[1].kind, fx::EmitterKind::smoke);
+    EXPECT_EQ(scene.emitters[2].kind, fx::EmitterKind::sparks);
+}

@@ -1,0 +1,126 @@
+#include "effects/particles/particle_renderer.hpp"
+
+#include <algorithm>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "base/log.hpp"
+#include "image/png_file.hpp"
+
+namespace fx {
+namespace {
+
+// Locations in particle.vert and particle.frag.
+constexpr GLint kView = 0, kProjection = 1, kSource = 2, kOneOriginAge = 3, kOneVelocityLife = 4,
+                kOneExtra = 5, kPremultiplied = 10, kHdrMax = 11, kSoftDistance = 12, kNearFar = 13,
+                kDepthTexelsPerPixel = 14;
+constexpr int kFromBuffer = 0, kFromLiveList = 1, kFromUniforms = 2;
+
+// A buffer of at least `bytes`, replaced (with `label`) when too small.
+void ensureBuffer(gl::BufferName& buffer, std::uint64_t& capacity, std::uint64_t bytes, const char* label) {
+    bytes = std::max<std::uint64_t>(bytes, 64);
+    if (buffer && capacity >= bytes) return;
+    capacity = std::max(bytes, capacity * 2);
+    buffer = gl::createBuffer(label);
+    glNamedBufferStorage(buffer.name(), GLsizeiptr(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+}  // namespace
+
+ParticleRenderer ParticleRenderer::create() {
+    ParticleRenderer r;
+    r.program_ = gl::ReloadableProgram(
+        {"effects/particles/particle.vert", "effects/particles/particle.frag", {}, {}, "particles: sprites"});
+    r.noVertices_ = gl::createVertexArray("particles.no_vertices");
+    r.dot_ = gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite");
+    const unsigned char white[4] = {255, 255, 255, 255};
+    glTextureSubImage2D(r.dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    return r;
+}
+
+Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
+    auto image = readPng(path);
+    if (!image) return Error{cat("particle sprite ", path.string(), ": ", image.error())};
+    // Only alpha is used, so a linear format; mipmaps for the small far particles.
+    sprite_ = gl::Texture::create2D(TextureFormat::RGBA8, image->width, image->height,
+                                    fullMipChainLength(image->width, image->height), "particles.sprite");
+    glTextureSubImage2D(sprite_.name(), 0, 0, 0, image->width, image->height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image->texels.data());
+    glGenerateTextureMipmap(sprite_.name());
+    glTextureParameteri(sprite_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(sprite_.name(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(sprite_.name(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return Status::success();
+}
+
+void ParticleRenderer::setEmitters(const std::vector<GpuEmitter>& emitters) {
+    std::size_t bytes = std::max<std::size_t>(emitters.size(), 1) * sizeof(GpuEmitter);
+    if (!emitters_ || emitterBytes_ < bytes) {
+        emitters_ = gl::createBuffer("particles.emitters");
+        glNamedBufferStorage(emitters_.name(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        emitterBytes_ = bytes;
+    }
+    if (!emitters.empty())
+        glNamedBufferSubData(emitters_.name(), 0, GLsizeiptr(emitters.size() * sizeof(GpuEmitter)),
+                             emitters.data());
+}
+
+void ParticleRenderer::bind(const ParticleDrawSettings& s, int source) const {
+    const GLuint p = program_.name();
+    glProgramUniformMatrix4fv(p, kView, 1, GL_FALSE, glm::value_ptr(s.view));
+    glProgramUniformMatrix4fv(p, kProjection, 1, GL_FALSE, glm::value_ptr(s.projection));
+    glProgramUniform1i(p, kSource, source);
+    glProgramUniform1i(p, kPremultiplied, s.premultiplied ? 1 : 0);
+    glProgramUniform1f(p, kHdrMax, s.hdrMax);
+    const bool soft = s.softDistance > 0.0f && s.sceneDepth != 0;
+    glProgramUniform1f(p, kSoftDistance, soft ? s.softDistance : 0.0f);
+    glProgramUniform2f(p, kNearFar, s.nearPlane, s.farPlane);
+    glProgramUniform2f(p, kDepthTexelsPerPixel, s.depthTexelsPerPixel.x, s.depthTexelsPerPixel.y);
+    glUseProgram(p);
+    glBindVertexArray(noVertices_.name());
+    const GLuint textures[2] = {sprite_ ? sprite_.name() : dot_.name(), soft ? s.sceneDepth : dot_.name()};
+    glBindTextures(0, 2, textures);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, emitters_.name());
+}
+
+int ParticleRenderer::drawObjects(const std::vector<GpuParticle>& particles,
+                                  const ParticleDrawSettings& s) const {
+    if (particles.empty() || !usable() || !emitters_) return 0;
+    bind(s, kFromUniforms);
+    const GLuint p = program_.name();
+    // The chapter's way: every particle is an object with its own uniforms and its own draw call.
+    for (const GpuParticle& particle : particles) {
+        glProgramUniform4fv(p, kOneOriginAge, 1, glm::value_ptr(particle.originAge));
+        glProgramUniform4fv(p, kOneVelocityLife, 1, glm::value_ptr(particle.velocityLife));
+        glProgramUniform4fv(p, kOneExtra, 1, glm::value_ptr(particle.extra));
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    }
+    glBindVertexArray(0);
+    return int(particles.size());
+}
+
+int ParticleRenderer::drawInstanced(const std::vector<GpuParticle>& particles,
+                                    const ParticleDrawSettings& s) {
+    if (particles.empty() || !usable() || !emitters_) return 0;
+    const std::uint64_t bytes = particles.size() * sizeof(GpuParticle);
+    ensureBuffer(instances_, instanceBytes_, bytes, "particles.instances");
+    glNamedBufferSubData(instances_.name(), 0, GLsizeiptr(bytes), particles.data());
+    bind(s, kFromBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, instances_.name());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(particles.size()));
+    glBindVertexArray(0);
+    return 1;
+}
+
+int ParticleRenderer::drawIndirect(const GpuParticles& pool, const ParticleDrawSettings& s) const {
+    if (!pool.usable() || !usable() || !emitters_) return 0;
+    bind(s, kFromLiveList);
+    pool.bindForDraw();
+    // The instance count is whatever compact.comp wrote: 0 draws nothing, and is no error.
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindVertexArray(0);
+    return 1;
+}
+
+}  // namespace fx

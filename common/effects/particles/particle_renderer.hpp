@@ -1,0 +1,72 @@
+#pragma once
+// Drawing particles as camera-facing sprites (shaders/effects/particles/particle.vert and .frag), three
+// ways, the three paths of lesson 07:
+//   drawObjects:   one draw and one set of uniforms per particle (the Shader effects chapter: every
+//                  particle a game object with a Billboard);
+//   drawInstanced: the live particles uploaded to one buffer, one instanced draw;
+//   drawIndirect:  the GPU pool's live list and instance count (gpu_particles.hpp), one indirect draw.
+// The sprite is the scene's particle texture (only its alpha is used); the emitter table is uploaded
+// once a frame to particles.emitters.
+#include <filesystem>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "base/result.hpp"
+#include "effects/particles/gpu_particles.hpp"
+#include "effects/particles/particle_layout.hpp"
+#include "gl/object.hpp"
+#include "gl/program.hpp"
+#include "gl/texture.hpp"
+
+namespace fx {
+
+struct ParticleDrawSettings {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    bool premultiplied = false;  // false: the chapter's straight alpha
+    float hdrMax = 4096.0f;      // emission clamp (kSceneHdrMax)
+    // Soft particles: <= 0 off. On, the fragment reads `sceneDepth` (never attached to the target).
+    float softDistance = 0.0f;
+    GLuint sceneDepth = 0;
+    float nearPlane = 0.1f, farPlane = 100.0f;
+    glm::vec2 depthTexelsPerPixel{1.0f};
+};
+
+class ParticleRenderer {
+public:
+    ParticleRenderer() = default;  // empty: no GL
+    static ParticleRenderer create();
+
+    bool usable() const { return program_.usable(); }
+    const std::string& error() const { return program_.error(); }
+
+    // The sprite from a PNG file: an error that names the path when it cannot be read.
+    Status loadSprite(const std::filesystem::path& path);
+    bool hasSprite() const { return static_cast<bool>(sprite_); }
+
+    // Uploads the emitter table (every path reads it at binding 1).
+    void setEmitters(const std::vector<GpuEmitter>& emitters);
+    GLuint emitterBuffer() const { return emitters_.name(); }
+
+    // Each returns the number of draw calls it made.
+    int drawObjects(const std::vector<GpuParticle>& particles, const ParticleDrawSettings& s) const;
+    int drawInstanced(const std::vector<GpuParticle>& particles, const ParticleDrawSettings& s);
+    int drawIndirect(const GpuParticles& pool, const ParticleDrawSettings& s) const;
+
+    std::uint64_t instanceBytes() const { return instanceBytes_; }
+
+private:
+    void bind(const ParticleDrawSettings& s, int source) const;
+
+    gl::ReloadableProgram program_;
+    gl::VertexArrayName noVertices_;  // core GL draws need a vertex array; the shader makes the corners
+    gl::Texture sprite_;
+    gl::Texture dot_;  // 1x1 placeholder bound when there is no sprite
+    gl::BufferName emitters_;
+    std::size_t emitterBytes_ = 0;
+    gl::BufferName instances_;
+    std::uint64_t instanceBytes_ = 0;
+};
+
+}  // namespace fx

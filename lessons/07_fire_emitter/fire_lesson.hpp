@@ -1,0 +1,101 @@
+#pragma once
+// Lesson 07: the fire emitter (Shader effects §3.8, hard cases 22 to 25; docs/chapters.md). The
+// chapter's fire (one object and one draw per particle, simulated on the CPU), what it does wrong
+// after a long frame, one instanced draw, the simulation on the GPU with an indirect draw, then what
+// the chapter leaves out: premultiplied alpha, soft particles, off-screen particles, smoke and sparks.
+// Lesson 06's bloom makes the fire glow.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/lesson.hpp"
+#include "effects/bloom/bloom_chain.hpp"
+#include "effects/bloom/bloom_composite.hpp"
+#include "effects/particles/gpu_particles.hpp"
+#include "effects/particles/particle_renderer.hpp"
+#include "effects/particles/particle_system.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+
+namespace lesson07 {
+
+class FireLesson final : public fx::Lesson {
+public:
+    fx::LessonInfo info() const override;
+    std::vector<std::string> steps() const override;
+    void declareParams(fx::ParamSet& params) override;
+    fx::Status init(const fx::Scene& scene) override;
+    void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
+    void drawPanel(const fx::FrameInfo& frame) override;
+    void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
+    int benchStep() const override { return Beyond; }
+    std::string benchTexture() const override { return "scene.color"; }
+
+    enum Step { Objects, Hitch, Instanced, Gpu, Beyond };
+    enum class Path { objects, instanced, gpu };
+
+    // What a step simulates and how: the emitters (with their rules), the path and the blend.
+    struct Setup {
+        std::vector<fx::EmitterSetup> emitters;
+        Path path = Path::objects;
+        bool sort = false;           // back to front before drawing (the CPU paths)
+        int sortedFrom = 0;          // sort only the particles of emitters from this index on
+        bool premultiplied = false;  // step 5: one blend for fire and smoke
+        bool operator==(const Setup&) const = default;
+    };
+    Setup setupFor(int step) const;
+    // The 0.5 s long frame of step 2 lands on this frame (the third of a run, then every 120th).
+    bool hitchOn(const fx::FrameInfo& frame) const;
+
+private:
+    void configure(const Setup& setup);
+    void restart();            // the steady flame again, from the same state (prewarmed)
+    void simulate(double dt);  // the "particles.simulate" pass body
+    int draw(const fx::ParticleDrawSettings& settings);  // the draw pass bodies: draw calls made
+    bool anyEmitterInView(const fx::FrameInfo& frame) const;
+    void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
+
+    // Parameters.
+    int path_ = 0;            // 0: the step's own path; else objects, instanced, gpu
+    int count_ = 0;           // particles alive in the fire (0: the step's own)
+    float spin_ = 0.0f;       // deg/s added to the fire (the chapter's exercise: 120)
+    float hitch_ = 0.5f;      // step 2: the long frame (s)
+    bool sort_ = true;        // steps 2 (fixed side) and 3: back to front
+    float soft_ = 0.3f;       // step 5: soft-fade distance (m)
+    int offscreen_ = 1;       // step 5: particles at full, half or quarter resolution
+    int pool_ = 0;            // slots per emitter (0: from rate x lifetime)
+    int workload_ = 0;        // the bench: a path and a count together (0: the parameters above)
+    float threshold_ = 1.0f;  // the chapter's bloom (lesson 06, step 3)
+    float intensity_ = 2.0f;
+
+    const fx::Scene* scene_ = nullptr;
+    fx::SceneMeshes meshes_;
+    fx::HdrScenePass scenePass_;
+    fx::ParticleRenderer renderer_;
+    fx::FullscreenPass composite_;
+    fx::BloomChain chain_;
+    fx::BloomComposite bloom_;
+    fx::OutputTransformPass present_;
+    fx::PassGroup particleGroup_ = fx::groupNeeding(fx::SceneFeature::particles);
+    fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
+
+    // The simulation, rebuilt when the step's setup changes.
+    Setup setup_;
+    bool configured_ = false;
+    fx::ParticleSystem system_;
+    fx::GpuParticles gpu_;
+    double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm
+    std::vector<fx::GpuParticle> visible_;  // CPU paths: the live particles in draw order
+    double pendingDt_ = 0;                  // this frame's step, set in buildFrame for the pass body
+    bool hitchNow_ = false;
+    fx::TextureHandle poolTexture_;  // this frame's particles.pool (the pool view pass writes it)
+    double simulateMs_ = 0, drawCpuMs_ = 0;
+    int drawCalls_ = 0;
+    int negativeAlpha_ = 0;  // step 2: particles drawn with alpha below 0 (the chapter's side)
+    int outOfOrder_ = 0;     // pairs drawn front before back (transparent order)
+    fx::GpuParticleStats gpuStats_;
+};
+
+}  // namespace lesson07

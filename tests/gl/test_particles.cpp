@@ -1,0 +1,449 @@
+// Particles (lesson 07, Shader effects §3.8 and hard cases 22 to 25): the CPU and GPU simulations and
+// the sprite draw, read back as floats. Long frames (dt = 0, dt = 1 s), an empty and a full pool, a
+// particle at the camera and at the near plane, additive light past a half float's range, the soft
+// fade's distance 0 and its linearised depth, and a sprite that is not on disk.
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "effects/particles/gpu_particles.hpp"
+#include "effects/particles/particle_renderer.hpp"
+#include "effects/particles/particle_system.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "gl/framebuffer.hpp"
+#include "gl/readback.hpp"
+#include "gl/texture.hpp"
+#include "gl_test.hpp"
+
+using namespace fx;
+
+namespace {
+
+// The chapter's FireParticle and FireEmitter (Shader effects §3.8) as a scene emitter.
+ParticleEmitter chapterFire() {
+    ParticleEmitter e;
+    e.position = {0.0f, 0.0f, -4.0f};
+    e.ratePerSecond = 5.0f;
+    e.lifetimeSeconds = 1.0f;
+    e.startSize = 0.5f;
+    e.endSize = 2.0f;
+    e.startColor = {3.0f, 0.8f, 0.2f, 1.0f};
+    e.endColor = {3.0f, 0.8f, 0.2f, 0.0f};
+    e.riseSpeed = 2.0f;
+    e.seed = 7;
+    return e;
+}
+
+EmitterSetup setupOf(ParticleEmitter e, bool chapter, int capacity = 0) {
+    return {e, {chapter, chapter}, capacity, 1.0f, false};
+}
+
+// Alpha the draw would give a particle (the shader's particleLook, on the CPU).
+float drawnAlpha(const GpuParticle& p, const GpuEmitter& e) {
+    float t = p.originAge.w / p.velocityLife.w;
+    if (e.motion.y == 0.0f) t = std::clamp(t, 0.0f, 1.0f);
+    float a = e.startColor.a + (e.endColor.a - e.startColor.a) * t;
+    return e.motion.y == 0.0f ? std::clamp(a, 0.0f, 1.0f) : a;
+}
+
+// A colour target (and depth) to draw particles into, cleared to `background`.
+struct Target {
+    gl::Texture color, depth;
+    gl::Framebuffer fbo;
+    int width, height;
+    Target(int w, int h, TextureFormat format, glm::vec4 background) : width(w), height(h) {
+        color = gl::Texture::create2D(format, w, h, 1, "test particles.target");
+        depth = gl::Texture::create2D(TextureFormat::Depth32F, w, h, 1, "test particles.depth");
+        fbo = gl::Framebuffer("test particles fbo");
+        fbo.attachColor(0, color);
+        fbo.attachDepth(depth);
+        glClearNamedFramebufferfv(fbo.name(), GL_COLOR, 0, &background.x);
+        float one = 1.0f;
+        glClearNamedFramebufferfv(fbo.name(), GL_DEPTH, 0, &one);
+    }
+    void bind(bool premultiplied) const {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+        glViewport(0, 0, width, height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        if (premultiplied)
+            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        else
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    void unbind() const {
+        glDisable(GL_BLEND);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    FloatImage read() const { return gl::readTexture(color); }
+};
+
+ParticleDrawSettings camera(int width, int height) {
+    ParticleDrawSettings s;
+    s.view = glm::mat4(1.0f);  // at the origin, looking down -z
+    s.projection = glm::perspective(glm::radians(50.0f), float(width) / float(height), 0.1f, 100.0f);
+    return s;
+}
+
+struct Extremes {
+    float min = INFINITY, max = -INFINITY;
+    bool finite = true;
+};
+Extremes extremes(const FloatImage& image, int channels = 3) {
+    Extremes e;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                float v = image.texel(x, y, c);
+                if (!std::isfinite(v)) e.finite = false;
+                e.min = std::min(e.min, v);
+                e.max = std::max(e.max, v);
+            }
+    return e;
+}
+
+class Particles : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        renderer = ParticleRenderer::create();
+        ASSERT_TRUE(renderer.usable()) << renderer.error();
+    }
+    ParticleRenderer renderer;
+};
+
+// --- The CPU simulation ---
+
+TEST(ParticleClock, ZeroDtSpawnsNothingAndAgesNothing) {
+    ParticleSystem system({setupOf(chapterFire(), false)});
+    system.update(0.5);
+    std::vector<GpuParticle> before, after;
+    system.collect(before);
+    ASSERT_GT(before.size(), 0u);
+    system.update(0.0);
+    system.collect(after);
+    ASSERT_EQ(before.size(), after.size());
+    for (std::size_t i = 0; i < before.size(); ++i) EXPECT_EQ(before[i].originAge.w, after[i].originAge.w);
+    EXPECT_EQ(system.spawnedLastFrame(), 0u);
+    // NaN and negative frames do not run the clock backwards either.
+    system.update(std::nan(""));
+    system.update(-1.0);
+    system.collect(after);
+    EXPECT_EQ(before.size(), after.size());
+}
+
+TEST(ParticleClock, OneSecondHitchFixedRulesNoNegativeAlphaAndABoundedBurst) {
+    ParticleSystem system({setupOf(chapterFire(), false)});
+    for (int i = 0; i < 60; ++i) system.update(1.0 / 60.0);
+    system.update(1.0);  // the hitch
+    // Every spawn owed in the last second, but no more than can be alive: 1 s / 0.2 s + 1.
+    EXPECT_LE(system.spawnedLastFrame(), 6u);
+    EXPECT_GE(system.spawnedLastFrame(), 4u);
+    EXPECT_LE(system.liveCount(), 6u);
+    std::vector<GpuParticle> live;
+    system.collect(live);
+    for (const GpuParticle& p : live) {
+        EXPECT_LT(p.originAge.w, p.velocityLife.w) << "a dead particle would be drawn";
+        EXPECT_GE(drawnAlpha(p, system.emitters()[0]), 0.0f);
+    }
+    // The frames after the hitch spawn at the steady rate: no backlog.
+    std::uint64_t after = 0;
+    for (int i = 0; i < 12; ++i) {
+        system.update(1.0 / 60.0);
+        after += system.spawnedLastFrame();
+    }
+    EXPECT_LE(after, 2u);
+    // A very long frame (a day) is bounded the same way.
+    system.update(86400.0);
+    EXPECT_LE(system.spawnedLastFrame(), 6u);
+    system.update(1.0e300);  // and an absurd one: no overflow converting what is owed to an integer
+    EXPECT_LE(system.spawnedLastFrame(), 6u);
+    EXPECT_LE(system.liveCount(), 6u);
+}
+
+TEST(ParticleClock, OneSecondHitchChapterRulesShowTheBugs) {
+    ParticleSystem system({setupOf(chapterFire(), true)});
+    for (int i = 0; i < 60; ++i) system.update(1.0 / 60.0);
+    system.update(0.5);
+    std::vector<GpuParticle> live;
+    system.collect(live);
+    float lowest = 1.0f;
+    for (const GpuParticle& p : live) lowest = std::min(lowest, drawnAlpha(p, system.emitters()[0]));
+    EXPECT_LT(lowest, -0.2f) << "the chapter draws a particle past its life with alpha below 0";
+    // The backlog bursts out one particle a frame for the following frames.
+    int spawningFrames = 0;
+    for (int i = 0; i < 4; ++i) {
+        system.update(1.0 / 60.0);
+        spawningFrames += system.spawnedLastFrame() == 1 ? 1 : 0;
+    }
+    EXPECT_GE(spawningFrames, 2);
+}
+
+TEST(ParticleClock, FullPoolReplacesTheOldestAndCounts) {
+    ParticleEmitter e = chapterFire();
+    e.ratePerSecond = 100.0f;
+    ParticleSystem system({setupOf(e, false, 8)});
+    for (int i = 0; i < 30; ++i) system.update(1.0 / 60.0);
+    EXPECT_EQ(system.liveCount(), 8u);
+    EXPECT_GT(system.replacedCount(), 0u);
+    // The survivors are the newest: ages below 8 spawn periods plus a frame.
+    std::vector<GpuParticle> live;
+    system.collect(live);
+    for (const GpuParticle& p : live) EXPECT_LT(p.originAge.w, 8.0f / 100.0f + 1.0f / 60.0f);
+}
+
+// --- The GPU simulation ---
+
+TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
+    ParticleEmitter e = chapterFire();
+    e.spread = 0.7f;  // the seeded hash decides velocities and angles
+    e.spinDegreesPerSecond = 120.0f;
+    ParticleEmitter second = chapterFire();
+    second.ratePerSecond = 40.0f;
+    second.seed = 99;
+    second.position = {1, 0, -5};
+    std::vector<EmitterSetup> setups = {setupOf(e, false), setupOf(second, false, 16)};
+    ParticleSystem cpu(setups);
+    ParticleSystem clocks(setups, false);
+    renderer.setEmitters(clocks.emitters());
+    GpuParticles gpu = GpuParticles::create(clocks);
+    ASSERT_TRUE(gpu.usable());
+    const double steps[] = {1.0 / 60, 1.0 / 60, 0.0, 0.5, 1.0 / 60, 1.0, 1.0 / 30, 1.0 / 60};
+    for (double dt : steps) {
+        cpu.update(dt);
+        clocks.update(dt);
+        renderer.setEmitters(clocks.emitters());
+        gpu.simulate(clocks, dt, renderer.emitterBuffer());
+    }
+    GpuParticleStats stats = gpu.readStats();
+    EXPECT_EQ(stats.live, cpu.liveCount());
+    EXPECT_EQ(stats.replaced, cpu.replacedCount());
+    EXPECT_GT(stats.replaced, 0u);  // the second emitter's 16 slots overflow
+    EXPECT_EQ(cpu.droppedCount(), clocks.droppedCount());
+    EXPECT_GT(clocks.droppedCount(), 0u);  // its 0.5 s and 1 s frames owe more than 16 spawns at once
+    std::vector<GpuParticle> pool = gpu.readPool();
+    // Slot by slot, the GPU's pool against the CPU's; the draw list holds the live slots in order.
+    ASSERT_EQ(pool.size(), cpu.slots().size());
+    std::vector<std::uint32_t> expectedList;
+    for (std::size_t i = 0; i < pool.size(); ++i) {
+        const GpuParticle &g = pool[i], &c = cpu.slots()[i];
+        ASSERT_EQ(g.extra.z, c.extra.z) << "slot " << i;
+        if (c.extra.z == 0.0f) continue;
+        expectedList.push_back(std::uint32_t(i));
+        for (int k = 0; k < 4; ++k) {
+            EXPECT_NEAR(c.originAge[k], g.originAge[k], 1e-5f) << "slot " << i;
+            EXPECT_NEAR(c.velocityLife[k], g.velocityLife[k], 1e-5f) << "slot " << i;
+            EXPECT_NEAR(c.extra[k], g.extra[k], 1e-5f) << "slot " << i;
+        }
+    }
+    EXPECT_EQ(gpu.readLiveList(), expectedList);
+    // The indirect draw's command: four vertices per particle, exactly the live ones.
+    EXPECT_EQ(gpu.readDrawCommand(),
+              (std::array<std::uint32_t, 4>{4, std::uint32_t(expectedList.size()), 0, 0}));
+    // The inspector's picture of the pool (particles.pool) is the same from either side.
+    const int rows = int((cpu.capacity() + 255) / 256);
+    gl::Texture view = gl::Texture::create2D(TextureFormat::RGBA32F, 256, rows, 1, "test particles.pool");
+    gpu.drawPoolView(view.name(), int(clocks.emitters().size()));
+    FloatImage gpuView = gl::readTexture(view);
+    std::vector<float> cpuView = cpu.poolViewTexels(rows);
+    int differing = 0;
+    for (int i = 0; i < 256 * rows; ++i)
+        for (int c = 0; c < 4; ++c)
+            differing +=
+                std::abs(gpuView.texel(i % 256, i / 256, c) - cpuView[std::size_t(i * 4 + c)]) > 1e-5f;
+    EXPECT_EQ(differing, 0);
+    std::size_t green = 0;
+    for (std::size_t i = 1; i < cpuView.size(); i += 4) green += cpuView[i] == 1.0f ? 1 : 0;
+    EXPECT_EQ(green, expectedList.size());  // one green texel per live slot
+
+    // The same run again: the same bytes.
+    ParticleSystem clocks2(setups, false);
+    GpuParticles gpu2 = GpuParticles::create(clocks2);
+    for (double dt : steps) {
+        clocks2.update(dt);
+        renderer.setEmitters(clocks2.emitters());
+        gpu2.simulate(clocks2, dt, renderer.emitterBuffer());
+    }
+    std::vector<GpuParticle> pool2 = gpu2.readPool();
+    EXPECT_EQ(0, std::memcmp(pool.data(), pool2.data(), pool.size() * sizeof(GpuParticle)));
+}
+
+TEST_F(Particles, ZeroLiveParticlesDrawNothingWithoutError) {
+    ParticleSystem clocks({setupOf(chapterFire(), false)}, false);
+    renderer.setEmitters(clocks.emitters());
+    GpuParticles gpu = GpuParticles::create(clocks);
+    Target target(32, 32, TextureFormat::RGBA16F, {0.25f, 0.5f, 0.75f, 1.0f});
+    target.bind(false);
+    EXPECT_EQ(renderer.drawIndirect(gpu, camera(32, 32)), 1);  // before any simulation
+    clocks.update(0.0);
+    gpu.simulate(clocks, 0.0, renderer.emitterBuffer());  // dt = 0: nothing spawns
+    target.bind(false);
+    EXPECT_EQ(renderer.drawIndirect(gpu, camera(32, 32)), 1);
+    target.unbind();
+    EXPECT_EQ(gpu.readStats().live, 0u);
+    EXPECT_EQ(gpu.readDrawCommand()[1], 0u);
+    Extremes e = extremes(target.read());
+    EXPECT_EQ(e.min, 0.25f);
+    EXPECT_EQ(e.max, 0.75f);
+}
+
+TEST_F(Particles, FullGpuPoolReplacesTheOldestAndDrawsTheCapacity) {
+    ParticleEmitter e = chapterFire();
+    e.ratePerSecond = 200.0f;
+    ParticleSystem clocks({setupOf(e, false, 10)}, false);
+    GpuParticles gpu = GpuParticles::create(clocks);
+    for (int i = 0; i < 20; ++i) {
+        clocks.update(1.0 / 60.0);
+        renderer.setEmitters(clocks.emitters());
+        gpu.simulate(clocks, 1.0 / 60.0, renderer.emitterBuffer());
+    }
+    GpuParticleStats stats = gpu.readStats();
+    EXPECT_EQ(stats.live, 10u);
+    EXPECT_EQ(gpu.readDrawCommand()[1], 10u);  // the draw draws the capacity, no more
+    EXPECT_GT(stats.replaced, 20u);
+}
+
+// --- Drawing ---
+
+TEST_F(Particles, ChapterAlphaSubtractsAfterAHitchAndTheFixDoesNot) {
+    // One particle half a second past its life: the chapter draws it with alpha -0.5.
+    ParticleEmitter e = chapterFire();
+    e.position = {0, 0, -4};
+    ParticleSystem chapter({setupOf(e, true)});
+    ParticleSystem fixed({setupOf(e, false)});
+    GpuParticle p = ParticleSystem::spawnParticle(e, 0, 0, 1.5f);
+    p.originAge = glm::vec4(0, -3.0f, -4, 1.5f);  // rises back to (0, 0, -4) at age 1.5
+    auto drawOne = [&](const ParticleSystem& system) {
+        Target target(16, 16, TextureFormat::RGBA16F, {1, 1, 1, 1});
+        renderer.setEmitters(system.emitters());
+        target.bind(false);
+        renderer.drawObjects({p}, camera(16, 16));
+        target.unbind();
+        return extremes(target.read());
+    };
+    Extremes bug = drawOne(chapter), fix = drawOne(fixed);
+    EXPECT_LT(bug.min, 0.5f) << "the chapter's negative alpha should darken the white target";
+    EXPECT_GE(fix.min, 1.0f - 1e-3f);
+    EXPECT_TRUE(bug.finite && fix.finite);
+}
+
+TEST_F(Particles, ParticleAtTheCameraOrNearPlaneIsFiniteAndBounded) {
+    ParticleEmitter e = chapterFire();
+    e.startSize = e.endSize = 100.0f;  // a huge sprite
+    e.startColor = e.endColor = {1, 1, 1, 1};
+    ParticleSystem system({setupOf(e, false)});
+    renderer.setEmitters(system.emitters());
+    const float distances[] = {0.0f, 0.05f, 0.1f, 0.11f, 1.0f};
+    for (float d : distances) {
+        GpuParticle p = ParticleSystem::spawnParticle(e, 0, 0, 0.0f);
+        p.originAge = glm::vec4(0, 0, -d, 0.0f);
+        p.velocityLife = glm::vec4(0, 0, 0, 1.0f);
+        Target target(32, 32, TextureFormat::RGBA16F, {0, 0, 0, 1});
+        target.bind(false);
+        renderer.drawObjects({p}, camera(32, 32));
+        target.unbind();
+        FloatImage image = target.read();
+        EXPECT_TRUE(extremes(image).finite) << "distance " << d;
+        int covered = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) covered += image.texel(x, y, 0) > 0.5f ? 1 : 0;
+        // Half-width at most a quarter of the distance: about half the view's height at 50 degrees.
+        EXPECT_LT(covered, 32 * 32 / 2) << "distance " << d;
+        if (d == 0.0f) {
+            EXPECT_EQ(covered, 0);
+        }
+    }
+}
+
+TEST_F(Particles, AdditiveLightPastAHalfFloatStaysFinite) {
+    // 40 additive layers of 60000 (clamped to 4096 each) sum to 163840 in the 32-bit off-screen
+    // target; the composite clamps before the 16-bit scene target.
+    ParticleEmitter e = chapterFire();
+    e.startColor = e.endColor = {60000, 60000, 60000, 1};
+    ParticleSystem system({setupOf(e, false)});
+    renderer.setEmitters(system.emitters());
+    std::vector<GpuParticle> layers;
+    for (int i = 0; i < 40; ++i) {
+        GpuParticle p = ParticleSystem::spawnParticle(e, 0, std::uint64_t(i), 0.0f);
+        p.originAge = glm::vec4(0, 0, -2, 0);
+        p.velocityLife = glm::vec4(0, 0, 0, 1);
+        layers.push_back(p);
+    }
+    Target offscreen(16, 16, TextureFormat::RGBA32F, {0, 0, 0, 0});
+    ParticleDrawSettings s = camera(16, 16);
+    s.premultiplied = true;
+    offscreen.bind(true);
+    renderer.drawInstanced(layers, s);
+    offscreen.unbind();
+    Extremes sum = extremes(offscreen.read());
+    EXPECT_TRUE(sum.finite);
+    EXPECT_GT(sum.max, 65504.0f) << "the test should exceed a half float";
+
+    Target scene(16, 16, TextureFormat::RGBA16F, {1, 1, 1, 1});
+    FullscreenPass composite("effects/particles/particles_composite.frag", "test particles composite");
+    ASSERT_TRUE(composite.usable()) << composite.error();
+    scene.bind(true);
+    glProgramUniform1f(composite.program(), 0, 4096.0f);
+    composite.draw({offscreen.color.name()});
+    scene.unbind();
+    Extremes out = extremes(scene.read());
+    EXPECT_TRUE(out.finite);
+    EXPECT_LE(out.max, 4096.0f + 1.0f);
+    EXPECT_GE(out.max, 4096.0f);
+}
+
+TEST_F(Particles, SoftFadeLinearisesDepthAndGuardsDistanceZero) {
+    // The scene's surface is 5 m away; the particle 1 m in front of it. A 2 m soft distance fades it
+    // to smoothstep(0.5) = 0.5 only if both depths are distances (a raw depth-buffer difference is tiny).
+    ParticleEmitter e = chapterFire();
+    e.startColor = e.endColor = {1, 1, 1, 1};
+    e.startSize = e.endSize = 3.0f;
+    ParticleSystem system({setupOf(e, false)});
+    renderer.setEmitters(system.emitters());
+    GpuParticle p = ParticleSystem::spawnParticle(e, 0, 0, 0.0f);
+    p.originAge = glm::vec4(0, 0, -4, 0);
+    p.velocityLife = glm::vec4(0, 0, 0, 1);
+
+    const float near = 0.1f, far = 100.0f, surface = 5.0f;
+    const float depthValue = (far * (surface - near)) / (surface * (far - near));  // GL's [0, 1] depth
+    gl::Texture depth = gl::Texture::create2D(TextureFormat::Depth32F, 8, 8, 1, "test particles.scene_depth");
+    std::vector<float> texels(64, depthValue);
+    glTextureSubImage2D(depth.name(), 0, 0, 0, 8, 8, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+
+    auto centreAlpha = [&](float soft) {
+        Target target(8, 8, TextureFormat::RGBA32F, {0, 0, 0, 0});
+        ParticleDrawSettings s = camera(8, 8);
+        s.premultiplied = true;
+        s.softDistance = soft;
+        s.sceneDepth = depth.name();
+        s.nearPlane = near;
+        s.farPlane = far;
+        target.bind(true);
+        renderer.drawObjects({p}, s);
+        target.unbind();
+        FloatImage image = target.read();
+        EXPECT_TRUE(extremes(image).finite) << "soft distance " << soft;
+        return image.texel(4, 4, 0);  // premultiplied red = alpha for a white particle
+    };
+    const float unfaded = centreAlpha(0.0f);  // soft fade off: the sprite's own alpha
+    ASSERT_GT(unfaded, 0.5f);
+    EXPECT_NEAR(centreAlpha(2.0f) / unfaded, 0.5f, 0.01f);
+    EXPECT_NEAR(centreAlpha(0.25f) / unfaded, 1.0f, 0.01f);  // 1 m in front, fade over 0.25 m: opaque
+    // Distance 0 (or nearly): guarded, the particle stays finite and is either opaque or gone.
+    float zero = centreAlpha(1e-9f);
+    EXPECT_TRUE(std::isfinite(zero));
+    // Behind the scene's surface: faded out completely (the depth test the fade replaces).
+    p.originAge.z = -6.0f;
+    EXPECT_EQ(centreAlpha(0.5f), 0.0f);
+}
+
+TEST_F(Particles, MissingSpriteNamesThePath) {
+    Status s = renderer.loadSprite("/nonexistent/dir/particle_fire.png");
+    ASSERT_FALSE(s);
+    EXPECT_NE(s.error().find("/nonexistent/dir/particle_fire.png"), std::string::npos) << s.error();
+}
+
+}  // namespace

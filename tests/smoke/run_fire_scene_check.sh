@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Scenes decide what lesson 07 does: without an emitter there is no particle buffer, no dispatch and no
+# particle pass (each listed with the scene's reason, 0 bytes of pool); an emitter outside the view is
+# simulated but not drawn (the pass says why); a rate below 0 and a sprite missing from disk are
+# refused with the field and the path named.
+#   run_fire_scene_check.sh <fxlab-07-fire-emitter> <shipped scene 07_fire_emitter.json> <work dir>
+set -uo pipefail
+exe="$1" shipped="$2" work="$3"
+rm -rf "$work" && mkdir -p "$work"
+status=0
+fail() { echo "FAIL: $*"; status=1; }
+
+edit() {  # edit <out file> <python statements on the dict d>
+  python3 - "$shipped" "$1" "$2" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+json.dump(d, open(sys.argv[2], "w"), indent=2)
+PY
+}
+# The copies live in the work folder; their emitters draw soft dots (no sprite path to resolve),
+# except the one whose sprite is missing on purpose.
+dir="$work"
+tag="scene"
+nosprite='for e in d["emitters"]: e.pop("sprite", None)'
+edit "$dir/.check-$tag-none.json" 'd.pop("emitters")'
+edit "$dir/.check-$tag-behind.json" "$nosprite"'
+for e in d["emitters"]: e["position"] = [-2, 0.7, 30]'
+edit "$dir/.check-$tag-negative.json" "$nosprite"'
+d["emitters"][0]["rate"] = -5'
+edit "$dir/.check-$tag-nosprite.json" 'd["emitters"][0]["sprite"] = "no_such_sprite.png"'
+
+pass_field() {  # pass_field <report> <pass> <field>
+  python3 -c "import json,sys; r=json.load(open(sys.argv[1])); print(next((str(p[sys.argv[3]]) for p in r['passes'] if p['name']==sys.argv[2]), 'absent'))" "$@"
+}
+fact() {  # fact <report> <name>
+  python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['facts'].get(sys.argv[2], 'absent'))" "$@"
+}
+
+for step in 4 5; do
+  "$exe" --headless --size 64x36 --frames 2 --step $step --scene "$dir/.check-$tag-none.json" \
+    --report "$work/none-$step.json" >"$work/none-$step.log" 2>&1 || fail "step $step without emitters exited with an error"
+  for p in particles.simulate $([ $step = 4 ] && echo particles.draw || echo particles.offscreen particles.composite); do
+    [ "$(pass_field "$work/none-$step.json" $p executed)" = "False" ] || fail "step $step: $p ran without an emitter"
+    [ "$(pass_field "$work/none-$step.json" $p reason)" = "scene has no particle emitter" ] ||
+      fail "step $step: $p gives '$(pass_field "$work/none-$step.json" $p reason)'"
+  done
+  [ "$(fact "$work/none-$step.json" poolBytes)" = "0" ] || fail "step $step without emitters: pool bytes not 0"
+done
+
+"$exe" --headless --size 64x36 --frames 2 --step 4 --scene "$dir/.check-$tag-behind.json" \
+  --report "$work/behind.json" >"$work/behind.log" 2>&1 || fail "emitters behind the camera: exited with an error"
+[ "$(pass_field "$work/behind.json" particles.draw reason)" = "every emitter's bounds are outside the view" ] ||
+  fail "emitters behind the camera: particles.draw gives '$(pass_field "$work/behind.json" particles.draw reason)'"
+[ "$(pass_field "$work/behind.json" particles.simulate executed)" = "True" ] || fail "the simulation should keep running"
+
+if "$exe" --headless --size 64x36 --frames 1 --scene "$dir/.check-$tag-negative.json" >"$work/negative.log" 2>&1; then
+  fail "a negative rate was accepted"
+fi
+grep -q 'emitters\[0\].rate' "$work/negative.log" || fail "the negative rate's error does not name emitters[0].rate: $(cat "$work/negative.log")"
+
+if "$exe" --headless --size 64x36 --frames 1 --scene "$dir/.check-$tag-nosprite.json" >"$work/nosprite.log" 2>&1; then
+  fail "a missing sprite was accepted"
+fi
+grep -q 'no_such_sprite.png' "$work/nosprite.log" || fail "the missing sprite's error does not name the path: $(cat "$work/nosprite.log")"
+
+[ "$status" -eq 0 ] && echo "lesson 07: scene checks passed"
+exit "$status"
