@@ -16,6 +16,7 @@
 #include "base/paths.hpp"
 #include "effects/deferred/deferred_lighting.hpp"
 #include "effects/deferred/gbuffer_pass.hpp"
+#include "effects/deferred/output_check.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/deferred/render_to_texture.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -243,13 +244,18 @@ TEST_F(DeferredHardCases, RadiusZeroAddsNothingAndALightInsideTheSurfaceIsBounde
     Scene scene = darkScene();
     std::vector<glm::vec2> codes(kW, octahedralEncode(glm::vec3(0, 1, 0)));
     std::vector<GpuPointLight> pointLights;
-    for (int x = 0; x < kW; ++x)  // radius 0 at every pixel, exactly on the surface
+    for (int x = 0; x < kW; ++x) {  // radius 0 at every pixel, on the surface and 10 cm above it
         pointLights.push_back({glm::vec4(worldAt(scene, x), 0.0f), glm::vec4(1000, 1000, 1000, 0)});
+        pointLights.push_back(
+            {glm::vec4(worldAt(scene, x) + glm::vec3(0, 0.1f, 0), 0.0f), glm::vec4(1000, 1000, 1000, 0)});
+    }
     FloatImage none = light(scene, codes, pointLights);
     ASSERT_FALSE(none.empty());
     for (int x = 0; x < kW; ++x) EXPECT_EQ(texel(none, x), glm::vec3(0)) << x;
 
-    for (GpuPointLight& l : pointLights) l.positionRadius.w = 1.0f;  // now they reach 1 m: d = 0
+    pointLights.resize(kW);
+    for (int x = 0; x < kW; ++x)  // now one light reaching 1 m, on the surface: d = 0
+        pointLights[std::size_t(x)] = {glm::vec4(worldAt(scene, x), 1.0f), glm::vec4(1000, 1000, 1000, 0)};
     FloatImage inside = light(scene, codes, pointLights);
     ASSERT_TRUE(finite(inside));
     for (int x = 0; x < kW; ++x) {
@@ -363,6 +369,11 @@ TEST_F(DeferredHardCases, AFragmentOutputWithoutAnAttachmentIsANamedError) {
                                   "targets"),
               std::string::npos)
         << status.error();
+    // What the MRT and G-buffer passes call when they draw: the same answer, logged by pass name.
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+    EXPECT_FALSE(checkOutputsOnce(mrt.name(), "test pass"));
+    EXPECT_FALSE(checkOutputsOnce(mrt.name(), "test pass"));  // remembered
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::Texture c = gl::Texture::create2D(TextureFormat::RGBA8, 8, 8, 1, "test.c");
     fbo.attachColor(2, c);
     fbo.setDrawBuffers(3);

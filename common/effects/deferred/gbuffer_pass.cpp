@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/output_check.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 
 namespace fx {
@@ -45,6 +46,7 @@ GBufferTargets GBufferPass::declare(FrameGraph& graph, const Scene& scene, const
     Pass& pass = graph.addPass("gbuffer", [prog, &scene, &meshes, seconds, offset](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, offset, ctx.targetSize());
         SceneMeshes::setFrameUniforms(prog->name(), scene, camera);
+        checkOutputsOnce(prog->name(), "gbuffer");
         MeshDrawOptions draw;
         draw.placement = glm::translate(glm::mat4(1.0f), offset);
         meshes.draw(prog->name(), scene, seconds, draw);

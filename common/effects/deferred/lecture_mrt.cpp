@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "effects/deferred/output_check.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "gl/debug_output.hpp"
@@ -45,6 +46,7 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const Scen
         CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
         SceneMeshes::setFrameUniforms(program->name(), scene, camera);
         setLectureLight(program->name());
+        checkOutputsOnce(program->name(), "mrt");
         meshes.draw(program->name(), scene, seconds);
         if (order == MrtOrder::slides) {
             // The slides' step 6, while their framebuffer object is still bound.

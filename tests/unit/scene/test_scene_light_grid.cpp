@@ -80,15 +80,14 @@ TEST(SceneLightGrid, BadGridsAreRefusedWithTheFieldAndTheReason) {
     };
     const Case cases[] = {
         {R"([{"count": [2, 2]}])", "lightGrids[0].center", "required"},
-        {R"([{"center": [0, 1, 0], "count": [0, 2]}])", "lightGrids[0].count", "range"},
+        {R"([{"center": [0, 1, 0], "count": [0, 2]}])", "lightGrids[0].count[0]", "out of range"},
         {R"([{"center": [0, 1, 0], "count": [2.5, 2]}])", "lightGrids[0].count", "whole numbers"},
         {R"([{"center": [0, 1, 0], "count": [64, 32]}])", "lightGrids[0].count", "at most 1024"},
         {R"([{"center": [0, 1, 0], "count": [32, 20]}, {"center": [0, 1, 0], "count": [32, 20]}])",
          "lightGrids[1].count", "1280 lights together"},
-        {R"([{"center": [0, 1, 0], "spacing": [0, 1]}])", "lightGrids[0].spacing", "range"},
+        {R"([{"center": [0, 1, 0], "spacing": [0, 1]}])", "lightGrids[0].spacing[0]", "out of range"},
         {R"([{"center": [0, 1, 0], "radius": 0}])", "lightGrids[0].radius", "range"},
         {R"([{"center": [0, 1, 0], "saturation": 2}])", "lightGrids[0].saturation", "range"},
-        {R"([{"center": [0, 1, 0], "colour": [1, 0, 0]}])", "lightGrids[0].colour", "unknown"},
     };
     for (const Case& c : cases) {
         auto scene = parse(sceneWith(c.grids));
@@ -96,6 +95,11 @@ TEST(SceneLightGrid, BadGridsAreRefusedWithTheFieldAndTheReason) {
         EXPECT_TRUE(contains(scene.error(), std::string(c.path) + ": ")) << scene.error();
         EXPECT_TRUE(contains(scene.error(), c.why)) << scene.error();
     }
+    // An unknown field is a warning with the field's path, as everywhere in a scene file.
+    auto typo = parse(sceneWith(R"([{"center": [0, 1, 0], "colour": [1, 0, 0]}])"));
+    ASSERT_TRUE(typo.ok()) << typo.error();
+    ASSERT_EQ(typo->warnings.size(), 1u);
+    EXPECT_TRUE(contains(typo->warnings[0], "lightGrids[0].colour: unknown field")) << typo->warnings[0];
 }
 
 }  // namespace
@@ -136,8 +140,6 @@ TEST(SceneMirror, BadMirrorsAreRefusedWithTheFieldAndTheReason) {
         {R"([{"primitive": {"shape": "box"}, "mirror": {}}])", "objects[0].mirror", "only a plane primitive"},
         {R"([{"primitive": {"shape": "plane"}, "mirror": {"strength": 1.5}}])", "objects[0].mirror.strength",
          "range"},
-        {R"([{"primitive": {"shape": "plane"}, "mirror": {"strenght": 1}}])", "objects[0].mirror.strenght",
-         "unknown"},
         {R"([{"primitive": {"shape": "plane"}, "mirror": {}}, {"primitive": {"shape": "plane"}, "mirror": {}}])",
          "objects[1].mirror", "one mirror"},
     };
@@ -147,6 +149,11 @@ TEST(SceneMirror, BadMirrorsAreRefusedWithTheFieldAndTheReason) {
         EXPECT_TRUE(contains(scene.error(), std::string(c.path) + ": ")) << scene.error();
         EXPECT_TRUE(contains(scene.error(), c.why)) << scene.error();
     }
+    auto typo = parse(sceneWithObjects(R"([{"primitive": {"shape": "plane"}, "mirror": {"strenght": 1}}])"));
+    ASSERT_TRUE(typo.ok()) << typo.error();
+    ASSERT_EQ(typo->warnings.size(), 1u);
+    EXPECT_TRUE(contains(typo->warnings[0], "objects[0].mirror.strenght: unknown field"))
+        << typo->warnings[0];
 }
 
 }  // namespace

@@ -42,6 +42,7 @@ const ShippedScene kShippedScenes[] = {
     {"04_colour_matrix.json", {}},
     {"05_radial_blur.json", {}},
     {"06_bloom.json", {}},
+    {"10_deferred_shading.json", {}},
 };
 
 fs::path scenesDir() {
@@ -214,3 +215,13 @@ TEST(ShippedScenes, DefaultAssetRootIsRes) {
 }
 
 }  // namespace
+
+TEST(ShippedScenes, DeferredShadingHasAThousandLightsAndOneMirror) {
+    fx::Scene scene = loadShipped("10_deferred_shading.json");
+    fx::SceneFeatures f = fx::features(scene);
+    EXPECT_EQ(f.lights, 1 + 1024);  // the moon and a 32 x 32 grid
+    EXPECT_TRUE(f.has(SceneFeature::manyLights));
+    EXPECT_TRUE(f.has(SceneFeature::shadows));
+    EXPECT_EQ(f.mirrors, 1);
+    EXPECT_EQ(fx::allLights(scene).size(), 1025u);
+}
