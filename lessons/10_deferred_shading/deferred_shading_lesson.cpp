@@ -94,8 +94,9 @@ glm::vec3 DeferredShadingLesson::worldOffsetFor(int step) const {
     return glm::vec3(kOriginOffsets[std::clamp(originOffset_, 0, 2)], 0.0f, 0.0f);
 }
 
-void DeferredShadingLesson::update(const FrameInfo& frame) {
-    // The light list changes only with the parameters: upload it then, not every frame.
+void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
+    // The light list changes only with the parameters: upload it then, not every frame. Called from
+    // buildFrame, so bench frames (which change parameters without an update()) see the new list too.
     glm::vec3 offset = worldOffsetFor(frame.step);
     int count = std::clamp(lightCount_, 1, kMaxGridLights);
     if (offset != uploadedOffset_ || count != uploadedCount_) {
@@ -148,6 +149,7 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
 
 void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const Scene& scene = *scene_;
+    uploadLights(frame);
     TextureHandle shown;
     std::optional<SplitView> split;
     switch (frame.step) {

@@ -28,7 +28,6 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
     void drawPanel(const fx::FrameInfo& frame) override;
@@ -42,6 +41,7 @@ private:
     fx::GBufferLayout layoutFor(int step) const;
     bool culls(int step) const { return step >= ManyLights; }
     glm::vec3 worldOffsetFor(int step) const;
+    void uploadLights(const fx::FrameInfo& frame);
     void declareDeferred(fx::FrameGraph& graph, const fx::FrameInfo& frame, fx::TextureHandle& shown,
                          std::optional<fx::SplitView>& split);
 

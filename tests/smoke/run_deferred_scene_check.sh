@@ -2,7 +2,8 @@
 # Lesson 10: the scene decides. With three point lights and the moon (not "many") the light culling pass is not
 # called for, with the scene's reason, and every light is still lit; without a mirror neither
 # reflection pass runs. A camera in the mirror's plane (edge-on) and the sizes the smoke test does not
-# cover (63x63, 1279x719) run with no GL error and no NaN or infinity in any texture.
+# cover (63x63, 1279x719) run with no GL error and no NaN or infinity in any texture. And the bench's
+# light count reaches the picture.
 #   run_deferred_scene_check.sh <fxlab-10-deferred-shading> <shipped scene 10_deferred_shading.json> <work dir>
 set -uo pipefail
 exe="$1" shipped="$2" work="$3"
@@ -56,5 +57,14 @@ for step in 1 2 3 4 5 6 7; do
   run "big-$step" 1 --step "$step" --size 1279x719 --param light_count=16 --capture "$work/big-$step"
   check "$work/big-$step.json" 'r["glErrors"] == 0 and finite'
 done
+# The bench changes the light count between frames without an update(): one light must give another
+# picture than the reference's 1024 (the list is uploaded where the frame is built).
+"$exe" --bench --size 64x36 --bench-frames 1 --bench-values 1 --knob light_count --bench-out "$work/bench" \
+  >"$work/bench.log" 2>&1 || fail "the light_count bench exited with an error: $(tail -5 "$work/bench.log")"
+# Columns: 5 knob, 6 value, 12 RMSE.
+awk -F, 'NR > 1 { gsub(/"/, "", $6) } NR > 1 && $5 == "light_count" && $6 == "1" { found = 1; if ($12 + 0 <= 0) bad = 1 }
+         END { exit (found && !bad) ? 0 : 1 }' "$work/bench/bench.csv" ||
+  fail "one light gives the reference picture in the bench: $(cat "$work/bench/bench.csv")"
+
 [ "$status" -eq 0 ] && echo "lesson 10 scene and size checks passed"
 exit "$status"
