@@ -4,6 +4,7 @@
 // evaluation of the same formula; the octahedral code; the position error of the fat and compact
 // layouts 1,000 and 10,000 m from the origin; and framebuffers that would lose writes silently.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "base/paths.hpp"
 #include "effects/deferred/deferred_lighting.hpp"
 #include "effects/deferred/gbuffer_pass.hpp"
+#include "effects/deferred/lecture_mrt.hpp"
 #include "effects/deferred/output_check.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/deferred/render_to_texture.hpp"
@@ -398,4 +400,106 @@ TEST_F(DeferredHardCases, TheRenderToTextureFramebuffersSayWhatIsAttached) {
               "colour 0: texture rtt.color RGBA8 512x512; depth: renderbuffer GL_DEPTH_COMPONENT24 512x512");
     EXPECT_EQ(rtt.attachmentsText(RttDepth::texture),
               "colour 0: texture rtt.color RGBA8 512x512; depth: texture rtt.depth Depth32F 512x512");
+}
+
+namespace {
+
+// Imports an RGBA float image as a texture of `format` named `name`.
+struct ImportedImage {
+    gl::Texture texture;
+    TextureHandle import(FrameGraph& graph, const char* name) const {
+        return graph.importTexture(name, texture.spec(), texture.name());
+    }
+};
+ImportedImage upload(const FloatImage& image, TextureFormat format, const char* label) {
+    ImportedImage out{gl::Texture::create2D(format, image.width, image.height, 1, label)};
+    glTextureSubImage2D(out.texture.name(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,
+                        image.texels.data());
+    return out;
+}
+
+}  // namespace
+
+// The slides' sharpening kernel on the diffuse term: one lit texel on black gives 5 at the texel and -1
+// at its four neighbours; the float target keeps both, the RGBA8 target clips them to 1 and 0. And the
+// sky is added once where no surface is (not three times, as a glClear of every target would).
+TEST_F(DeferredHardCases, SharpeningReachesItsRangeInFloatAndClipsInEightBits) {
+    const int w = 5, h = 5;
+    FloatImage diffuse = test::makeImage(w, h, [](int x, int y) {
+        float v = (x == 2 && y == 2) ? 1.0f : 0.0f;
+        return std::array<float, 4>{v, v, v, 0.0f};
+    });
+    FloatImage zero = test::makeImage(w, h, [](int, int) { return std::array<float, 4>{0, 0, 0, 0}; });
+    // Ambient alpha 1 (a surface) everywhere but the corner (0, 0): the sky shows there.
+    FloatImage ambient = test::makeImage(w, h, [](int x, int y) {
+        return std::array<float, 4>{0, 0, 0, (x == 0 && y == 0) ? 0.0f : 1.0f};
+    });
+    ImportedImage d = upload(diffuse, TextureFormat::RGBA8, "test.diffuse");
+    ImportedImage s = upload(zero, TextureFormat::RGBA8, "test.specular");
+    ImportedImage a = upload(ambient, TextureFormat::RGBA8, "test.ambient");
+    Scene scene;
+    scene.background = glm::vec3(0.2f, 0.4f, 0.6f);
+    LectureMrt mrt = LectureMrt::create();
+    ASSERT_TRUE(mrt.usable());
+    GraphRunner runner(w, h);
+    SharpenTargets targets;
+    auto declare = [&](FrameGraph& graph) {
+        MrtTargets t{d.import(graph, "mrt.diffuse"),
+                     s.import(graph, "mrt.specular"),
+                     a.import(graph, "mrt.ambient"),
+                     {}};
+        targets = mrt.declareSharpen(graph, scene, t);
+        return targets.kept;
+    };
+    FloatImage kept = runner.run({w, h}, declare);
+    FloatImage clipped = runner.run({w, h}, [&](FrameGraph& graph) {
+        declare(graph);
+        return targets.clipped;
+    });
+    ASSERT_FALSE(kept.empty());
+    ASSERT_FALSE(clipped.empty());
+    EXPECT_EQ(kept.texel(2, 2, 0), 5.0f);
+    EXPECT_EQ(clipped.texel(2, 2, 0), 1.0f);
+    for (auto [x, y] : {std::pair{1, 2}, {3, 2}, {2, 1}, {2, 3}}) {
+        EXPECT_EQ(kept.texel(x, y, 0), -1.0f) << x << "," << y;
+        EXPECT_EQ(clipped.texel(x, y, 0), 0.0f) << x << "," << y;
+    }
+    EXPECT_EQ(kept.texel(4, 4, 0), 0.0f);  // flat: the kernel sums to 1
+    // The sky once, in the corner only (RGBA16F rounds 0.2, 0.4, 0.6 to its nearest values).
+    EXPECT_NEAR(kept.texel(0, 0, 0), 0.2f, 1e-3f);
+    EXPECT_NEAR(kept.texel(0, 0, 2), 0.6f, 1e-3f);
+    EXPECT_EQ(kept.texel(4, 0, 2), 0.0f);
+}
+
+// Normals in RGBA8 without the remap lose their negative half: on the lesson's scene the fat layout
+// stores negative components where the rgba8Raw layout stores 0, and nothing below 0.
+TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
+    SceneLoadOptions options;
+    options.assetRoot = resourceDir();
+    auto scene = loadScene(resourceDir() / "scenes/10_deferred_shading.json", options);
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    SceneMeshes meshes(*scene);
+    GBufferPass gbuffer = GBufferPass::create();
+    const Size2D size{96, 54};
+    GraphRunner runner(size.width, size.height);
+    auto normals = [&](GBufferLayout layout) {
+        return runner.run(size, [&](FrameGraph& graph) {
+            return gbuffer.declare(graph, *scene, meshes, 0.0, {layout, false, glm::vec3(0)}).normal;
+        });
+    };
+    FloatImage fat = normals(GBufferLayout::fat), raw = normals(GBufferLayout::rgba8Raw);
+    ASSERT_FALSE(fat.empty());
+    ASSERT_FALSE(raw.empty());
+    int negative = 0, clippedToZero = 0;
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_GE(raw.texel(x, y, c), 0.0f);
+                if (fat.texel(x, y, c) < -0.1f) {
+                    ++negative;
+                    clippedToZero += raw.texel(x, y, c) == 0.0f;
+                }
+            }
+    EXPECT_GT(negative, 50);  // the objects' sides facing -X and -Z (toward the camera: +Z)
+    EXPECT_EQ(clippedToZero, negative);
 }
