@@ -33,7 +33,8 @@ void main() {
     normal = vec4(octahedralEncode(n), 0.0, 0.0);
 #else
     normal = vec4(n, 1.0);
-    position = vec4(worldPosition, 1.0);
+    // A half float is infinite beyond 65504 m (docs/numbers.md): a far-away scene clamps, stays finite.
+    position = vec4(clamp(worldPosition, -65504.0, 65504.0), 1.0);
 #endif
 #ifdef REFERENCE_POSITION
     referencePosition = vec4(worldPosition, 1.0);
