@@ -32,6 +32,13 @@ private:
 };
 
 std::string_view framebufferStatusName(GLenum status);
+// Complete by glCheckNamedFramebufferStatus, and every entry of its draw-buffer list names an
+// attachment that has an image: since GL 4.1 a list naming an empty attachment is "complete" and what
+// the fragment shader writes there silently vanishes, so that is an error here, with the entry named.
 Status checkFramebufferComplete(GLuint framebuffer, std::string_view label);
+// Every output `program` declares reaches an attachment with an image through `framebuffer`'s
+// draw-buffer list; otherwise an error naming the output, its location and the framebuffer (GL drops
+// such writes without a word).
+Status checkProgramOutputs(GLuint program, GLuint framebuffer, std::string_view label);
 
 }  // namespace fx::gl

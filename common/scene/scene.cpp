@@ -20,6 +20,15 @@ bool PostEffects::wants(PostEffect effect) const {
     return false;
 }
 
+std::vector<Light> allLights(const Scene& scene) {
+    std::vector<Light> lights = scene.lights;
+    for (const LightGrid& grid : scene.lightGrids) {
+        std::vector<Light> generated = expandLightGrid(grid);
+        lights.insert(lights.end(), generated.begin(), generated.end());
+    }
+    return lights;
+}
+
 std::vector<std::filesystem::path> referencedFiles(const Scene& scene) {
     std::vector<std::filesystem::path> files;
     auto add = [&](const AssetRef& asset) {

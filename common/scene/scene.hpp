@@ -12,6 +12,7 @@
 #include "scene/scene_cloud.hpp"
 #include "scene/scene_emitter.hpp"
 #include "scene/scene_light.hpp"
+#include "scene/scene_light_grid.hpp"
 #include "scene/scene_object.hpp"
 #include "scene/scene_post.hpp"
 
@@ -27,6 +28,7 @@ struct Scene {
     glm::vec3 ambient{0.03f};                   // linear HDR light that reaches every surface
     Camera camera;
     std::vector<Light> lights;
+    std::vector<LightGrid> lightGrids;  // generated point lights (scene_light_grid.hpp)
     std::vector<SceneObject> objects;
     std::vector<ParticleEmitter> emitters;
     std::vector<CloudLayer> clouds;
@@ -37,6 +39,9 @@ struct Scene {
 
     bool operator==(const Scene&) const = default;
 };
+
+// The scene's lights followed by every grid's lights, expanded.
+std::vector<Light> allLights(const Scene& scene);
 
 // Every file the scene refers to (glTF models and textures), resolved, sorted, without repeats.
 std::vector<std::filesystem::path> referencedFiles(const Scene& scene);

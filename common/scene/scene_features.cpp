@@ -8,11 +8,13 @@ namespace fx {
 SceneFeatures features(const Scene& scene) {
     SceneFeatures result;
     result.lights = static_cast<int>(scene.lights.size());
+    for (const auto& grid : scene.lightGrids) result.lights += grid.lightCount();
     for (const auto& light : scene.lights)
         if (light.castsShadows()) ++result.shadowCastingLights;
     for (const auto& object : scene.objects) {
         if (object.skinned) ++result.skinnedMeshes;
         if (object.moves()) ++result.movingObjects;
+        if (object.mirror) ++result.mirrors;
         glm::vec3 emitted = object.material.emitted();
         if (emitted.r > 1.0f || emitted.g > 1.0f || emitted.b > 1.0f) ++result.hdrEmissiveObjects;
     }
@@ -51,6 +53,8 @@ bool SceneFeatures::has(SceneFeature feature) const {
             return postEffects.wants(PostEffect::depthOfField);
         case SceneFeature::toneMap:
             return postEffects.wants(PostEffect::toneMap);
+        case SceneFeature::mirror:
+            return mirrors > 0;
     }
     return false;
 }
@@ -88,6 +92,8 @@ std::string SceneFeatures::missingReason(SceneFeature feature) const {
             return notRequested(PostEffect::depthOfField);
         case SceneFeature::toneMap:
             return notRequested(PostEffect::toneMap);
+        case SceneFeature::mirror:
+            return "scene has no mirror (no object with \"mirror\")";
     }
     return {};
 }

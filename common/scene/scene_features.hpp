@@ -21,6 +21,7 @@ enum class SceneFeature {
     radialBlur,
     depthOfField,
     toneMap,
+    mirror,  // a planar reflection pass (an object with "mirror")
 };
 
 // A scene with more lights than this has "many lights".
@@ -34,6 +35,7 @@ struct SceneFeatures {
     int hdrEmissiveObjects = 0;  // objects whose emissive colour x strength has a component above 1
     int movingObjects = 0;       // objects with a motion
     int lights = 0;
+    int mirrors = 0;  // objects with a mirror (at most one)
     bool physicalLens = false;
     PostEffects postEffects;  // which effects are requested, with their settings
 

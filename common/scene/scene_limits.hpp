@@ -10,6 +10,7 @@ namespace fx::scene_limits {
 
 inline constexpr std::size_t kMaxObjects = 4096;
 inline constexpr std::size_t kMaxLights = 256;
+inline constexpr std::size_t kMaxLightGrids = 64;
 inline constexpr std::size_t kMaxEmitters = 256;
 inline constexpr std::size_t kMaxClouds = 16;
 inline constexpr std::size_t kMaxClipsPerObject = 256;

@@ -42,9 +42,22 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
     reader.forEachObject("lights", scene_limits::kMaxLights,
                          [&](JsonFieldReader& light) { scene.lights.push_back(parseLight(light)); });
+    int gridLights = 0;
+    reader.forEachObject("lightGrids", scene_limits::kMaxLightGrids, [&](JsonFieldReader& grid) {
+        scene.lightGrids.push_back(parseLightGrid(grid));
+        gridLights += scene.lightGrids.back().lightCount();
+        // The lights go into one GPU list: all grids together have the limit one grid has.
+        if (gridLights > kMaxGridLights)
+            grid.fail("count", cat("the scene's grids make ", gridLights, " lights together; at most ",
+                                   kMaxGridLights));
+    });
     std::set<std::string> names;
+    int mirrors = 0;
     reader.forEachObject("objects", scene_limits::kMaxObjects, [&](JsonFieldReader& object) {
         scene.objects.push_back(parseObject(object, assets));
+        // One reflection pass per frame: a second mirror would need a second mirrored camera.
+        if (scene.objects.back().mirror && ++mirrors > 1)
+            object.fail("mirror", "a scene may have one mirror; another object is one already");
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)

@@ -69,6 +69,14 @@ struct Motion {
     bool operator==(const Motion&) const = default;
 };
 
+// A plane that mirrors the scene (lesson 10's planar reflection): the reflection is drawn from the
+// camera mirrored in the plane and mixed onto the plane's own colour at `strength`.
+struct Mirror {
+    float strength = 0.5f;  // [0, 1]: how much of the reflection the surface shows
+
+    bool operator==(const Mirror&) const = default;
+};
+
 struct SceneObject {
     std::string name;
     std::optional<Primitive> primitive;  // exactly one of primitive and gltf is set
@@ -82,6 +90,7 @@ struct SceneObject {
     // has read the file (a clip may move rigid nodes only).
     bool skinned = false;
     Motion motion;
+    std::optional<Mirror> mirror;  // only a plane primitive may be a mirror; at most one per scene
 
     bool moves() const { return motion.type != MotionType::none; }
     bool operator==(const SceneObject&) const = default;

@@ -28,6 +28,7 @@ private:
 
 Camera parseCamera(JsonFieldReader& camera);
 Light parseLight(JsonFieldReader& light);
+LightGrid parseLightGrid(JsonFieldReader& grid);
 SceneObject parseObject(JsonFieldReader& object, const AssetPathReader& assets);
 ParticleEmitter parseEmitter(JsonFieldReader& emitter, const AssetPathReader& assets);
 CloudLayer parseCloudLayer(JsonFieldReader& cloud, const AssetPathReader& assets);

@@ -1,6 +1,7 @@
 // Reads one entry of "lights". Which fields apply depends on the type; the others are warned about.
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -76,6 +77,26 @@ Light parseLight(JsonFieldReader& reader) {
     }
     reader.reportUnknown();
     return light;
+}
+
+LightGrid parseLightGrid(JsonFieldReader& reader) {
+    LightGrid grid;
+    grid.name = reader.text("name", "");
+    grid.center = reader.requiredVec3("center", kCoordinateRange);
+    glm::vec2 count = reader.vec2("count", glm::vec2(grid.count), NumberRange::closed(1, kMaxGridLights));
+    if (count.x != std::floor(count.x) || count.y != std::floor(count.y))
+        reader.fail("count", cat("[", count.x, ", ", count.y, "] is not two whole numbers"));
+    grid.count = glm::ivec2(count);
+    if (grid.lightCount() > kMaxGridLights)
+        reader.fail("count", cat(grid.count.x, " x ", grid.count.y, " = ", grid.lightCount(),
+                                 " lights; a grid may have at most ", kMaxGridLights));
+    grid.spacing = reader.vec2("spacing", grid.spacing, kLengthRange);
+    grid.radius = reader.number("radius", grid.radius, kLengthRange);
+    grid.intensity = reader.number("intensity", grid.intensity, NumberRange::closed(0.0, 1.0e5));
+    grid.saturation = reader.number("saturation", grid.saturation, kUnitRange);
+    grid.seed = reader.integer("seed", grid.seed, NumberRange::closed(0, 1.0e9));
+    reader.reportUnknown();
+    return grid;
 }
 
 }  // namespace fx

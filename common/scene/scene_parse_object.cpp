@@ -160,6 +160,15 @@ SceneObject parseObject(JsonFieldReader& reader, const AssetPathReader& assets) 
         auto motionReader = reader.object("motion");
         object.motion = parseMotion(motionReader);
     }
+    if (reader.has("mirror")) {
+        if (!object.primitive || object.primitive->shape != PrimitiveShape::plane)
+            reader.fail("mirror", "only a plane primitive can be a mirror (the reflection is planar)");
+        auto mirrorReader = reader.object("mirror");
+        Mirror mirror;
+        mirror.strength = mirrorReader.number("strength", mirror.strength, kUnitRange);
+        mirrorReader.reportUnknown();
+        object.mirror = mirror;
+    }
     reader.reportUnknown();
     return object;
 }

@@ -76,6 +76,19 @@ Json shadowJson(const ShadowSettings& shadow) {
                 {"filterTaps", shadow.filterTaps}, {"extent", number(shadow.extent)}};
 }
 
+Json lightGridJson(const LightGrid& grid) {
+    Json json = Json::object();
+    if (!grid.name.empty()) json["name"] = grid.name;
+    json["center"] = vector(grid.center);
+    json["count"] = Json::array({grid.count.x, grid.count.y});
+    json["spacing"] = Json::array({number(grid.spacing.x), number(grid.spacing.y)});
+    json["radius"] = number(grid.radius);
+    json["intensity"] = number(grid.intensity);
+    json["saturation"] = number(grid.saturation);
+    json["seed"] = grid.seed;
+    return json;
+}
+
 Json lightJson(const Light& light) {
     Json json{{"type", name(light.type)}};
     if (!light.name.empty()) json["name"] = light.name;
@@ -156,6 +169,7 @@ Json objectJson(const SceneObject& object) {
                                  {"speed", number(object.animation.speed)}};
     }
     if (object.moves()) json["motion"] = motionJson(object.motion);
+    if (object.mirror) json["mirror"] = Json{{"strength", number(object.mirror->strength)}};
     return json;
 }
 
@@ -278,6 +292,7 @@ std::string saveScene(const Scene& scene) {
     json["ambient"] = vector(scene.ambient);
     json["camera"] = cameraJson(scene.camera);
     json["lights"] = arrayOf(scene.lights, lightJson);
+    if (!scene.lightGrids.empty()) json["lightGrids"] = arrayOf(scene.lightGrids, lightGridJson);
     json["objects"] = arrayOf(scene.objects, objectJson);
     if (!scene.emitters.empty()) json["emitters"] = arrayOf(scene.emitters, emitterJson);
     if (!scene.clouds.empty()) json["clouds"] = arrayOf(scene.clouds, cloudJson);

@@ -39,7 +39,7 @@ constexpr SceneFeature kEveryFeature[] = {
     SceneFeature::clouds,        SceneFeature::hdrEmissive,   SceneFeature::physicalLens,
     SceneFeature::manyLights,    SceneFeature::movingObjects, SceneFeature::bloom,
     SceneFeature::colorMatrix,   SceneFeature::radialBlur,    SceneFeature::depthOfField,
-    SceneFeature::toneMap,
+    SceneFeature::toneMap,       SceneFeature::mirror,
 };
 
 }  // namespace

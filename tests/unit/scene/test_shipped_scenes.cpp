@@ -44,6 +44,7 @@ const ShippedScene kShippedScenes[] = {
     {"05_radial_blur.json", {}},
     {"06_bloom.json", {}},
     {"07_fire_emitter.json", {"textures/fire_sprite.png"}},
+    {"10_deferred_shading.json", {}},
 };
 
 fs::path scenesDir() {
@@ -237,4 +238,14 @@ TEST(ShippedScenes, FireEmitterHasTheChaptersFireSmokeAndSparks) {
     EXPECT_EQ(fire.sprite.path, "../textures/fire_sprite.png");
     EXPECT_EQ(scene.emitters[1].kind, fx::EmitterKind::smoke);
     EXPECT_EQ(scene.emitters[2].kind, fx::EmitterKind::sparks);
+}
+
+TEST(ShippedScenes, DeferredShadingHasAThousandLightsAndOneMirror) {
+    fx::Scene scene = loadShipped("10_deferred_shading.json");
+    fx::SceneFeatures f = fx::features(scene);
+    EXPECT_EQ(f.lights, 1 + 1024);  // the moon and a 32 x 32 grid
+    EXPECT_TRUE(f.has(SceneFeature::manyLights));
+    EXPECT_TRUE(f.has(SceneFeature::shadows));
+    EXPECT_EQ(f.mirrors, 1);
+    EXPECT_EQ(fx::allLights(scene).size(), 1025u);
 }

@@ -1,0 +1,132 @@
+#include "effects/deferred/deferred_lighting.hpp"
+
+#include <algorithm>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "base/log.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+
+namespace fx {
+namespace {
+
+// shaders/effects/deferred/deferred_lighting.frag and point_lights.glsl
+constexpr GLint kLightCountLocation = 20;
+constexpr GLint kInverseViewProjectionLocation = 21;
+constexpr GLint kHdrMaxLocation = 22;
+constexpr GLint kSkyLocation = 23;
+constexpr GLint kTilesXLocation = 24;
+constexpr GLint kWorldOffsetLocation = 25;
+
+}  // namespace
+
+DeferredLighting DeferredLighting::create() {
+    return DeferredLighting();
+}
+
+const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
+    const int n = static_cast<int>(layout);
+    std::optional<FullscreenPass>& slot = passes_[n * 2 + (tiled ? 1 : 0)];
+    if (!slot) {
+        std::string defines = cat("#define LAYOUT ", n, "\n");
+        if (tiled)
+            defines += cat("#define TILED 1\n#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ",
+                           kMaxTileLights, "\n");
+        slot.emplace("effects/deferred/deferred_lighting.frag",
+                     cat("deferred lighting (", toString(layout), tiled ? ", tiled" : "", ")"), defines);
+    }
+    return *slot;
+}
+
+TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
+                                        const PointLightBuffer& lights, const DeclaredShadowMap& shadow,
+                                        const std::optional<CulledTiles>& tiles) const {
+    const FullscreenPass* fullscreen = &pass(g.layout, tiles.has_value());
+    const PointLightBuffer* buffer = &lights;
+    const std::optional<CulledTiles> culled = tiles;
+    Pass& pass =
+        graph.addPass("deferred lighting", [fullscreen, buffer, &scene, g, shadow, culled](PassContext& ctx) {
+            GLuint program = fullscreen->program();
+            CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
+            SceneMeshes::setFrameUniforms(program, scene, camera);
+            glm::mat4 inverse = glm::inverse(camera.viewProjection);
+            glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+                                      glm::value_ptr(inverse));
+            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+            auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
+            glProgramUniform3f(program, kSkyLocation, sky(scene.background.r), sky(scene.background.g),
+                               sky(scene.background.b));
+            glProgramUniform3fv(program, kWorldOffsetLocation, 1, glm::value_ptr(g.worldOffset));
+            glProgramUniform1i(program, kLightCountLocation, buffer->count());
+            buffer->bind();
+            if (culled) {
+                glProgramUniform1i(program, kTilesXLocation, culled->tilesX);
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::tileLights, culled->listBuffer);
+            }
+            GLuint shadowTexture = shadow.pass && shadow.lookup.enabled ? ctx.native(shadow.map) : 0;
+            ShadowMap::bindForLookup(program, shadowTexture, shadow.lookup);
+            GLuint position = g.position ? ctx.native(*g.position) : 0;
+            fullscreen->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
+        });
+    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    if (g.position) pass.read(*g.position);
+    if (shadow.pass) pass.read(shadow.map);
+    if (tiles) pass.read(tiles->heat);
+    if (!fullscreen->usable()) pass.disable("the lighting program did not build: " + fullscreen->error());
+    return pass.create("deferred.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                       TextureUsage::ColorAttachment);
+}
+
+TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Scene& scene,
+                                                     const GBufferTargets& g) const {
+    const int n = static_cast<int>(g.layout);
+    if (!errorPasses_[n])
+        errorPasses_[n].emplace("effects/deferred/position_error.frag",
+                                cat("position error (", toString(g.layout), ")"),
+                                cat("#define LAYOUT ", n, "\n"));
+    const FullscreenPass* error = &*errorPasses_[n];
+    const TextureHandle reference = *g.referencePosition;
+    Pass& pass = graph.addPass("position error", [error, &scene, g, reference](PassContext& ctx) {
+        CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
+        glm::mat4 inverse = glm::inverse(camera.viewProjection);
+        glProgramUniformMatrix4fv(error->program(), kInverseViewProjectionLocation, 1, GL_FALSE,
+                                  glm::value_ptr(inverse));
+        GLuint position = g.position ? ctx.native(*g.position) : 0;
+        error->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth),
+                     ctx.native(reference)});
+    });
+    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference).setState(FullscreenPass::state());
+    if (g.position) pass.read(*g.position);
+    if (!error->usable()) pass.disable("the position-error program did not build: " + error->error());
+    return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                       TextureUsage::ColorAttachment);
+}
+
+void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
+                                    float viewRange) const {
+    const int n = static_cast<int>(g.layout);
+    if (!viewPasses_[n])
+        viewPasses_[n].emplace("effects/deferred/gbuffer_views.frag",
+                               cat("gbuffer views (", toString(g.layout), ")"),
+                               cat("#define LAYOUT ", n, "\n"));
+    const FullscreenPass* views = &*viewPasses_[n];
+    Pass& pass = graph.addPass("gbuffer views", [views, &scene, g, viewRange](PassContext& ctx) {
+        CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
+        glm::mat4 inverse = glm::inverse(camera.viewProjection);
+        GLuint program = views->program();
+        glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+                                  glm::value_ptr(inverse));
+        glProgramUniform3fv(program, 0, 1, glm::value_ptr(camera.position));
+        glProgramUniform1f(program, 1, viewRange);
+        GLuint position = g.position ? ctx.native(*g.position) : 0;
+        views->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
+    });
+    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    if (g.position) pass.read(*g.position);
+    if (!views->usable()) pass.disable("the G-buffer view program did not build: " + views->error());
+    const TextureDesc rgba8{TextureSize::output(), TextureFormat::RGBA8, 1};
+    pass.create("gbuffer.view_normal", rgba8, TextureUsage::ColorAttachment);
+    pass.create("gbuffer.view_depth", rgba8, TextureUsage::ColorAttachment);
+}
+
+}  // namespace fx

@@ -1,0 +1,143 @@
+#include "effects/deferred/planar_reflection.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include "base/log.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_work.hpp"
+#include "geometry/mesh_data.hpp"
+
+namespace fx {
+namespace {
+
+// shaders/effects/deferred/mirrored_scene.vert, reflection.frag and mirror_surface.frag
+constexpr GLint kClipPlaneLocation = 26;
+constexpr GLint kHdrMaxLocation = 22;
+constexpr GLint kLightCountLocation = 20;
+constexpr GLint kStrengthLocation = 27;
+constexpr GLint kOutputSizeLocation = 28;
+// Clip a millimetre above the plane: the mirror itself (and a floor in its plane) stay out of it.
+constexpr float kClipAbove = 0.001f;
+
+}  // namespace
+
+std::optional<MirrorPlane> findMirror(const Scene& scene, double seconds) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (!o.mirror) continue;
+        glm::mat4 model = SceneMeshes::modelAt(o, seconds);
+        glm::vec3 n = glm::mat3(glm::transpose(glm::inverse(model))) * glm::vec3(0, 1, 0);
+        float len = glm::length(n);
+        if (!(len > 1e-12f)) return std::nullopt;
+        n /= len;
+        glm::vec3 p = glm::vec3(model[3]);
+        return MirrorPlane{i, glm::vec4(n, -glm::dot(n, p)), o.mirror->strength};
+    }
+    return std::nullopt;
+}
+
+glm::mat4 reflectionMatrix(glm::vec4 plane) {
+    glm::vec3 n(plane);
+    float d = plane.w;
+    glm::mat4 r(1.0f);
+    for (int c = 0; c < 3; ++c)
+        for (int row = 0; row < 3; ++row) r[c][row] -= 2.0f * n[row] * n[c];
+    for (int row = 0; row < 3; ++row) r[3][row] = -2.0f * d * n[row];
+    return r;
+}
+
+PlanarReflection PlanarReflection::create(const Scene& scene) {
+    PlanarReflection p;
+    p.reflect_ = gl::ReloadableProgram({"effects/deferred/mirrored_scene.vert",
+                                        "effects/deferred/reflection.frag",
+                                        {},
+                                        {},
+                                        "planar reflection (mirrored camera)"});
+    p.surface_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
+                                        "effects/deferred/mirror_surface.frag",
+                                        {},
+                                        {},
+                                        "mirror surface"});
+    if (auto mirror = findMirror(scene, 0.0)) {
+        const Primitive& plane = *scene.objects[mirror->object].primitive;
+        p.mirrorMesh_ = GpuMesh(makePlane(plane.planeSize.x, plane.planeSize.y), "mirror surface mesh");
+    }
+    return p;
+}
+
+TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                        double seconds, const PointLightBuffer& lights,
+                                        const GBufferTargets& g, TextureHandle lit, int fraction) const {
+    std::optional<MirrorPlane> mirror = findMirror(scene, seconds);
+    const gl::ReloadableProgram* reflect = &reflect_;
+    const PointLightBuffer* buffer = &lights;
+    const MirrorPlane m = mirror.value_or(MirrorPlane{});
+    Pass& pass =
+        graph.addPass("planar reflection", [reflect, buffer, &scene, &meshes, seconds, m](PassContext& ctx) {
+            // The same projection as the camera's (the same aspect: the target is a fraction of the output),
+            // the view mirrored in the plane.
+            Size2D size = ctx.targetSize();
+            CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+            glm::mat4 r = reflectionMatrix(m.plane);
+            camera.view = camera.view * r;
+            camera.viewProjection = camera.projection * camera.view;
+            camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
+            GLuint program = reflect->name();
+            SceneMeshes::setFrameUniforms(program, scene, camera);
+            glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
+            glProgramUniform4fv(program, kClipPlaneLocation, 1, glm::value_ptr(clip));
+            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+            glProgramUniform1i(program, kLightCountLocation, buffer->count());
+            buffer->bind();
+            glEnable(GL_CLIP_DISTANCE0);
+            meshes.draw(program, scene, seconds);
+            glDisable(GL_CLIP_DISTANCE0);
+        });
+    const TextureSize at = TextureSize::outputFraction(1, std::clamp(fraction, 1, 8));
+    TextureHandle color =
+        pass.create("reflection.color", {at, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
+    pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
+    PassState state = hdrSceneState(scene);
+    state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
+    pass.setState(state);
+    needs(pass, SceneFeature::mirror);
+    if (!reflect_.usable()) pass.disable("the reflection program did not build: " + reflect_.error());
+
+    const gl::ReloadableProgram* surface = &surface_;
+    const GpuMesh* mesh = &mirrorMesh_;
+    Pass& over =
+        graph.addPass("mirror surface", [surface, mesh, &scene, seconds, m, color, g](PassContext& ctx) {
+            Size2D size = ctx.targetSize();
+            CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
+            GLuint program = surface->name();
+            SceneMeshes::setFrameUniforms(program, scene, camera);
+            glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], seconds);
+            glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
+            glProgramUniform1f(program, kStrengthLocation, m.strength);
+            glProgramUniform2f(program, kOutputSizeLocation, float(size.width), float(size.height));
+            glBindTextureUnit(0, ctx.native(color));
+            glBindTextureUnit(1, ctx.native(g.depth));
+            glUseProgram(program);
+            mesh->draw();
+        });
+    // The depth test is done in the shader against the G-buffer's depth, which the lighting pass also
+    // samples: as a depth attachment here it would be modified after the lighting pass read it.
+    over.read(color)
+        .read(g.depth)
+        .modify(lit, TextureUsage::ColorAttachment)
+        .setState({.depthTest = false,
+                   .depthWrite = false,
+                   .blend = true,
+                   .blendFunction = BlendFunction::alpha(),
+                   .faceCulling = true,
+                   .cullFace = CullFace::Back,
+                   .colorMask = ColorMask{}});
+    needs(over, SceneFeature::mirror);
+    if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
+    if (!surface_.usable()) over.disable("the mirror-surface program did not build: " + surface_.error());
+    return color;
+}
+
+}  // namespace fx

@@ -1,0 +1,54 @@
+#pragma once
+// The chapter's homework: a planar reflection through a framebuffer. The scene is drawn a second time
+// from the camera mirrored in the mirror's plane (view * R, R the reflection in the plane) into
+// "reflection.color", with a clip plane (gl_ClipDistance) that drops everything below the mirror, so
+// objects under or through the plane do not appear above it. Mirroring the camera rather than the
+// objects leaves every world-space normal as it is (no negation, whatever the normal matrix); only the
+// winding flips, so the pass culls front faces. Then "mirror surface" draws the mirror's plane again
+// over the lit picture, depth-tested against the G-buffer's depth in its shader, and mixes the reflection in
+// at the mirror's strength, fetched at the pixel's own place (both passes use the same projection).
+//
+// Both passes need SceneFeature::mirror: a scene without a mirror has no reflection pass.
+#include <optional>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "effects/deferred/gbuffer_pass.hpp"
+#include "effects/deferred/point_light_buffer.hpp"
+#include "effects/scene/gpu_mesh.hpp"
+#include "gl/program.hpp"
+
+namespace fx {
+
+// The mirror of a scene: its object's index and plane (unit normal n and d with n.p + d = 0 on it).
+struct MirrorPlane {
+    std::size_t object = 0;
+    glm::vec4 plane{0, 1, 0, 0};
+    float strength = 0.5f;
+};
+std::optional<MirrorPlane> findMirror(const Scene& scene, double seconds);
+
+// The reflection in `plane` as a matrix: p - 2 (n.p + d) n. Its determinant is -1.
+glm::mat4 reflectionMatrix(glm::vec4 plane);
+
+class PlanarReflection {
+public:
+    PlanarReflection() = default;  // empty: no GL yet
+    static PlanarReflection create(const Scene& scene);
+
+    bool usable() const { return reflect_.usable() && surface_.usable(); }
+
+    // "planar reflection" at `fraction` of the output (1, 2 or 4: full, half, quarter size), then
+    // "mirror surface" over `lit` (modified in place). Returns reflection.color.
+    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                          const PointLightBuffer& lights, const GBufferTargets& g, TextureHandle lit,
+                          int fraction) const;
+
+private:
+    gl::ReloadableProgram reflect_;
+    gl::ReloadableProgram surface_;
+    GpuMesh mirrorMesh_;
+};
+
+}  // namespace fx

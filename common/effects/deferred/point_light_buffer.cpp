@@ -1,0 +1,39 @@
+#include "effects/deferred/point_light_buffer.hpp"
+
+#include <algorithm>
+
+namespace fx {
+
+std::vector<GpuPointLight> gpuPointLights(const std::vector<Light>& lights, int maxCount, glm::vec3 offset) {
+    std::vector<GpuPointLight> out;
+    for (const Light& light : lights) {
+        if (int(out.size()) >= maxCount) break;
+        if (light.type != LightType::point) continue;
+        out.push_back({glm::vec4(light.position + offset, light.radius),
+                       glm::vec4(light.color * light.intensity, 0.0f)});
+    }
+    return out;
+}
+
+PointLightBuffer PointLightBuffer::create() {
+    PointLightBuffer b;
+    b.buffer_ = gl::createBuffer("deferred.point_lights");
+    return b;
+}
+
+void PointLightBuffer::upload(const std::vector<GpuPointLight>& lights) {
+    count_ = int(lights.size());
+    // A buffer of size 0 cannot be bound: keep room for one light even when there is none.
+    std::size_t bytes = std::max<std::size_t>(lights.size(), 1) * sizeof(GpuPointLight);
+    if (bytes > capacity_) {
+        glNamedBufferData(buffer_.name(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_DRAW);
+        capacity_ = bytes;
+    }
+    if (!lights.empty()) glNamedBufferSubData(buffer_.name(), 0, GLsizeiptr(bytes), lights.data());
+}
+
+void PointLightBuffer::bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::pointLights, buffer_.name());
+}
+
+}  // namespace fx

@@ -1,0 +1,57 @@
+#pragma once
+// Render to texture (Deferred rendering chapter, the FBO recipes): a framebuffer object the lesson
+// builds itself, the slides' way, at their fixed 512 x 512, with a colour texture and either
+//  - a depth renderbuffer (only the depth test needs it; nobody can sample it), or
+//  - a depth texture (what later steps need: the G-buffer's positions are rebuilt from depth).
+// The frame graph makes framebuffers for its passes itself; this one is built by hand to show the
+// recipe, so its colour (and depth) textures enter the graph as imported textures that the pass
+// "render to texture" writes. attachmentsText() is what GL says is attached, asked back from GL.
+//
+//   RenderToTexture rtt = RenderToTexture::create();             // Lesson::init
+//   TextureHandle color = rtt.declare(graph, scene, meshes, t, RttDepth::renderbuffer);
+#include <string>
+
+#include "effects/scene/scene_meshes.hpp"
+#include "gl/framebuffer.hpp"
+#include "gl/program.hpp"
+#include "gl/texture.hpp"
+#include "render/frame_graph.hpp"
+
+namespace fx {
+
+enum class RttDepth { renderbuffer = 0, texture = 1 };
+
+inline constexpr int kRttSize = 512;  // the slides' compile-time width and height
+
+class RenderToTexture {
+public:
+    RenderToTexture() = default;  // empty: no GL yet
+    static RenderToTexture create();
+
+    bool usable() const { return program_.usable(); }
+
+    // Declares "render to texture", which draws the scene lit (the lecture's Phong terms, summed) into
+    // "rtt.color" (RGBA8, 512 x 512, imported) with the chosen depth attachment. With a depth texture,
+    // "rtt.depth" (Depth32F) is imported too, so the inspector can show it. Returns rtt.color.
+    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                          RttDepth depth) const;
+
+    // "colour 0: texture rtt.color RGBA8 512x512; depth: renderbuffer GL_DEPTH_COMPONENT24", read
+    // back from GL with glGetNamedFramebufferAttachmentParameteriv.
+    std::string attachmentsText(RttDepth depth) const;
+    GLuint framebuffer(RttDepth depth) const;
+
+private:
+    gl::ReloadableProgram program_;
+    gl::Texture color_;
+    gl::Texture depthTexture_;
+    gl::RenderbufferName depthRenderbuffer_;
+    gl::Framebuffer withRenderbuffer_;
+    gl::Framebuffer withTexture_;
+};
+
+// What framebuffer `fbo` has attached, asked back from GL: one entry per colour attachment 0..7 that
+// has an image, and depth, each "texture <label> <format> WxH" or "renderbuffer <internal format>".
+std::string describeAttachments(GLuint fbo);
+
+}  // namespace fx

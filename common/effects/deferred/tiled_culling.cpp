@@ -1,0 +1,90 @@
+#include "effects/deferred/tiled_culling.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "base/log.hpp"
+
+namespace fx {
+namespace {
+
+// tiled_culling.comp and heat_map.frag
+constexpr GLint kLightCountLocation = 20;
+constexpr GLint kViewLocation = 30;
+constexpr GLint kInverseProjectionLocation = 31;
+
+}  // namespace
+
+Size2D tileCount(Size2D size) {
+    return {std::max(1, (size.width + kTileSize - 1) / kTileSize),
+            std::max(1, (size.height + kTileSize - 1) / kTileSize)};
+}
+
+TiledCulling TiledCulling::create() {
+    TiledCulling c;
+    c.program_ = gl::ReloadableProgram(
+        {{},
+         {},
+         "effects/deferred/tiled_culling.comp",
+         cat("#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ", kMaxTileLights, "\n"),
+         "light culling (tiles)"});
+    c.heatMap_ = FullscreenPass("effects/deferred/heat_map.frag", "cull heat map");
+    c.list_ = gl::createBuffer("cull.tile_lights");
+    return c;
+}
+
+CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
+                                  const PointLightBuffer& lights) const {
+    Size2D tiles = tileCount(graph.outputSize());
+    CulledTiles out;
+    out.listBuffer = list_.name();
+    out.tilesX = tiles.width;
+    out.heat = graph.declareTexture(
+        "cull.heat", {TextureSize::absolute(tiles.width, tiles.height), TextureFormat::R32F, 1});
+    const TiledCulling* self = this;
+    const PointLightBuffer* buffer = &lights;
+    Pass& pass = graph.addPass("light culling", [self, buffer, &scene, g, out](PassContext& ctx) {
+        Size2D size = ctx.texture(g.depth).spec.size();
+        Size2D n = tileCount(size);
+        std::size_t bytes = std::size_t(n.width) * std::size_t(n.height) * (kMaxTileLights + 1) * 4;
+        if (bytes > self->listBytes_) {
+            glNamedBufferData(self->list_.name(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_DRAW);
+            self->listBytes_ = bytes;
+        }
+        CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
+        GLuint program = self->program_.name();
+        glProgramUniformMatrix4fv(program, kViewLocation, 1, GL_FALSE, glm::value_ptr(camera.view));
+        glm::mat4 inverseProjection = glm::inverse(camera.projection);
+        glProgramUniformMatrix4fv(program, kInverseProjectionLocation, 1, GL_FALSE,
+                                  glm::value_ptr(inverseProjection));
+        glProgramUniform1i(program, kLightCountLocation, buffer->count());
+        buffer->bind();
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::tileLights, self->list_.name());
+        glBindTextureUnit(3, ctx.native(g.depth));
+        glBindImageTexture(0, ctx.native(out.heat), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glUseProgram(program);
+        glDispatchCompute(GLuint(n.width), GLuint(n.height), 1);
+        // The lighting pass reads the list as a storage buffer and the heat map as a texture.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    });
+    pass.read(g.depth).writeStorage(out.heat);
+    needs(pass, SceneFeature::manyLights);
+    lastPass_ = &pass;
+    if (!program_.usable()) pass.disable("the culling program did not build: " + program_.error());
+    return out;
+}
+
+TextureHandle TiledCulling::declareHeatMap(FrameGraph& graph, const CulledTiles& tiles, TextureHandle lit,
+                                           int maxLights) const {
+    const FullscreenPass* heat = &heatMap_;
+    Pass& pass = graph.addPass("cull heat map", [heat, tiles, lit, maxLights](PassContext& ctx) {
+        glProgramUniform1f(heat->program(), 0, float(std::max(maxLights, 1)));
+        glProgramUniform1i(heat->program(), 1, kTileSize);
+        glProgramUniform1f(heat->program(), 2, float(kMaxTileLights));
+        heat->draw({ctx.native(tiles.heat), ctx.native(lit)});
+    });
+    pass.read(tiles.heat).read(lit).setState(FullscreenPass::state());
+    return pass.create("cull.heatmap", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                       TextureUsage::ColorAttachment);
+}
+
+}  // namespace fx

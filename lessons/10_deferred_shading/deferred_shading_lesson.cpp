@@ -1,0 +1,278 @@
+#include "deferred_shading_lesson.hpp"
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "base/log.hpp"
+
+namespace lesson10 {
+
+using namespace fx;
+
+namespace {
+
+// Step 5 moves the whole world (scene and camera) this far along X: where half floats run out.
+const float kOriginOffsets[] = {0.0f, 1000.0f, 10000.0f};
+// Step 7's reflection target as a fraction of the output: 1/1, 1/2, 1/4.
+const int kReflectionFractions[] = {1, 2, 4};
+
+}  // namespace
+
+LessonInfo DeferredShadingLesson::info() const {
+    return {10, "deferred-shading", "Deferred shading", "scenes/10_deferred_shading.json"};
+}
+
+std::vector<std::string> DeferredShadingLesson::steps() const {
+    return {
+        "Render to texture: a colour texture and a depth buffer",
+        "Three targets at once, and the slides' draw-buffer order bug",
+        "The sharpening variant: identity minus the Laplacian",
+        "Deferred shading: a G-buffer and one pass over many lights",
+        "What the G-buffer layout costs",
+        "A thousand lights: tiled culling",
+        "The homework: a planar reflection",
+    };
+}
+
+void DeferredShadingLesson::declareParams(ParamSet& params) {
+    params.addChoice(
+        "rtt_depth", &rttDepth_, {"renderbuffer", "texture"},
+        "Step 1: the render-to-texture framebuffer's depth attachment (a texture can be sampled)");
+    params.addBool("slides_order", &slidesOrder_,
+                   "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
+                   "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all");
+    Param& layout = params.addChoice("layout", &layout_, gbufferLayoutNames(),
+                                     "Steps 5 to 7: the G-buffer's layout (fat32 is the reference; rgba8Raw "
+                                     "stores normals in RGBA8 without a remap)");
+    layout.knob = Knob{{0, 1, 2}, 2, "layout"};
+    params.addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"},
+                     "Step 5: move the scene and the camera this many metres from the origin along X");
+    Param& count = params.addInt("light_count", &lightCount_, 1, kMaxGridLights,
+                                 "Steps 4 to 7: point lights used (at most as many as the scene has)");
+    count.knob = Knob{{1, 4, 16, 64, 256, 1024}, 1024, "lights"};
+    Param& culling =
+        params.addChoice("culling", &culling_, {"none", "tiled"},
+                         "Steps 6 and 7: evaluate every light per pixel, or only the tile's list");
+    culling.knob = Knob{{0, 1}, 0, "culling"};
+    Param& reflection =
+        params.addChoice("reflection_size", &reflectionSize_, {"full", "half", "quarter"},
+                         "Step 7: the reflection target's size as a fraction of the window's");
+    reflection.knob = Knob{{0, 1, 2}, 0, "reflection size"};
+    params.addFloat("divider", &divider_, 0.0f, 1.0f,
+                    "Steps 3, 5 and 6: where the split view's divider is (left: the diagnostic view)");
+}
+
+Status DeferredShadingLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    allLights_ = allLights(scene);
+    pointLightsInScene_ = int(std::count_if(allLights_.begin(), allLights_.end(),
+                                            [](const Light& l) { return l.type == LightType::point; }));
+    meshes_ = SceneMeshes(scene);
+    rtt_ = fx::RenderToTexture::create();
+    rttToScreen_ = FullscreenPass("common/copy.frag", "rtt to screen");
+    mrt_ = LectureMrt::create();
+    gbuffer_ = GBufferPass::create();
+    shadows_ = ShadowMap::create();
+    lights_ = PointLightBuffer::create();
+    lighting_ = DeferredLighting::create();
+    culling_pass_ = TiledCulling::create();
+    reflection_ = PlanarReflection::create(scene);
+    present_ = OutputTransformPass::create();
+    rttAttachments_[0] = rtt_.attachmentsText(RttDepth::renderbuffer);
+    rttAttachments_[1] = rtt_.attachmentsText(RttDepth::texture);
+    return Status::success();
+}
+
+GBufferLayout DeferredShadingLesson::layoutFor(int step) const {
+    if (step < Layout) return GBufferLayout::compact;  // step 4: the compact layout the chapter's idea needs
+    return static_cast<GBufferLayout>(std::clamp(layout_, 0, 3));
+}
+
+glm::vec3 DeferredShadingLesson::worldOffsetFor(int step) const {
+    if (step != Layout) return glm::vec3(0.0f);
+    return glm::vec3(kOriginOffsets[std::clamp(originOffset_, 0, 2)], 0.0f, 0.0f);
+}
+
+void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
+    // The light list changes only with the parameters: upload it then, not every frame. Called from
+    // buildFrame, so bench frames (which change parameters without an update()) see the new list too.
+    glm::vec3 offset = worldOffsetFor(frame.step);
+    int count = std::clamp(lightCount_, 1, kMaxGridLights);
+    if (offset != uploadedOffset_ || count != uploadedCount_) {
+        lights_.upload(gpuPointLights(allLights_, count, offset));
+        uploadedOffset_ = offset;
+        uploadedCount_ = count;
+    }
+}
+
+void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
+                                            std::optional<SplitView>& split) {
+    const Scene& scene = *scene_;
+    const int step = frame.step;
+    DeclaredShadowMap shadow;
+    if (const Light* sun = shadowCastingLight(scene))
+        shadow = shadows_.declare(graph, scene, meshes_, frame.seconds, sun->shadow, ShadowPassOptions{});
+
+    GBufferOptions options{layoutFor(step), step == Layout && !frame.benchmark, worldOffsetFor(step)};
+    GBufferTargets g = gbuffer_.declare(graph, scene, meshes_, frame.seconds, options);
+    if (!frame.benchmark) lighting_.declareViews(graph, scene, g);
+
+    std::optional<CulledTiles> tiles;
+    if (culls(step)) {
+        PassGroup::Scope in(graph, cullingGroup_);
+        CulledTiles culled = culling_pass_.declare(graph, scene, g, lights_);
+        if (culling_ == 0) culling_pass_.lastPass()->disable("culling: none (the parameter)");
+        // Without many lights the culling pass is not called for (the scene's reason is in the pass
+        // table), and every light is evaluated: a handful costs less than a pass that sorts them.
+        else if (!lacks(graph, SceneFeature::manyLights))
+            tiles = culled;
+    }
+    TextureHandle lit;
+    {
+        PassGroup::Scope in(graph, lightingGroup_);
+        lit = lighting_.declare(graph, scene, g, lights_, shadow, tiles);
+    }
+    shown = lit;
+    if (step == Reflection) {
+        PassGroup::Scope in(graph, reflectionGroup_);
+        reflection_.declare(graph, scene, meshes_, frame.seconds, lights_, g, lit,
+                            kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
+        return;
+    }
+    if (step == Layout && options.referencePosition)
+        split = SplitView{lighting_.declarePositionError(graph, scene, g), divider_};
+    if (tiles && !frame.benchmark)
+        split = SplitView{culling_pass_.declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 32, 8)),
+                          divider_};
+}
+
+void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    const Scene& scene = *scene_;
+    uploadLights(frame);
+    TextureHandle shown;
+    std::optional<SplitView> split;
+    switch (frame.step) {
+        case RenderToTexture: {
+            TextureHandle color =
+                rtt_.declare(graph, scene, meshes_, frame.seconds, static_cast<RttDepth>(rttDepth_ != 0));
+            // The 512 x 512 texture, stretched over the window: sampled in [0, 1], whatever the sizes.
+            const FullscreenPass* copy = &rttToScreen_;
+            Pass& pass = graph.addPass("rtt to screen",
+                                       [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
+            pass.read(color).setState(FullscreenPass::state());
+            shown = pass.create("rtt.shown", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                                TextureUsage::ColorAttachment);
+            break;
+        }
+        case ThreeTargets: {
+            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds,
+                                        slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
+            shown = mrt_.declareComposite(graph, scene, t);
+            break;
+        }
+        case Sharpen: {
+            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds, MrtOrder::fixed, &mrtStats_);
+            SharpenTargets s = mrt_.declareSharpen(graph, scene, t);
+            shown = s.clipped;
+            split = SplitView{mrt_.declareRangeView(graph, s), divider_};
+            break;
+        }
+        default:
+            declareDeferred(graph, frame, shown, split);
+            break;
+    }
+    present_.declare(graph, shown, split);
+}
+
+void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
+    const int step = frame.step;
+    out.check("expectErrorsInStep", step == ThreeTargets && slidesOrder_);
+    if (step == RenderToTexture) {
+        out.add("rttAttachments", rttAttachments_[rttDepth_ != 0 ? 1 : 0],
+                "framebuffer (asked back from GL)");
+        return;
+    }
+    if (step == ThreeTargets || step == Sharpen) {
+        out.add("drawBuffers", "GL_COLOR_ATTACHMENT0, 1, 2 (set once, on the framebuffer object)",
+                "draw buffers");
+        out.add("orderErrorsLastFrame", std::to_string(mrtStats_.lastFrameErrors),
+                "GL_INVALID_OPERATION from glDrawBuffer(GL_BACK) last frame");
+        out.add("orderErrorsTotal", std::to_string(mrtStats_.orderErrors), "... since the start");
+        if (step == Sharpen)
+            out.add("sharpenRange", "[-4, 5] for inputs in [0, 1]", "the kernel's output range");
+        return;
+    }
+    GBufferLayout layout = layoutFor(step);
+    long long pixels = (long long)frame.size.width * frame.size.height;
+    out.add("layout", toString(layout), "G-buffer layout");
+    out.add("bytesPerPixel", std::to_string(gbufferBytesPerPixel(layout)), "G-buffer bytes per pixel");
+    out.add("gbufferMiB", cat(double(pixels * gbufferBytesPerPixel(layout)) / (1024.0 * 1024.0)),
+            "G-buffer at this size (MiB)");
+    out.add("pointLights", std::to_string(lights_.count()),
+            cat("point lights (of ", pointLightsInScene_, ")"));
+    if (step == Layout) {
+        float at = std::abs(worldOffsetFor(step).x) + 10.0f;
+        out.add("halfFloatStep", cat(halfFloatSpacing(at)), cat("a half float's step at ", at, " m (m)"));
+    }
+    if (step == Reflection) {
+        auto mirror = findMirror(*scene_, frame.seconds);
+        out.add("mirror", mirror ? scene_->objects[mirror->object].name : std::string("none"), "mirror");
+        int fraction = kReflectionFractions[std::clamp(reflectionSize_, 0, 2)];
+        out.add("reflectionSize",
+                cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),
+                "reflection target");
+    }
+    if (step == ManyLights) {
+        Size2D tiles = tileCount(frame.size);
+        out.add("tiles", cat(tiles.width, " x ", tiles.height),
+                cat("tiles of ", kTileSize, " x ", kTileSize));
+    }
+    if (frame.previousFrame) {
+        out.add("lightingMs", cat(lightingGroup_.timeMs(*frame.previousFrame)), "lighting pass (ms)");
+        if (culls(step))
+            out.add("cullingMs", cat(cullingGroup_.timeMs(*frame.previousFrame)), "culling (ms)");
+        if (step == Reflection)
+            out.add("reflectionMs", cat(reflectionGroup_.timeMs(*frame.previousFrame)),
+                    "reflection passes (ms)");
+        out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
+    }
+}
+
+void DeferredShadingLesson::drawPanel(const FrameInfo& frame) {
+    switch (frame.step) {
+        case RenderToTexture:
+            ImGui::TextWrapped("Switch rtt_depth to texture, then inspect rtt.depth.");
+            break;
+        case ThreeTargets:
+            ImGui::TextWrapped(
+                "Inspect mrt.diffuse, mrt.specular and mrt.ambient. Switch slides_order off: "
+                "the errors stop and the picture stays the same.");
+            break;
+        case Sharpen:
+            ImGui::TextWrapped(
+                "Left: red where the float target holds more than 1, blue below 0; the RGBA8 "
+                "target (right) holds neither.");
+            break;
+        case Deferred:
+            ImGui::TextWrapped(
+                "Inspect gbuffer.albedo, gbuffer.normal and gbuffer.depth, or gbuffer.view_normal "
+                "(normals as colours) and gbuffer.view_depth (linear distance).");
+            break;
+        case Layout:
+            ImGui::TextWrapped(
+                "Left: the position error (blue 1 mm, green 1 cm, yellow 10 cm, red 1 m). Try "
+                "layout fat with origin_offset 10000 m.");
+            break;
+        case ManyLights:
+            ImGui::TextWrapped("Left: lights per tile. Set culling to none to compare the lighting time.");
+            break;
+        default:
+            ImGui::TextWrapped(
+                "Inspect reflection.color: the scene from the mirrored camera, nothing below the "
+                "pond.");
+            break;
+    }
+}
+
+}  // namespace lesson10

@@ -1,0 +1,17 @@
+#version 450 core
+// The mirror's surface over the lit picture: the reflection under this pixel, blended in at the
+// mirror's strength (alpha). The reflection was drawn with the same projection, so the pixel's own
+// place in the output, as a fraction, is where its reflection is, whatever the reflection's size.
+layout(binding = 0) uniform sampler2D reflection;
+layout(binding = 1) uniform sampler2D sceneDepth;  // the G-buffer's: what is in front of the mirror
+layout(location = 27) uniform float strength;
+layout(location = 28) uniform vec2 outputSize;
+layout(location = 0) out vec4 color;
+
+void main() {
+    // The depth test by hand: the same vertex shader and matrices drew the plane into the G-buffer, so
+    // its own depth matches to rounding; anything in front of it is nearer by far more than 1e-6.
+    if (gl_FragCoord.z > texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r + 1e-6) discard;
+    vec2 uv = gl_FragCoord.xy / max(outputSize, vec2(1.0));
+    color = vec4(texture(reflection, uv).rgb, clamp(strength, 0.0, 1.0));
+}
