@@ -1,0 +1,177 @@
+#include "effects/clouds/cloud_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include "base/log.hpp"
+#include "image/png_file.hpp"
+
+namespace fx {
+namespace {
+
+// clouds.frag
+constexpr GLint kInverseProjection = 0;
+constexpr GLint kViewToWorldRotation = 1;
+constexpr GLint kCameraPosition = 2;
+constexpr GLint kOffsets = 3;
+constexpr GLint kRangeCountStep = 4;
+constexpr GLint kThresholdPair = 5;
+constexpr GLint kCloudColour = 6;
+constexpr GLint kScales = 7;
+constexpr GLint kStage = 8;
+constexpr GLint kFeatures = 9;
+constexpr GLint kShadowOffset = 10;
+constexpr GLint kDither = 11;
+constexpr GLint kFrameIndex = 12;
+constexpr GLint kPlaneHeight = 13;
+
+constexpr GLuint kDensityUnit = 0;
+constexpr GLuint kDepthUnit = 1;
+
+// Four PCF taps a sample: 8 samples already cost 8 lookups a pixel, and the clouds are soft.
+constexpr int kCloudShadowTaps = 4;
+
+double wrapped(double v) {
+    double w = v - std::floor(v);
+    return w >= 1.0 ? 0.0 : w;
+}
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+}  // namespace
+
+const char* cloudDitherName(CloudDither dither) {
+    switch (dither) {
+        case CloudDither::none:
+            return "none";
+        case CloudDither::bayer:
+            return "Bayer 4x4";
+        case CloudDither::ign:
+            return "interleaved gradient noise";
+        case CloudDither::r2:
+            return "R2 (blue-noise-like)";
+    }
+    return "?";
+}
+
+glm::vec4 cloudShaderOffsets(const CloudFrameSettings& s) {
+    // uv = (p - camera) * scale + (camera * scale + scroll): the second bracket in double, wrapped.
+    glm::dvec3 camera(s.cameraPosition);
+    glm::vec4 out;
+    for (int layer = 0; layer < 2; ++layer) {
+        double scale = layer == 0 ? s.scales.x : s.scales.y;
+        if (!std::isfinite(scale) || !std::isfinite(camera.x) || !std::isfinite(camera.z)) scale = 0.0;
+        out[layer * 2 + 0] = float(wrapped(camera.x * scale + double(s.scrollOffset[layer * 2 + 0])));
+        out[layer * 2 + 1] = float(wrapped(camera.z * scale + double(s.scrollOffset[layer * 2 + 1])));
+    }
+    return out;
+}
+
+ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
+    ShadowLookup l = sceneLookup;
+    l.normalOffsetMetres = 0.0f;
+    l.filterTaps = std::min(sceneLookup.filterTaps, kCloudShadowTaps);
+    return l;
+}
+
+Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
+    auto image = readPng(path);
+    if (!image) return Error{image.error()};
+    CloudDensityTexture t;
+    // sRGB storage: sampling decodes it, as the chapter's loader does (its part 4: about 30 % of the
+    // sky covered at threshold 0.5 this way, 93 % if the stored values were read raw).
+    t.texture_ =
+        gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, image->width, image->height, 1, "clouds.density");
+    glTextureSubImage2D(t.texture_.name(), 0, 0, 0, image->width, image->height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image->texels.data());
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return t;
+}
+
+std::uint64_t CloudDensityTexture::bytes() const {
+    return texture_ ? textureBytes(texture_.spec()) : 0;
+}
+
+CloudPass CloudPass::create() {
+    CloudPass p;
+    p.program_ = FullscreenPass("effects/clouds/clouds.frag", "clouds");
+    return p;
+}
+
+PassState CloudPass::state() {
+    PassState s = FullscreenPass::state();
+    s.blend = true;
+    s.blendFunction = BlendFunction::alpha();
+    return s;
+}
+
+void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
+    (void)target;
+    GLuint prog = program();
+    glm::mat4 inverseProjection = glm::inverse(s.projection);
+    if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
+    glm::mat3 rotation = glm::transpose(glm::mat3(s.view));  // the inverse of a rotation
+    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
+    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
+    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
+    glm::vec4 offsets = cloudShaderOffsets(s);
+    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+    glm::vec4 rcs = s.march.rangeCountStep();
+    if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
+    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));
+    glm::vec2 th = s.march.thresholdPair();
+    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
+    glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
+    glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
+    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
+    glProgramUniform1i(prog, kStage, int(s.stage));
+    glProgramUniform1i(prog, kFeatures, s.features);
+    glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
+    glProgramUniform1i(prog, kDither, int(s.dither));
+    glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
+    glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
+}
+
+Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
+                         const CloudFrameSettings& settings) const {
+    const bool depth =
+        (settings.features & cloudDepthAware) != 0 && settings.stage != CloudStage::screenTexture;
+    const bool shadows = (settings.features & cloudShadows) != 0 && settings.stage == CloudStage::march &&
+                         inputs.shadow && inputs.shadow->pass;
+    TextureHandle depthTexture = inputs.depth;
+    TextureHandle shadowMap = shadows ? inputs.shadow->map : TextureHandle{};
+    ShadowLookup lookup = shadows ? cloudShadowLookup(inputs.shadow->lookup) : ShadowLookup{};
+    CloudFrameSettings s = settings;
+    // The threshold that leaves no cloud: nothing to find, and no 1/(1 - threshold) in the shader.
+    if ((s.features & cloudThreshold) && s.march.thresholdClears) s.march.drawn = false;
+    const CloudPass* self = this;
+    const CloudDensityTexture* densityTexture = &density;
+    Pass& pass = graph.addPass("clouds", [self, s, depth, depthTexture, shadows, shadowMap, lookup,
+                                          densityTexture](PassContext& ctx) {
+        self->setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
+        if (shadows) {
+            ShadowMap::bindForLookup(self->program(), ctx.native(shadowMap), lookup);
+        } else {
+            ShadowMap::bindForLookup(self->program(), 0, ShadowLookup{});
+        }
+        GLuint depthName = depth ? ctx.native(depthTexture) : 0;
+        self->program_.draw({densityTexture->name(), depthName});
+    });
+    pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
+    if (depth) pass.read(inputs.depth);
+    if (shadows) pass.read(shadowMap);
+    return pass;
+}
+
+}  // namespace fx
