@@ -27,6 +27,7 @@ constexpr GLint kShadowOffset = 10;
 constexpr GLint kDither = 11;
 constexpr GLint kFrameIndex = 12;
 constexpr GLint kPlaneHeight = 13;
+constexpr GLint kTargetSize = 14;
 
 constexpr GLuint kDensityUnit = 0;
 constexpr GLuint kDepthUnit = 1;
@@ -85,13 +86,17 @@ ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
 Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
     auto image = readPng(path);
     if (!image) return Error{image.error()};
+    return fromImage(*image);
+}
+
+CloudDensityTexture CloudDensityTexture::fromImage(const ByteImage& rgba) {
     CloudDensityTexture t;
     // sRGB storage: sampling decodes it, as the chapter's loader does (its part 4: about 30 % of the
     // sky covered at threshold 0.5 this way, 93 % if the stored values were read raw).
     t.texture_ =
-        gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, image->width, image->height, 1, "clouds.density");
-    glTextureSubImage2D(t.texture_.name(), 0, 0, 0, image->width, image->height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        image->texels.data());
+        gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, rgba.width, rgba.height, 1, "clouds.density");
+    glTextureSubImage2D(t.texture_.name(), 0, 0, 0, rgba.width, rgba.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        rgba.texels.data());
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -117,7 +122,6 @@ PassState CloudPass::state() {
 }
 
 void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
-    (void)target;
     GLuint prog = program();
     glm::mat4 inverseProjection = glm::inverse(s.projection);
     if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
@@ -141,6 +145,8 @@ void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const Sh
     glProgramUniform1i(prog, kDither, int(s.dither));
     glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
     glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
+    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
+                       float(std::max(target.height, 1)));
 }
 
 Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,

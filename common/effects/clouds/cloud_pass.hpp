@@ -22,6 +22,7 @@
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "gl/texture.hpp"
+#include "image/image.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -80,6 +81,8 @@ class CloudDensityTexture {
 public:
     CloudDensityTexture() = default;
     static Result<CloudDensityTexture> load(const std::string& path);
+    // From RGBA texels (rows bottom-up), e.g. a constant density for tests.
+    static CloudDensityTexture fromImage(const ByteImage& rgba);
     GLuint name() const { return texture_.name(); }
     std::uint64_t bytes() const;
     explicit operator bool() const { return static_cast<bool>(texture_); }

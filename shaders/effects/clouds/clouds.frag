@@ -29,6 +29,9 @@ layout(location = 10) uniform float shadowOffset;  // metres: one texel of the s
 layout(location = 11) uniform int dither;          // 0 none, 1 Bayer 4x4, 2 IGN, 3 R2
 layout(location = 12) uniform int frameIndex;      // moves the IGN and R2 patterns every frame
 layout(location = 13) uniform float planeHeight;   // stages 0 and 1
+// The target's size: the pixel's position on the screen is gl_FragCoord / targetSize, exact at pixel
+// centres, and it indexes the depth texture (the same size) directly.
+layout(location = 14) uniform vec2 targetSize;
 
 // Feature bits (CloudFeature in cloud_pass.hpp).
 const int kRejectBehind = 1;       // plane: no hit behind the eye (no mirrored layer)
@@ -82,7 +85,8 @@ float ditherOffset() {
 // The scene surface seen through this pixel, relative to the camera (or the far-plane point on sky
 // pixels): the chapter's reconstruction, with the same inverse projection that drew the scene.
 vec3 surfaceFromCamera(float depth01) {
-    vec4 ndc = vec4(uv * 2.0 - 1.0, depth01 * 2.0 - 1.0, 1.0);
+    vec2 screen = gl_FragCoord.xy / targetSize;
+    vec4 ndc = vec4(screen * 2.0 - 1.0, depth01 * 2.0 - 1.0, 1.0);
     vec4 h = inverseProjection * ndc;
     // The perspective divide done by hand; w is never 0 for a perspective inverse, but guard it.
     vec3 viewPos = h.xyz / (abs(h.w) > 1e-30 ? h.w : 1e-30);
