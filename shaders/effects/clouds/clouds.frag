@@ -116,7 +116,7 @@ void main() {
         if (has(kRejectBehind) && t < 0.0) return;  // behind the eye: without this, a mirrored layer
         // Depth: the hit must be in front of the surface; along a ray y is monotonic, so the chapter
         // compares heights (down: hit above the surface; up: hit below it).
-        if (has(kDepthAware) && !sky) {
+        if (has(kDepthAware)) {  // on a sky pixel W is the far-plane point, as in the chapter
             float surfaceY = camY + w.y;
             bool inFront = vy < 0.0 ? planeHeight >= surfaceY : planeHeight <= surfaceY;
             if (!inFront) return;
@@ -157,15 +157,17 @@ void main() {
         if (tmin > tmax) return;
     }
     float rangeMin = bottom, rangeMax = top;
-    if (has(kDepthAware) && !byDistance && !sky) {
+    // The chapter's heights: on a sky pixel W is the far-plane point, so the far plane is the clouds'
+    // draw distance (hard case 5); the distance test below leaves sky pixels unlimited instead.
+    if (has(kDepthAware) && !byDistance) {
         float surfaceY = camY + w.y;
         rangeMin = max(surfaceY, bottom);
         rangeMax = min(surfaceY, top);
     }
     if (!has(kEyeInside)) {
         // Before the chapter's §2.1 the samples are tested against the object only, not the faces.
-        rangeMin = has(kDepthAware) && !sky ? camY + w.y : -3.0e38;
-        rangeMax = has(kDepthAware) && !sky ? camY + w.y : 3.0e38;
+        rangeMin = has(kDepthAware) ? camY + w.y : -3.0e38;
+        rangeMax = has(kDepthAware) ? camY + w.y : 3.0e38;
     }
 
     vec3 stepVec = v * (stepY / max(abs(vy), kMinSlope));
