@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <imgui.h>
 
@@ -61,6 +62,12 @@ void CloudsLesson::declareParams(ParamSet& params) {
         params.addChoice("dither", &dither_, {"none", "bayer", "ign", "r2"},
                          "Step 9: ray-start jitter (Bayer 4x4 is fixed; IGN and R2 move every frame)");
     dither.knob = Knob{{0, 1, 2, 3}, 0, "dither"};
+    Param& accumulate = params.addChoice("accumulate", &accumulate_, {"off", "on"},
+                                         "Step 9: average the clouds over frames, reprojected (up to 16)");
+    accumulate.knob = Knob{{0, 1}, 0, "accumulation"};
+    Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"},
+                                         "Step 9: march at the output's resolution or half of it");
+    resolution.knob = Knob{{0, 1}, 0, "resolution"};
     params.addBool("beer_lambert", &beerLambert_,
                    "Step 9: opacity from each step's length (the same picture at any sample count)");
     params.addBool("distance_occlusion", &distanceOcclusion_,
@@ -75,6 +82,7 @@ Status CloudsLesson::init(const Scene& scene) {
     shadows_ = ShadowMap::create();
     lit_ = ShadowLitPass::create();
     clouds_ = CloudPass::create();
+    temporal_ = CloudTemporal::create();
     present_ = OutputTransformPass::create();
     if (!scene.clouds.empty()) {
         // Only a scene with a cloud layer loads the texture: without one, no bytes and no pass.
@@ -162,7 +170,8 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, {});
     HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map);
 
-    CloudFrameSettings s = settingsForStep(frame.step, int(frame.index % 1024));
+    CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
+    jitterFrame_ = (jitterFrame_ + 1) % 1024;
     // The same matrices the scene pass drew with (cameraMatrices at the output's size).
     CameraMatrices camera = cameraMatrices(scene.camera, frame.size.width, frame.size.height);
     s.view = camera.view;
@@ -170,10 +179,33 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     s.cameraPosition = camera.position;
     {
         PassGroup::Scope in(graph, cloudGroup_);  // runs only when the scene has a cloud layer
-        clouds_.declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+        const bool temporal = frame.step == Beyond && (accumulate_ == 1 || resolution_ == 1);
+        if (temporal) {
+            CloudTemporalOptions options{accumulate_ == 1, resolution_ == 1};
+            temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
+                              settingsKey(s, frame.step), frame.size);
+        } else {
+            clouds_.declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+        }
     }
     shadows_.declareDepthView(graph, map);
     present_.declare(graph, hdr.color);
+}
+
+std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) const {
+    // FNV-1a over the numbers that change the picture (not the camera, which is reprojected, nor the
+    // jitter, which is what the average is for).
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        for (int i = 0; i < 8; ++i) h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ull;
+    };
+    for (double v : {double(step), double(s.features), double(s.dither), double(s.march.steps),
+                     double(s.march.bottom), double(s.march.top), double(s.march.threshold),
+                     double(s.scales.x), double(s.scales.y), double(resolution_), double(cameraLift_)})
+        mix(v);
+    return h;
 }
 
 void CloudsLesson::drawPanel(const FrameInfo& frame) {
@@ -188,7 +220,7 @@ void CloudsLesson::drawPanel(const FrameInfo& frame) {
 }
 
 void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
-    CloudFrameSettings s = settingsForStep(frame.step, int(frame.index % 1024));
+    CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     const bool march = s.stage == CloudStage::march;
     out.add("cloudLayer", !scene_ || scene_->clouds.empty() ? "none" : "first of the scene's", "cloud layer");
     out.add("densityTextureBytes", std::to_string(density_.bytes()), "density texture (bytes, SRGB8_ALPHA8)");
@@ -199,6 +231,11 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     }
     if (frame.step >= ThresholdHeight)
         out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
+    if (frame.step == Beyond) {
+        out.add("framesAveraged", std::to_string(temporal_.framesAveraged()), "frames in the average");
+        out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
+        out.add("resolution", resolution_ == 1 ? "half" : "full", "march resolution");
+    }
     glm::vec4 o = scroll_.offset();
     out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");
     if (frame.previousFrame) out.add("cloudMs", cat(cloudGroup_.timeMs(*frame.previousFrame)), "clouds (ms)");

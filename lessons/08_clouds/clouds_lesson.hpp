@@ -1,11 +1,13 @@
 #pragma once
 // Lesson 08: ray-marched clouds (the Clouds chapter: its sections 1.1 to 2.6, pitfalls and hard cases).
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "app/lesson.hpp"
 #include "effects/clouds/cloud_march.hpp"
 #include "effects/clouds/cloud_pass.hpp"
+#include "effects/clouds/cloud_temporal.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_lit_pass.hpp"
@@ -54,6 +56,11 @@ private:
     int dither_ = int(fx::CloudDither::ign);
     bool beerLambert_ = true;
     bool distanceOcclusion_ = true;
+    int accumulate_ = 1;  // step 9: 0 off, 1 on
+    int resolution_ = 0;  // step 9: 0 full, 1 half
+
+    // What restarts the running average when it changes (everything but the camera and the jitter).
+    std::uint64_t settingsKey(const fx::CloudFrameSettings& s, int step) const;
 
     const fx::Scene* scene_ = nullptr;
     fx::Scene viewScene_;  // the scene with the camera lifted by camera_lift (the same for every pass)
@@ -64,6 +71,8 @@ private:
     fx::CloudPass clouds_;
     fx::CloudDensityTexture density_;  // loaded only when the scene has a cloud layer
     fx::OutputTransformPass present_;
+    fx::CloudTemporal temporal_;
+    int jitterFrame_ = 0;  // counts declared frames: moves IGN and R2 (the bench repeats one frame index)
     fx::CloudScroll scroll_;
     glm::dvec4 scrollSpeed_{0.0};
     glm::vec3 cloudColour_{1.0f};

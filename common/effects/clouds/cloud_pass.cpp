@@ -28,6 +28,8 @@ constexpr GLint kDither = 11;
 constexpr GLint kFrameIndex = 12;
 constexpr GLint kPlaneHeight = 13;
 constexpr GLint kTargetSize = 14;
+constexpr GLint kPremultiply = 15;
+constexpr GLint kDepthStride = 16;
 
 constexpr GLuint kDensityUnit = 0;
 constexpr GLuint kDepthUnit = 1;
@@ -145,39 +147,86 @@ void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const Sh
     glProgramUniform1i(prog, kDither, int(s.dither));
     glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
     glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
+    glProgramUniform1i(prog, kPremultiply, s.premultiplied ? 1 : 0);
+    glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
     glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
                        float(std::max(target.height, 1)));
 }
 
-Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
-                         const CloudFrameSettings& settings) const {
-    const bool depth =
-        (settings.features & cloudDepthAware) != 0 && settings.stage != CloudStage::screenTexture;
-    const bool shadows = (settings.features & cloudShadows) != 0 && settings.stage == CloudStage::march &&
-                         inputs.shadow && inputs.shadow->pass;
-    TextureHandle depthTexture = inputs.depth;
-    TextureHandle shadowMap = shadows ? inputs.shadow->map : TextureHandle{};
-    ShadowLookup lookup = shadows ? cloudShadowLookup(inputs.shadow->lookup) : ShadowLookup{};
-    CloudFrameSettings s = settings;
+namespace {
+
+// What a cloud march pass needs from its inputs, resolved once for both ways of declaring it.
+struct MarchInputs {
+    bool depth = false;
+    bool shadows = false;
+    TextureHandle depthTexture;
+    TextureHandle shadowMap;
+    ShadowLookup lookup;
+};
+
+MarchInputs marchInputs(const CloudInputs& inputs, CloudFrameSettings& s) {
+    MarchInputs m;
+    m.depth = (s.features & cloudDepthAware) != 0 && s.stage != CloudStage::screenTexture;
+    m.shadows = (s.features & cloudShadows) != 0 && s.stage == CloudStage::march && inputs.shadow &&
+                inputs.shadow->pass;
+    m.depthTexture = inputs.depth;
+    if (m.shadows) {
+        m.shadowMap = inputs.shadow->map;
+        m.lookup = cloudShadowLookup(inputs.shadow->lookup);
+    }
     // The threshold that leaves no cloud: nothing to find, and no 1/(1 - threshold) in the shader.
     if ((s.features & cloudThreshold) && s.march.thresholdClears) s.march.drawn = false;
+    return m;
+}
+
+}  // namespace
+
+Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
+                         const CloudFrameSettings& settings) const {
+    CloudFrameSettings s = settings;
+    s.premultiplied = false;
+    s.depthStride = 1;
+    MarchInputs m = marchInputs(inputs, s);
     const CloudPass* self = this;
     const CloudDensityTexture* densityTexture = &density;
-    Pass& pass = graph.addPass("clouds", [self, s, depth, depthTexture, shadows, shadowMap, lookup,
-                                          densityTexture](PassContext& ctx) {
-        self->setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
-        if (shadows) {
-            ShadowMap::bindForLookup(self->program(), ctx.native(shadowMap), lookup);
-        } else {
-            ShadowMap::bindForLookup(self->program(), 0, ShadowLookup{});
-        }
-        GLuint depthName = depth ? ctx.native(depthTexture) : 0;
-        self->program_.draw({densityTexture->name(), depthName});
+    Pass& pass = graph.addPass("clouds", [self, s, m, densityTexture](PassContext& ctx) {
+        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
+                   m.lookup, densityTexture->name());
     });
     pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
-    if (depth) pass.read(inputs.depth);
-    if (shadows) pass.read(shadowMap);
+    if (m.depth) pass.read(inputs.depth);
+    if (m.shadows) pass.read(m.shadowMap);
     return pass;
+}
+
+TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inputs,
+                                      const CloudDensityTexture& density, CloudFrameSettings s,
+                                      int divisor) const {
+    divisor = std::max(divisor, 1);
+    s.premultiplied = true;
+    s.depthStride = divisor;
+    MarchInputs m = marchInputs(inputs, s);
+    const CloudPass* self = this;
+    const CloudDensityTexture* densityTexture = &density;
+    Pass& pass = graph.addPass("clouds march", [self, s, m, densityTexture](PassContext& ctx) {
+        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
+                   m.lookup, densityTexture->name());
+    });
+    TextureHandle layer =
+        pass.create("clouds.layer", {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
+                    TextureUsage::ColorAttachment);
+    pass.setState(FullscreenPass::state());
+    if (m.depth) pass.read(inputs.depth);
+    if (m.shadows) pass.read(m.shadowMap);
+    return layer;
+}
+
+void CloudPass::draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
+                     const ShadowLookup& lookup, GLuint density) const {
+    const bool shadows = shadowMap != 0;
+    setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
+    ShadowMap::bindForLookup(program(), shadowMap, shadows ? lookup : ShadowLookup{});
+    program_.draw({density, depth});
 }
 
 }  // namespace fx

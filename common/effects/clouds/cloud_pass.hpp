@@ -59,6 +59,9 @@ struct CloudFrameSettings {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     glm::vec3 cameraPosition{0.0f};
+    // Set by CloudPass::declareLayer: premultiplied output, and scene depth texels per target pixel.
+    bool premultiplied = false;
+    int depthStride = 1;
 };
 
 // The texture offsets the shader gets: the scroll plus the camera's position in texture units,
@@ -112,6 +115,13 @@ public:
     Pass& declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
                   const CloudFrameSettings& settings) const;
 
+    // Declares "clouds march": the same march into a texture of its own ("clouds.layer", RGBA16F,
+    // premultiplied colour) of `size` (the output's, or a fraction of it), for the temporal
+    // accumulation and the half-resolution path (cloud_temporal.hpp). Nothing is blended.
+    TextureHandle declareLayer(FrameGraph& graph, const CloudInputs& inputs,
+                               const CloudDensityTexture& density, CloudFrameSettings settings,
+                               int divisor) const;
+
     // Sets every uniform on the program (public for tests that draw without a graph).
     void setUniforms(const CloudFrameSettings& settings, Size2D target, const ShadowLookup* shadow) const;
 
@@ -119,6 +129,9 @@ public:
     static PassState state();
 
 private:
+    void draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
+              const ShadowLookup& lookup, GLuint density) const;
+
     FullscreenPass program_;
 };
 

@@ -32,6 +32,11 @@ layout(location = 13) uniform float planeHeight;   // stages 0 and 1
 // The target's size: the pixel's position on the screen is gl_FragCoord / targetSize, exact at pixel
 // centres, and it indexes the depth texture (the same size) directly.
 layout(location = 14) uniform vec2 targetSize;
+// 1: write premultiplied colour (rgb x alpha) into a cloud layer of its own, for accumulation and
+// upsampling; 0: straight alpha, blended over the scene directly (the chapter).
+layout(location = 15) uniform int premultiply;
+// Scene depth texels per pixel of this target: 1 at full resolution, 2 at half.
+layout(location = 16) uniform int depthStride;
 
 // Feature bits (CloudFeature in cloud_pass.hpp).
 const int kRejectBehind = 1;       // plane: no hit behind the eye (no mirrored layer)
@@ -93,14 +98,22 @@ vec3 surfaceFromCamera(float depth01) {
     return viewToWorldRotation * viewPos;
 }
 
+void march();
+
 void main() {
+    march();
+    if (premultiply != 0) color.rgb *= color.a;
+}
+
+void march() {
     color = vec4(0.0);
     if (stage == 0) {
         // Step 1: the texture glued to the screen.
         color = vec4(cloudColour, textureLod(density, uv, 0.0).r);
         return;
     }
-    float depth01 = has(kDepthAware) ? texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r : 1.0;
+    ivec2 depthTexel = min(ivec2(gl_FragCoord.xy) * max(depthStride, 1), textureSize(sceneDepth, 0) - 1);
+    float depth01 = has(kDepthAware) ? texelFetch(sceneDepth, depthTexel, 0).r : 1.0;
     bool sky = depth01 >= 1.0;
     vec3 w = surfaceFromCamera(depth01);  // W - camera
     float surfaceDistance = length(w);
