@@ -13,6 +13,34 @@ namespace lesson08 {
 
 using namespace fx;
 
+namespace {
+
+// Index 0 is "the knobs": every knob at its reference is the bench's reference picture (512 samples,
+// no jitter, no accumulation, full resolution). The others are the combinations the lesson compares
+// with the chapter's 8 samples and Bayer dither.
+const CloudsLesson::QualityPreset kQualityPresets[] = {
+    {"knobs", 0, CloudDither::none, false, false},
+    {"8 Bayer (chapter)", 8, CloudDither::bayer, false, false},
+    {"8 IGN", 8, CloudDither::ign, false, false},
+    {"8 IGN acc", 8, CloudDither::ign, true, false},
+    {"4 IGN acc", 4, CloudDither::ign, true, false},
+    {"2 IGN acc", 2, CloudDither::ign, true, false},
+    {"4 R2 acc", 4, CloudDither::r2, true, false},
+    {"4 IGN acc half", 4, CloudDither::ign, true, true},
+    {"8 IGN acc half", 8, CloudDither::ign, true, true},
+    {"16 IGN acc half", 16, CloudDither::ign, true, true},
+    {"32 none", 32, CloudDither::none, false, false},
+    {"100 none", 100, CloudDither::none, false, false},
+};
+constexpr int kQualityPresetCount = int(sizeof kQualityPresets / sizeof kQualityPresets[0]);
+
+}  // namespace
+
+CloudsLesson::QualityPreset CloudsLesson::quality() const {
+    if (quality_ > 0 && quality_ < kQualityPresetCount) return kQualityPresets[quality_];
+    return {"knobs", steps_, CloudDither(std::clamp(dither_, 0, 3)), accumulate_ == 1, resolution_ == 1};
+}
+
 LessonInfo CloudsLesson::info() const {
     return {8, "clouds", "Ray-marched clouds", "scenes/08_clouds.json"};
 }
@@ -68,6 +96,16 @@ void CloudsLesson::declareParams(ParamSet& params) {
     Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"},
                                          "Step 9: march at the output's resolution or half of it");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
+    std::vector<std::string> presetNames;
+    std::vector<double> presetValues;
+    for (int i = 0; i < kQualityPresetCount; ++i) {
+        presetNames.push_back(kQualityPresets[i].name);
+        presetValues.push_back(i);
+    }
+    Param& preset = params.addChoice("quality", &quality_, presetNames,
+                                     "Step 9: a combination of samples, jitter, accumulation and resolution "
+                                     "(knobs: the four knobs above)");
+    preset.knob = Knob{presetValues, 0, "combination"};
     params.addBool("beer_lambert", &beerLambert_,
                    "Step 9: opacity from each step's length (the same picture at any sample count)");
     params.addBool("distance_occlusion", &distanceOcclusion_,
@@ -152,13 +190,16 @@ CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const
                 cloudHeightShaping;
             s.dither = CloudDither::bayer;
             break;
-        default:  // Beyond
+        default: {  // Beyond
             f = cloudTwoScales | cloudDepthAware | cloudEyeInside | cloudShadows | cloudThreshold |
                 cloudHeightShaping;
             if (beerLambert_) f |= cloudBeerLambert;
             if (distanceOcclusion_) f |= cloudDistanceOcclusion;
-            s.dither = CloudDither(std::clamp(dither_, 0, 3));
+            QualityPreset q = quality();
+            s.dither = q.dither;
+            s.march = cloudMarch(bottom_, top_, q.steps, threshold_);
             break;
+        }
     }
     s.features = f;
     return s;
@@ -179,9 +220,10 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     s.cameraPosition = camera.position;
     {
         PassGroup::Scope in(graph, cloudGroup_);  // runs only when the scene has a cloud layer
-        const bool temporal = frame.step == Beyond && (accumulate_ == 1 || resolution_ == 1);
+        const QualityPreset q = quality();
+        const bool temporal = frame.step == Beyond && (q.accumulate || q.halfResolution);
         if (temporal) {
-            CloudTemporalOptions options{accumulate_ == 1, resolution_ == 1};
+            CloudTemporalOptions options{q.accumulate, q.halfResolution};
             temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
                               settingsKey(s, frame.step), frame.size);
         } else {
@@ -234,7 +276,8 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (frame.step == Beyond) {
         out.add("framesAveraged", std::to_string(temporal_.framesAveraged()), "frames in the average");
         out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
-        out.add("resolution", resolution_ == 1 ? "half" : "full", "march resolution");
+        out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
+        out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
     }
     glm::vec4 o = scroll_.offset();
     out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");

@@ -40,6 +40,17 @@ public:
         Beyond,
     };
 
+    // A combination of the quality knobs, named for the bench's error-against-cost plot.
+    struct QualityPreset {
+        const char* name;
+        float steps;
+        fx::CloudDither dither;
+        bool accumulate;
+        bool halfResolution;
+    };
+    // The knobs in effect in step 9: the preset's when one is chosen, else the parameters'.
+    QualityPreset quality() const;
+
     // What the cloud pass does in `step` (without the camera, which buildFrame adds).
     fx::CloudFrameSettings settingsForStep(int step, int frameIndex) const;
 
@@ -58,6 +69,8 @@ private:
     bool distanceOcclusion_ = true;
     int accumulate_ = 1;  // step 9: 0 off, 1 on
     int resolution_ = 0;  // step 9: 0 full, 1 half
+
+    int quality_ = 0;  // step 9: 0 the knobs above, else one of kQualityPresets
 
     // What restarts the running average when it changes (everything but the camera and the jitter).
     std::uint64_t settingsKey(const fx::CloudFrameSettings& s, int step) const;

@@ -220,6 +220,9 @@ void march() {
             dens += alpha * T;
         }
         p += stepVec;
+        // Nothing more can change the result: the ray has left the slab or reached the surface (every
+        // later sample fails the test), or the cloud is opaque (every later sample is weighted by T = 0).
+        if (tHere > tmax + stepLength || dens >= 0.9999) break;
     }
     dens = clamp(dens, 0.0, 1.0);
     if (has(kBeerLambert)) {
