@@ -12,6 +12,7 @@
 #include "base/paths.hpp"
 #include "effects/clouds/cloud_march.hpp"
 #include "effects/clouds/cloud_pass.hpp"
+#include "effects/clouds/cloud_temporal.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "gl/readback.hpp"
 #include "gl_test.hpp"
@@ -305,6 +306,67 @@ TEST_F(CloudsOnGl, TheWorldPositionFromDepthUsesTheMatricesThatDrewIt) {
         }
     }
     EXPECT_GT(floorPixels, w * h / 2);
+}
+
+TEST_F(CloudsOnGl, AJitterAveragedOverFramesConvergesToManySamples) {
+    // A floor inside the slab cuts every ray at another height: with 8 samples its opacity comes in
+    // bands. Interleaved gradient noise moves the start every frame; averaged over 16 frames (with
+    // reprojection, the camera still) the error against 512 samples falls well below one frame's.
+    const int w = 32, h = 24;
+    Camera cam = cameraAt({0, 5, 0}, 0, -40);
+    CloudFrameSettings s = marchSettings(cam, w, h);
+    s.features |= cloudBeerLambert | cloudDistanceOcclusion;
+    glm::mat4 inverseViewProjection = glm::inverse(s.projection * s.view);
+    std::vector<float> floorDepth(std::size_t(w * h), 1.0f);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            glm::vec4 far =
+                inverseViewProjection * glm::vec4((x + 0.5f) / w * 2 - 1, (y + 0.5f) / h * 2 - 1, 1, 1);
+            glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - s.cameraPosition);
+            if (dir.y >= 0) continue;
+            glm::vec3 hit = s.cameraPosition + dir * ((0.7f - s.cameraPosition.y) / dir.y);
+            glm::vec4 clip = s.projection * s.view * glm::vec4(hit, 1.0f);
+            floorDepth[std::size_t(y * w + x)] = clip.z / clip.w * 0.5f + 0.5f;
+        }
+    }
+    CloudFrameSettings reference = s;
+    reference.march = cloudMarch(0.0f, 2.0f, 512.0f, 0.5f);
+    FloatImage truth = run(reference, w, h, constant, floorDepth);
+
+    gl::Texture color = gl::Texture::create2D(TextureFormat::RGBA16F, w, h, 1, "test.scene.color");
+    gl::Texture depth = gl::Texture::create2D(TextureFormat::Depth32F, w, h, 1, "test.scene.depth");
+    glTextureSubImage2D(depth.name(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, floorDepth.data());
+    CloudTemporal temporal = CloudTemporal::create();
+    ASSERT_TRUE(temporal.usable());
+    auto rmse = [&](const FloatImage& x) {
+        double sum = 0;
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) sum += std::pow(double(x.texel(i, j, 3) - truth.texel(i, j, 3)), 2.0);
+        return std::sqrt(sum / double(w * h));
+    };
+    double firstError = 0, lastError = 0;
+    for (int frame = 0; frame < 16; ++frame) {
+        const float zero[4] = {0, 0, 0, 0};
+        glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
+        CloudFrameSettings f = s;
+        f.dither = CloudDither::ign;
+        f.frameIndex = frame;
+        FrameGraph graph(OutputTarget{{w, h}, "output", TextureFormat::RGBA8, 0});
+        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+        temporal.declare(graph, pass, {c, d, nullptr}, constant, f, {true, false}, 1u, {w, h});
+        Status status = graph.execute(pool, executor);
+        ASSERT_TRUE(status) << status.error();
+        graph.releaseTextures();
+        pool.endFrame();
+        FloatImage out = gl::readTexture(color);
+        ASSERT_TRUE(allFinite(out));
+        (frame == 0 ? firstError : lastError) = rmse(out);
+    }
+    glDisable(GL_BLEND);
+    EXPECT_EQ(temporal.framesAveraged(), 16);
+    EXPECT_GT(firstError, 0.01);  // one frame of 8 jittered samples is visibly off
+    EXPECT_LT(lastError, 0.5 * firstError);
 }
 
 class CloudsWithTheGeneratedTexture : public CloudsOnGl {
