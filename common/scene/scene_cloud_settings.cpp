@@ -1,28 +1,18 @@
 #include "scene/scene_cloud_settings.hpp"
 
-#include <charconv>
+#include "scene/scene_post.hpp"
 
 namespace fx {
-namespace {
-
-// The shortest text that reads back as the same float.
-std::string shortest(float value) {
-    char text[32];
-    auto [end, error] = std::to_chars(text, text + sizeof text, value);
-    return error == std::errc() ? std::string(text, end) : std::string("nan");
-}
-
-}  // namespace
 
 std::vector<SettingText> cloudLayerSettings(const std::vector<CloudLayer>& clouds) {
     if (clouds.empty()) return {};
     const CloudLayer& c = clouds.front();
     return {
-        {"clouds[0].bottom", shortest(c.bottom)},
-        {"clouds[0].top", shortest(c.top)},
-        {"clouds[0].noise[0].scale", shortest(c.noise[0].scale)},
-        {"clouds[0].noise[1].scale", shortest(c.noise[1].scale)},
-        {"clouds[0].threshold", shortest(c.threshold)},
+        {"clouds[0].bottom", settingNumberText(c.bottom)},
+        {"clouds[0].top", settingNumberText(c.top)},
+        {"clouds[0].noise[0].scale", settingNumberText(c.noise[0].scale)},
+        {"clouds[0].noise[1].scale", settingNumberText(c.noise[1].scale)},
+        {"clouds[0].threshold", settingNumberText(c.threshold)},
         {"clouds[0].steps", std::to_string(c.steps)},
     };
 }

@@ -4,17 +4,13 @@
 #include <cmath>
 
 namespace fx {
-namespace {
-
-double wrapped(double v) {
+double wrapUnit(double v) {
     double w = v - std::floor(v);
     return w >= 1.0 ? 0.0 : w;  // floor of a value just below an integer can round w up to 1
 }
 
-}  // namespace
-
 CloudScroll::CloudScroll(glm::dvec4 start) {
-    for (int i = 0; i < 4; ++i) offset_[i] = std::isfinite(start[i]) ? wrapped(start[i]) : 0.0;
+    for (int i = 0; i < 4; ++i) offset_[i] = std::isfinite(start[i]) ? wrapUnit(start[i]) : 0.0;
 }
 
 void CloudScroll::advance(const glm::dvec4& speedPerSecond, double seconds) {
@@ -23,7 +19,7 @@ void CloudScroll::advance(const glm::dvec4& speedPerSecond, double seconds) {
         if (!std::isfinite(speedPerSecond[i])) continue;
         // The product alone is wrapped first, so a huge time step cannot carry the sum past double's
         // spacing either.
-        offset_[i] = wrapped(offset_[i] + wrapped(speedPerSecond[i] * seconds));
+        offset_[i] = wrapUnit(offset_[i] + wrapUnit(speedPerSecond[i] * seconds));
     }
 }
 

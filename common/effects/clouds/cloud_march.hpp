@@ -43,6 +43,9 @@ private:
     glm::dvec4 offset_{0.0, 0.0, 0.3, 0.7};  // the chapter's starting offsets
 };
 
+// v minus its floor, in [0, 1): where a texture coordinate lands in a repeating texture.
+double wrapUnit(double v);
+
 // The chapter's own update, for comparison: a float that is never wrapped (the pitfall). Returns the
 // offset after one more step of `seconds`.
 glm::vec4 unwrappedCloudOffsetStep(const glm::vec4& offset, const glm::vec4& speedPerSecond, float seconds);

@@ -37,11 +37,6 @@ constexpr GLuint kDepthUnit = 1;
 // Four PCF taps a sample: 8 samples already cost 8 lookups a pixel, and the clouds are soft.
 constexpr int kCloudShadowTaps = 4;
 
-double wrapped(double v) {
-    double w = v - std::floor(v);
-    return w >= 1.0 ? 0.0 : w;
-}
-
 bool finite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -72,8 +67,8 @@ glm::vec4 cloudShaderOffsets(const CloudFrameSettings& s) {
     for (int layer = 0; layer < 2; ++layer) {
         double scale = layer == 0 ? s.scales.x : s.scales.y;
         if (!std::isfinite(scale) || !std::isfinite(camera.x) || !std::isfinite(camera.z)) scale = 0.0;
-        out[layer * 2 + 0] = float(wrapped(camera.x * scale + double(s.scrollOffset[layer * 2 + 0])));
-        out[layer * 2 + 1] = float(wrapped(camera.z * scale + double(s.scrollOffset[layer * 2 + 1])));
+        out[layer * 2 + 0] = float(wrapUnit(camera.x * scale + double(s.scrollOffset[layer * 2 + 0])));
+        out[layer * 2 + 1] = float(wrapUnit(camera.z * scale + double(s.scrollOffset[layer * 2 + 1])));
     }
     return out;
 }
