@@ -198,6 +198,23 @@ TEST_F(CloudsOnGl, DepthFromASurfaceStopsTheRayThereAndSkyDoesNot) {
     EXPECT_NEAR(alphaAt(sky, 1, 1), chapterOpacity(a, 8), kTolerance);
 }
 
+TEST_F(CloudsOnGl, ALevelRayInsideTheSlabStopsAtANearbyWallOnlyByDistance) {
+    // Hard case 4: the eye inside the slab looking level at a wall 3 m away. The chapter's height test
+    // cannot tell in front from behind when y does not change along the ray: all 8 samples count,
+    // 20 m of them through the wall. Compared by distance, only the samples at 0 and 2.5 m do.
+    const int w = 5, h = 5;
+    Camera cam = cameraAt({0, 1, 0}, 0, 0);
+    CloudFrameSettings s = marchSettings(cam, w, h);
+    std::vector<float> wall(std::size_t(w * h), depthForViewZ(s.projection, -3.0f));
+    FloatImage byHeight = run(s, w, h, constant, wall);
+    s.features |= cloudDistanceOcclusion;
+    FloatImage byDistance = run(s, w, h, constant, wall);
+    ASSERT_TRUE(allFinite(byHeight));
+    ASSERT_TRUE(allFinite(byDistance));
+    EXPECT_NEAR(alphaAt(byHeight, w / 2, h / 2), chapterOpacity(a, 8), kTolerance);
+    EXPECT_NEAR(alphaAt(byDistance, w / 2, h / 2), chapterOpacity(a, 2), kTolerance);
+}
+
 TEST_F(CloudsOnGl, ThresholdOneEqualFacesAndNoSamplesGiveNoCloudAndNoNaN) {
     Camera cam = cameraAt({0, 5, 0}, 0, -89.5f);
     CloudFrameSettings base = marchSettings(cam, 3, 3);
