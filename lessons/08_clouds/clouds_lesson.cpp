@@ -221,9 +221,9 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     {
         PassGroup::Scope in(graph, cloudGroup_);  // runs only when the scene has a cloud layer
         const QualityPreset q = quality();
-        // Without a cloud layer the direct pass is declared (and not called for): no history textures.
-        const bool temporal =
-            frame.step == Beyond && (q.accumulate || q.halfResolution) && !lacks(graph, SceneFeature::clouds);
+        // Step 9 always marches into a layer of its own ("clouds.result", what the bench compares).
+        // Without a cloud layer the direct pass is declared (and not called for): no textures at all.
+        const bool temporal = frame.step == Beyond && !lacks(graph, SceneFeature::clouds);
         if (temporal) {
             CloudTemporalOptions options{q.accumulate, q.halfResolution};
             temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,

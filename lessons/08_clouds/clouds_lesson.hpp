@@ -26,6 +26,8 @@ public:
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return Beyond; }
+    // Step 9's cloud layer as laid over the scene (full size unless marched at half resolution).
+    std::string benchTexture() const override { return "clouds.result"; }
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
     enum Step {

@@ -195,8 +195,8 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
 }
 
 TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inputs,
-                                      const CloudDensityTexture& density, CloudFrameSettings s,
-                                      int divisor) const {
+                                      const CloudDensityTexture& density, CloudFrameSettings s, int divisor,
+                                      const std::string& textureName) const {
     divisor = std::max(divisor, 1);
     s.premultiplied = true;
     s.depthStride = divisor;
@@ -208,7 +208,7 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
                    m.lookup, densityTexture->name());
     });
     TextureHandle layer =
-        pass.create("clouds.layer", {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
+        pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                     TextureUsage::ColorAttachment);
     pass.setState(FullscreenPass::state());
     if (m.depth) pass.read(inputs.depth);

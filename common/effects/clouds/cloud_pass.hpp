@@ -115,12 +115,12 @@ public:
     Pass& declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
                   const CloudFrameSettings& settings) const;
 
-    // Declares "clouds march": the same march into a texture of its own ("clouds.layer", RGBA16F,
+    // Declares "clouds march": the same march into a texture of its own (`textureName`, RGBA16F,
     // premultiplied colour) of `size` (the output's, or a fraction of it), for the temporal
     // accumulation and the half-resolution path (cloud_temporal.hpp). Nothing is blended.
     TextureHandle declareLayer(FrameGraph& graph, const CloudInputs& inputs,
-                               const CloudDensityTexture& density, CloudFrameSettings settings,
-                               int divisor) const;
+                               const CloudDensityTexture& density, CloudFrameSettings settings, int divisor,
+                               const std::string& textureName = "clouds.layer") const;
 
     // Sets every uniform on the program (public for tests that draw without a graph).
     void setUniforms(const CloudFrameSettings& settings, Size2D target, const ShadowLookup* shadow) const;

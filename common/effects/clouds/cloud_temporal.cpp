@@ -49,7 +49,11 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
                             const CloudTemporalOptions& options, std::uint64_t settingsKey,
                             Size2D outputSize) {
     const int divisor = options.halfResolution ? 2 : 1;
-    TextureHandle layer = march.declareLayer(graph, inputs, density, settings, divisor);
+    const bool accumulating = options.accumulate && !outputSize.empty();
+    // What the composite lays over the scene is always "clouds.result" (the bench compares it): the
+    // march's own output without accumulation, the average with it.
+    TextureHandle layer = march.declareLayer(graph, inputs, density, settings, divisor,
+                                             accumulating ? "clouds.layer" : "clouds.result");
     TextureHandle result = layer;
 
     if (!options.accumulate) {
@@ -107,9 +111,11 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
             glProgramUniform1i(prog, kDepthStride, u.depthStride);
             program->draw({ctx.native(layer), ctx.native(before), depth ? ctx.native(depthTexture) : 0});
         });
-        pass.read(layer).read(before).writeColor(after).setState(FullscreenPass::state());
+        result =
+            pass.create("clouds.result", {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
+                        TextureUsage::ColorAttachment);                                     // attachment 0
+        pass.read(layer).read(before).writeColor(after).setState(FullscreenPass::state());  // attachment 1
         if (depth) pass.read(inputs.depth);
-        result = after;
 
         previousViewProjection_ = settings.projection * settings.view;
         newest_ = 1 - newest_;

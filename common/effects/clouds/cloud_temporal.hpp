@@ -3,7 +3,8 @@
 // resolution), averaged over frames with reprojection, then blended over the scene.
 //
 //   clouds march ──► clouds.layer (RGBA16F, premultiplied; the output's size or half of it)
-//   clouds accumulate ──► clouds.history[n]   reads clouds.layer and clouds.history[n-1] (imports)
+//   clouds accumulate ──► clouds.result + clouds.history.next   reads clouds.layer and
+//                         clouds.history.previous (two imports, swapped every frame)
 //   clouds composite ──► scene.color          premultiplied "over", bilinear from the layer's size
 //
 // With a jitter that moves every frame (IGN, R2) each frame's banding error is different noise, and
@@ -11,7 +12,8 @@
 // camera: a pixel's cloud is taken to sit where its ray crosses the slab's middle (or at the surface,
 // if nearer), and last frame's value there is clamped to the range of this frame's 3x3 neighbourhood,
 // so clouds that moved or were uncovered do not leave ghosts. Any change of the settings, the size or
-// the step starts the average again.
+// the step starts the average again. Without accumulation the march writes clouds.result itself:
+// either way the composite reads clouds.result, the cloud layer's final output (the bench compares it).
 #include <cstdint>
 
 #include <glm/mat4x4.hpp>

@@ -1,7 +1,8 @@
 #version 450 core
 // The cloud layer averaged over frames (effects/clouds/cloud_temporal.hpp): this frame's march mixed
 // with last frame's result, reprojected and clamped to this frame's neighbourhood. Premultiplied RGBA.
-layout(location = 0) out vec4 color;
+layout(location = 0) out vec4 color;         // clouds.result, for the composite (and the bench)
+layout(location = 1) out vec4 historyOut;    // the same, kept for next frame
 
 layout(binding = 0) uniform sampler2D current;  // clouds.layer
 layout(binding = 1) uniform sampler2D history;  // last frame's result, the same size
@@ -16,7 +17,14 @@ layout(location = 4) uniform float currentWeight;  // 1: no history (the first f
 layout(location = 5) uniform vec2 targetSize;
 layout(location = 6) uniform int depthStride;
 
+void accumulate();
+
 void main() {
+    accumulate();
+    historyOut = color;
+}
+
+void accumulate() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 last = textureSize(current, 0) - 1;
     vec4 now = texelFetch(current, p, 0);
