@@ -14,6 +14,7 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "scene/scene_cloud_settings.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_post.hpp"
 
@@ -85,8 +86,11 @@ std::optional<int> loadLessonScene(RunSession& s) {
     }
     s.scene = std::move(*scene);
     std::vector<SettingText> sceneSettings = postEffectSettings(s.scene.postEffects);
-    if (auto applied = s.params.applyScene(sceneSettings, postEffectSettingPaths(), sceneFile.string());
-        !applied) {
+    std::vector<std::string> knownSettings = postEffectSettingPaths();
+    for (SettingText& setting : cloudLayerSettings(s.scene.clouds))
+        sceneSettings.push_back(std::move(setting));
+    for (std::string& path : cloudLayerSettingPaths()) knownSettings.push_back(std::move(path));
+    if (auto applied = s.params.applyScene(sceneSettings, knownSettings, sceneFile.string()); !applied) {
         std::cerr << s.exe << ": " << applied.error() << "\n";
         return 2;
     }

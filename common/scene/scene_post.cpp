@@ -8,19 +8,12 @@
 namespace fx {
 namespace {
 
-// The shortest text that reads back as the same float, so a parameter gets exactly the scene's value.
-std::string numberText(float value) {
-    char text[32];
-    auto [end, error] = std::to_chars(text, text + sizeof text, value);
-    return error == std::errc() ? std::string(text, end) : std::string("nan");
-}
-
 // Collects one effect's settings under "postEffects.<effect>.".
 class SettingList {
 public:
     SettingList(std::vector<SettingText>& out, PostEffect effect)
         : out_(out), prefix_(cat("postEffects.", enumName(effect), ".")) {}
-    void number(std::string_view field, float value) { add(field, numberText(value)); }
+    void number(std::string_view field, float value) { add(field, settingNumberText(value)); }
     void integer(std::string_view field, int value) { add(field, std::to_string(value)); }
     template <class E>
     void name(std::string_view field, E value) {
@@ -36,6 +29,12 @@ private:
 };
 
 }  // namespace
+
+std::string settingNumberText(float value) {
+    char text[32];
+    auto [end, error] = std::to_chars(text, text + sizeof text, value);
+    return error == std::errc() ? std::string(text, end) : std::string("nan");
+}
 
 std::vector<SettingText> postEffectSettings(const PostEffects& post) {
     std::vector<SettingText> out;

@@ -84,6 +84,8 @@ struct PostEffects {
 // parameter takes: {"postEffects.bloom.threshold", "1"}, {"postEffects.radialBlur.center[0]", "0.5"},
 // {"postEffects.toneMap.operator", "filmic"}.
 std::vector<SettingText> postEffectSettings(const PostEffects& post);
+// The shortest text that reads back as the same float, so a parameter gets exactly the scene's value.
+std::string settingNumberText(float value);
 // Every setting path a scene file can have, whether this one asks for the effect or not.
 std::vector<std::string> postEffectSettingPaths();
 

@@ -116,6 +116,29 @@ TEST_F(CloudDensity, BlobsAreFortyToSixtyTexelsAcross) {
     EXPECT_LT(autocorrelation(64), 0.05);
 }
 
+TEST_F(CloudDensity, CoverageDependsOnTheColourSpaceAsTheChapterMeasured) {
+    // The Clouds chapter's part 4: the sum of two independent samples against threshold 0.5 covers
+    // about 30 % of the sky when the texture is sampled sRGB-decoded (as the lesson stores it), and
+    // about 93 % when the stored values are read raw.
+    const ByteImage& im = *image_;
+    auto decode = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
+    std::size_t decodedCovered = 0, rawCovered = 0, n = 0;
+    double decodedMean = 0;
+    for (int y = 0; y < im.height; y += 2) {
+        for (int x = 0; x < im.width; x += 2) {
+            // Two far-apart texels stand for the two layers at unrelated scales.
+            float a = value(im, x, y), b = value(im, (x + 173) % im.width, (y + 311) % im.height);
+            decodedCovered += decode(a) + decode(b) > 0.5f;
+            rawCovered += a + b > 0.5f;
+            decodedMean += decode(a);
+            ++n;
+        }
+    }
+    EXPECT_NEAR(double(decodedCovered) / double(n), 0.30, 0.05);
+    EXPECT_NEAR(double(rawCovered) / double(n), 0.93, 0.04);
+    EXPECT_NEAR(decodedMean / double(n), 0.203, 0.02);  // the chapter's decoded mean
+}
+
 TEST(FireSprite, AlphaIsAnUprightSoftTeardrop) {
     ByteImage sprite = fx::assetgen::fireSprite();
     ASSERT_EQ(sprite.channels, 4);

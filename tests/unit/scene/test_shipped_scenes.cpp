@@ -29,6 +29,7 @@ const std::set<std::string> kGeneratedAssets = {
     "models/character.gltf",        // skinned, with an animation clip named "walk"
     "textures/ground_checker.png",  // ground texture
     "textures/fire_sprite.png",     // the fire particle's alpha shape (lesson 07)
+    "textures/cloud_density.png",   // the Clouds chapter's density texture
 };
 
 struct ShippedScene {
@@ -44,6 +45,7 @@ const ShippedScene kShippedScenes[] = {
     {"05_radial_blur.json", {}},
     {"06_bloom.json", {}},
     {"07_fire_emitter.json", {"textures/fire_sprite.png"}},
+    {"08_clouds.json", {"textures/cloud_density.png", "textures/ground_checker.png"}},
     {"10_deferred_shading.json", {}},
 };
 
@@ -123,6 +125,21 @@ TEST(ShippedScenes, ProgramObjectsIsPlain) {
     EXPECT_FALSE(f.has(SceneFeature::shadows));
     EXPECT_FALSE(f.has(SceneFeature::hdrEmissive));
     EXPECT_EQ(f.postEffects, fx::PostEffects{});
+}
+
+TEST(ShippedScenes, CloudsHasTheChaptersLayerAndASunThatCastsShadows) {
+    fx::Scene scene = loadShipped("08_clouds.json");
+    fx::SceneFeatures f = fx::features(scene);
+    EXPECT_EQ(f.cloudLayers, 1);
+    EXPECT_EQ(f.shadowCastingLights, 1);
+    const fx::CloudLayer& layer = scene.clouds.at(0);
+    // The Clouds chapter's slab (0 to 2 m), scales (1/311, 1/127), threshold and sample count.
+    EXPECT_EQ(layer.bottom, 0.0f);
+    EXPECT_EQ(layer.top, 2.0f);
+    EXPECT_NEAR(layer.noise[0].scale, 1.0f / 311.0f, 1e-6f);
+    EXPECT_NEAR(layer.noise[1].scale, 1.0f / 127.0f, 1e-6f);
+    EXPECT_EQ(layer.threshold, 0.5f);
+    EXPECT_EQ(layer.steps, 8);
 }
 
 TEST(ShippedScenes, SkinnedShadowsHasASkinnedMeshAndASun) {

@@ -1,0 +1,227 @@
+#include "effects/clouds/cloud_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include "base/log.hpp"
+#include "image/png_file.hpp"
+
+namespace fx {
+namespace {
+
+// clouds.frag
+constexpr GLint kInverseProjection = 0;
+constexpr GLint kViewToWorldRotation = 1;
+constexpr GLint kCameraPosition = 2;
+constexpr GLint kOffsets = 3;
+constexpr GLint kRangeCountStep = 4;
+constexpr GLint kThresholdPair = 5;
+constexpr GLint kCloudColour = 6;
+constexpr GLint kScales = 7;
+constexpr GLint kStage = 8;
+constexpr GLint kFeatures = 9;
+constexpr GLint kShadowOffset = 10;
+constexpr GLint kDither = 11;
+constexpr GLint kFrameIndex = 12;
+constexpr GLint kPlaneHeight = 13;
+constexpr GLint kTargetSize = 14;
+constexpr GLint kPremultiply = 15;
+constexpr GLint kDepthStride = 16;
+
+constexpr GLuint kDensityUnit = 0;
+constexpr GLuint kDepthUnit = 1;
+
+// Four PCF taps a sample: 8 samples already cost 8 lookups a pixel, and the clouds are soft.
+constexpr int kCloudShadowTaps = 4;
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+}  // namespace
+
+const char* cloudDitherName(CloudDither dither) {
+    switch (dither) {
+        case CloudDither::none:
+            return "none";
+        case CloudDither::bayer:
+            return "Bayer 4x4";
+        case CloudDither::ign:
+            return "interleaved gradient noise";
+        case CloudDither::r2:
+            return "R2 (blue-noise-like)";
+    }
+    return "?";
+}
+
+glm::vec4 cloudShaderOffsets(const CloudFrameSettings& s) {
+    // uv = (p - camera) * scale + (camera * scale + scroll): the second bracket in double, wrapped.
+    glm::dvec3 camera(s.cameraPosition);
+    glm::vec4 out;
+    for (int layer = 0; layer < 2; ++layer) {
+        double scale = layer == 0 ? s.scales.x : s.scales.y;
+        if (!std::isfinite(scale) || !std::isfinite(camera.x) || !std::isfinite(camera.z)) scale = 0.0;
+        out[layer * 2 + 0] = float(wrapUnit(camera.x * scale + double(s.scrollOffset[layer * 2 + 0])));
+        out[layer * 2 + 1] = float(wrapUnit(camera.z * scale + double(s.scrollOffset[layer * 2 + 1])));
+    }
+    return out;
+}
+
+ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
+    ShadowLookup l = sceneLookup;
+    l.normalOffsetMetres = 0.0f;
+    l.filterTaps = std::min(sceneLookup.filterTaps, kCloudShadowTaps);
+    return l;
+}
+
+Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
+    auto image = readPng(path);
+    if (!image) return Error{image.error()};
+    return fromImage(*image);
+}
+
+CloudDensityTexture CloudDensityTexture::fromImage(const ByteImage& rgba) {
+    CloudDensityTexture t;
+    // sRGB storage: sampling decodes it, as the chapter's loader does (its part 4: about 30 % of the
+    // sky covered at threshold 0.5 this way, 93 % if the stored values were read raw).
+    t.texture_ =
+        gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, rgba.width, rgba.height, 1, "clouds.density");
+    glTextureSubImage2D(t.texture_.name(), 0, 0, 0, rgba.width, rgba.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        rgba.texels.data());
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return t;
+}
+
+std::uint64_t CloudDensityTexture::bytes() const {
+    return texture_ ? textureBytes(texture_.spec()) : 0;
+}
+
+CloudPass CloudPass::create() {
+    CloudPass p;
+    p.program_ = FullscreenPass("effects/clouds/clouds.frag", "clouds");
+    return p;
+}
+
+PassState CloudPass::state() {
+    PassState s = FullscreenPass::state();
+    s.blend = true;
+    s.blendFunction = BlendFunction::alpha();
+    return s;
+}
+
+void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
+    GLuint prog = program();
+    glm::mat4 inverseProjection = glm::inverse(s.projection);
+    if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
+    glm::mat3 rotation = glm::transpose(glm::mat3(s.view));  // the inverse of a rotation
+    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
+    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
+    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
+    glm::vec4 offsets = cloudShaderOffsets(s);
+    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+    glm::vec4 rcs = s.march.rangeCountStep();
+    if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
+    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));
+    glm::vec2 th = s.march.thresholdPair();
+    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
+    glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
+    glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
+    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
+    glProgramUniform1i(prog, kStage, int(s.stage));
+    glProgramUniform1i(prog, kFeatures, s.features);
+    glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
+    glProgramUniform1i(prog, kDither, int(s.dither));
+    glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
+    glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
+    glProgramUniform1i(prog, kPremultiply, s.premultiplied ? 1 : 0);
+    glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
+    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
+                       float(std::max(target.height, 1)));
+}
+
+namespace {
+
+// What a cloud march pass needs from its inputs, resolved once for both ways of declaring it.
+struct MarchInputs {
+    bool depth = false;
+    bool shadows = false;
+    TextureHandle depthTexture;
+    TextureHandle shadowMap;
+    ShadowLookup lookup;
+};
+
+MarchInputs marchInputs(const CloudInputs& inputs, CloudFrameSettings& s) {
+    MarchInputs m;
+    m.depth = (s.features & cloudDepthAware) != 0 && s.stage != CloudStage::screenTexture;
+    m.shadows = (s.features & cloudShadows) != 0 && s.stage == CloudStage::march && inputs.shadow &&
+                inputs.shadow->pass;
+    m.depthTexture = inputs.depth;
+    if (m.shadows) {
+        m.shadowMap = inputs.shadow->map;
+        m.lookup = cloudShadowLookup(inputs.shadow->lookup);
+    }
+    // The threshold that leaves no cloud: nothing to find, and no 1/(1 - threshold) in the shader.
+    if ((s.features & cloudThreshold) && s.march.thresholdClears) s.march.drawn = false;
+    return m;
+}
+
+}  // namespace
+
+Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
+                         const CloudFrameSettings& settings) const {
+    CloudFrameSettings s = settings;
+    s.premultiplied = false;
+    s.depthStride = 1;
+    MarchInputs m = marchInputs(inputs, s);
+    const CloudPass* self = this;
+    const CloudDensityTexture* densityTexture = &density;
+    Pass& pass = graph.addPass("clouds", [self, s, m, densityTexture](PassContext& ctx) {
+        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
+                   m.lookup, densityTexture->name());
+    });
+    pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
+    if (m.depth) pass.read(inputs.depth);
+    if (m.shadows) pass.read(m.shadowMap);
+    return pass;
+}
+
+TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inputs,
+                                      const CloudDensityTexture& density, CloudFrameSettings s, int divisor,
+                                      const std::string& textureName) const {
+    divisor = std::max(divisor, 1);
+    s.premultiplied = true;
+    s.depthStride = divisor;
+    MarchInputs m = marchInputs(inputs, s);
+    const CloudPass* self = this;
+    const CloudDensityTexture* densityTexture = &density;
+    Pass& pass = graph.addPass("clouds march", [self, s, m, densityTexture](PassContext& ctx) {
+        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
+                   m.lookup, densityTexture->name());
+    });
+    TextureHandle layer =
+        pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
+                    TextureUsage::ColorAttachment);
+    pass.setState(FullscreenPass::state());
+    if (m.depth) pass.read(inputs.depth);
+    if (m.shadows) pass.read(m.shadowMap);
+    return layer;
+}
+
+void CloudPass::draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
+                     const ShadowLookup& lookup, GLuint density) const {
+    const bool shadows = shadowMap != 0;
+    setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
+    ShadowMap::bindForLookup(program(), shadowMap, shadows ? lookup : ShadowLookup{});
+    program_.draw({density, depth});
+}
+
+}  // namespace fx

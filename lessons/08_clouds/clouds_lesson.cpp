@@ -1,0 +1,289 @@
+#include "clouds_lesson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <imgui.h>
+
+#include "base/log.hpp"
+#include "effects/scene/camera_matrices.hpp"
+
+namespace lesson08 {
+
+using namespace fx;
+
+namespace {
+
+// Index 0 is "the knobs": every knob at its reference is the bench's reference picture (512 samples,
+// no jitter, no accumulation, full resolution). The others are the combinations the lesson compares
+// with the chapter's 8 samples and Bayer dither.
+const CloudsLesson::QualityPreset kQualityPresets[] = {
+    {"knobs", 0, CloudDither::none, false, false},
+    {"8 Bayer (chapter)", 8, CloudDither::bayer, false, false},
+    {"8 IGN", 8, CloudDither::ign, false, false},
+    {"8 IGN acc", 8, CloudDither::ign, true, false},
+    {"4 IGN acc", 4, CloudDither::ign, true, false},
+    {"2 IGN acc", 2, CloudDither::ign, true, false},
+    {"4 R2 acc", 4, CloudDither::r2, true, false},
+    {"4 IGN acc half", 4, CloudDither::ign, true, true},
+    {"8 IGN acc half", 8, CloudDither::ign, true, true},
+    {"16 IGN acc half", 16, CloudDither::ign, true, true},
+    {"32 none", 32, CloudDither::none, false, false},
+    {"100 none", 100, CloudDither::none, false, false},
+};
+constexpr int kQualityPresetCount = int(sizeof kQualityPresets / sizeof kQualityPresets[0]);
+
+}  // namespace
+
+CloudsLesson::QualityPreset CloudsLesson::quality() const {
+    if (quality_ > 0 && quality_ < kQualityPresetCount) return kQualityPresets[quality_];
+    return {"knobs", steps_, CloudDither(std::clamp(dither_, 0, 3)), accumulate_ == 1, resolution_ == 1};
+}
+
+LessonInfo CloudsLesson::info() const {
+    return {8, "clouds", "Ray-marched clouds", "scenes/08_clouds.json"};
+}
+
+std::vector<std::string> CloudsLesson::steps() const {
+    return {
+        "The density texture on the screen",
+        "An infinite plane, and hits behind the eye",
+        "Two scales, scrolled over time",
+        "Depth-aware: the world position from depth",
+        "Ray marching the slab, 8 samples: banding",
+        "The eye inside the layer, and a 4x4 Bayer dither",
+        "Object shadows on the clouds",
+        "Threshold and height shaping",
+        "Beyond the chapter: moving jitter, Beer-Lambert steps, distance occlusion",
+    };
+}
+
+void CloudsLesson::declareParams(ParamSet& params) {
+    params.addFloat("bottom", &bottom_, -100.0f, 1000.0f, "Height of the slab's lower face (m)")
+        .fromScene("clouds[0].bottom");
+    params
+        .addFloat("top", &top_, -100.0f, 1000.0f,
+                  "Height of the slab's upper face (m); at or below bottom: no cloud")
+        .fromScene("clouds[0].top");
+    params
+        .addFloat("scale0", &scale0_, 0.0001f, 1.0f,
+                  "Texture repeats per metre, layer 0 (the chapter: 1/311)")
+        .fromScene("clouds[0].noise[0].scale");
+    params
+        .addFloat("scale1", &scale1_, 0.0001f, 1.0f,
+                  "Texture repeats per metre, layer 1 (the chapter: 1/127)")
+        .fromScene("clouds[0].noise[1].scale");
+    params
+        .addFloat("threshold", &threshold_, 0.0f, 1.0f,
+                  "Steps 8 and 9: density at or below it is clear sky (1: no cloud, never a division by 0)")
+        .fromScene("clouds[0].threshold");
+    Param& steps = params.addFloat("steps", &steps_, 0.0f, float(kCloudMaxSteps),
+                                   "Steps 5 to 9: samples along each ray (rounded down; 0: no cloud)");
+    steps.knob = Knob{{2, 4, 8, 16, 32, 64, 128}, double(kCloudMaxSteps), "samples"};
+    steps.fromScene("clouds[0].steps");
+    params.addBool("reject_behind", &rejectBehind_,
+                   "Step 2 on: hits behind the eye are rejected (off: the mirrored layer in the sky)");
+    params.addFloat("camera_lift", &cameraLift_, -20.0f, 20.0f,
+                    "Moves the camera up or down (m): put the eye inside the slab to compare steps 5 and 6");
+    Param& dither =
+        params.addChoice("dither", &dither_, {"none", "bayer", "ign", "r2"},
+                         "Step 9: ray-start jitter (Bayer 4x4 is fixed; IGN and R2 move every frame)");
+    dither.knob = Knob{{0, 1, 2, 3}, 0, "dither"};
+    Param& accumulate = params.addChoice("accumulate", &accumulate_, {"off", "on"},
+                                         "Step 9: average the clouds over frames, reprojected (up to 16)");
+    accumulate.knob = Knob{{0, 1}, 0, "accumulation"};
+    Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"},
+                                         "Step 9: march at the output's resolution or half of it");
+    resolution.knob = Knob{{0, 1}, 0, "resolution"};
+    std::vector<std::string> presetNames;
+    std::vector<double> presetValues;
+    for (int i = 0; i < kQualityPresetCount; ++i) {
+        presetNames.push_back(kQualityPresets[i].name);
+        presetValues.push_back(i);
+    }
+    Param& preset = params.addChoice("quality", &quality_, presetNames,
+                                     "Step 9: a combination of samples, jitter, accumulation and resolution "
+                                     "(knobs: the four knobs above)");
+    preset.knob = Knob{presetValues, 0, "combination"};
+    params.addBool("beer_lambert", &beerLambert_,
+                   "Step 9: opacity from each step's length (the same picture at any sample count)");
+    params.addBool("distance_occlusion", &distanceOcclusion_,
+                   "Step 9: stop each ray at the surface's distance instead of comparing heights");
+}
+
+Status CloudsLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    viewScene_ = scene;
+    if (const Light* light = shadowCastingLight(scene)) sceneShadow_ = light->shadow;
+    meshes_ = SceneMeshes(scene);
+    shadows_ = ShadowMap::create();
+    lit_ = ShadowLitPass::create();
+    clouds_ = CloudPass::create();
+    temporal_ = CloudTemporal::create();
+    present_ = OutputTransformPass::create();
+    if (!scene.clouds.empty()) {
+        // Only a scene with a cloud layer loads the texture: without one, no bytes and no pass.
+        const CloudLayer& layer = scene.clouds.front();
+        auto loaded = CloudDensityTexture::load(layer.densityTexture.resolved.string());
+        if (!loaded) return Error{cat("clouds[0].densityTexture: ", loaded.error())};
+        density_ = std::move(*loaded);
+        scrollSpeed_ = glm::dvec4(layer.noise[0].scroll.x, layer.noise[0].scroll.y, layer.noise[1].scroll.x,
+                                  layer.noise[1].scroll.y);
+        cloudColour_ = layer.color;
+    }
+    return Status::success();
+}
+
+void CloudsLesson::simulations(SceneWork& work) {
+    // The scroll, wrapped every frame (cloud_march.hpp: a 200-hour run moves like the first minute).
+    work.onUpdate(Simulation::clouds, "cloud scroll",
+                  [this](const SimulationStep& s) { scroll_.advance(scrollSpeed_, s.deltaSeconds); });
+}
+
+void CloudsLesson::update(const FrameInfo& frame) {
+    (void)frame;
+    viewScene_.camera = scene_->camera;
+    viewScene_.camera.position.y += cameraLift_;
+    if (viewScene_.camera.aim == CameraAim::target) viewScene_.camera.target.y += cameraLift_;
+}
+
+CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const {
+    CloudFrameSettings s;
+    s.frameIndex = frameIndex;
+    s.march = cloudMarch(bottom_, top_, steps_, threshold_);
+    s.planeHeight = 0.5f * (bottom_ + top_);
+    s.scales = {scale0_, scale1_};
+    s.scrollOffset = scroll_.offset();
+    s.color = cloudColour_;
+    int f = 0;
+    switch (step) {
+        case ScreenTexture:
+            s.stage = CloudStage::screenTexture;
+            break;
+        case Plane:
+            s.stage = CloudStage::plane;
+            f = rejectBehind_ ? cloudRejectBehind : 0;
+            s.scrollOffset = glm::vec4(0.0f);  // one layer, standing still: the scroll comes in step 3
+            break;
+        case TwoScales:
+            s.stage = CloudStage::plane;
+            f = cloudRejectBehind | cloudTwoScales;
+            break;
+        case DepthAware:
+            s.stage = CloudStage::plane;
+            f = cloudRejectBehind | cloudTwoScales | cloudDepthAware;
+            break;
+        case March:
+            f = cloudTwoScales | cloudDepthAware;
+            break;
+        case EyeInsideDither:
+            f = cloudTwoScales | cloudDepthAware | cloudEyeInside;
+            s.dither = CloudDither::bayer;
+            break;
+        case Shadows:
+            f = cloudTwoScales | cloudDepthAware | cloudEyeInside | cloudShadows;
+            s.dither = CloudDither::bayer;
+            break;
+        case ThresholdHeight:
+            f = cloudTwoScales | cloudDepthAware | cloudEyeInside | cloudShadows | cloudThreshold |
+                cloudHeightShaping;
+            s.dither = CloudDither::bayer;
+            break;
+        default: {  // Beyond
+            f = cloudTwoScales | cloudDepthAware | cloudEyeInside | cloudShadows | cloudThreshold |
+                cloudHeightShaping;
+            if (beerLambert_) f |= cloudBeerLambert;
+            if (distanceOcclusion_) f |= cloudDistanceOcclusion;
+            QualityPreset q = quality();
+            s.dither = q.dither;
+            s.march = cloudMarch(bottom_, top_, q.steps, threshold_);
+            break;
+        }
+    }
+    s.features = f;
+    return s;
+}
+
+void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    const Scene& scene = viewScene_;
+    ShadowSettings settings = sceneShadow_;
+    DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, {});
+    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map);
+
+    CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
+    jitterFrame_ = (jitterFrame_ + 1) % 1024;
+    // The same matrices the scene pass drew with (cameraMatrices at the output's size).
+    CameraMatrices camera = cameraMatrices(scene.camera, frame.size.width, frame.size.height);
+    s.view = camera.view;
+    s.projection = camera.projection;
+    s.cameraPosition = camera.position;
+    {
+        PassGroup::Scope in(graph, cloudGroup_);  // runs only when the scene has a cloud layer
+        const QualityPreset q = quality();
+        // Step 9 always marches into a layer of its own ("clouds.result", what the bench compares).
+        // Without a cloud layer the direct pass is declared (and not called for): no textures at all.
+        const bool temporal = frame.step == Beyond && !lacks(graph, SceneFeature::clouds);
+        if (temporal) {
+            CloudTemporalOptions options{q.accumulate, q.halfResolution};
+            temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
+                              settingsKey(s, frame.step), frame.size);
+        } else {
+            clouds_.declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+        }
+    }
+    shadows_.declareDepthView(graph, map);
+    present_.declare(graph, hdr.color);
+}
+
+std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) const {
+    // FNV-1a over the numbers that change the picture (not the camera, which is reprojected, nor the
+    // jitter, which is what the average is for).
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        for (int i = 0; i < 8; ++i) h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ull;
+    };
+    for (double v : {double(step), double(s.features), double(s.dither), double(s.march.steps),
+                     double(s.march.bottom), double(s.march.top), double(s.march.threshold),
+                     double(s.scales.x), double(s.scales.y), double(resolution_), double(cameraLift_)})
+        mix(v);
+    return h;
+}
+
+void CloudsLesson::drawPanel(const FrameInfo& frame) {
+    if (frame.step == Plane && !rejectBehind_)
+        ImGui::TextWrapped(
+            "reject_behind is off: rays that point away from the plane (t < 0) still sample it, "
+            "so the layer shows again, mirrored, in the sky.");
+    if (frame.step >= March)
+        ImGui::TextWrapped(
+            "Set camera_lift so the eye sits between bottom and top: step 5 shows no cloud, "
+            "step 6 marches from the eye.");
+}
+
+void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
+    CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
+    const bool march = s.stage == CloudStage::march;
+    out.add("cloudLayer", !scene_ || scene_->clouds.empty() ? "none" : "first of the scene's", "cloud layer");
+    out.add("densityTextureBytes", std::to_string(density_.bytes()), "density texture (bytes, SRGB8_ALPHA8)");
+    if (march) {
+        out.add("samples", std::to_string(s.march.steps), "samples per ray");
+        out.add("stepHeight", cat(s.march.stepHeight), "vertical step (m)");
+        out.add("dither", cloudDitherName(s.dither));
+    }
+    if (frame.step >= ThresholdHeight)
+        out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
+    if (frame.step == Beyond) {
+        out.add("framesAveraged", std::to_string(temporal_.framesAveraged()), "frames in the average");
+        out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
+        out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
+        out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
+    }
+    glm::vec4 o = scroll_.offset();
+    out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");
+    if (frame.previousFrame) out.add("cloudMs", cat(cloudGroup_.timeMs(*frame.previousFrame)), "clouds (ms)");
+}
+
+}  // namespace lesson08
