@@ -42,6 +42,8 @@ const ShippedScene kShippedScenes[] = {
     {"04_colour_matrix.json", {}},
     {"05_radial_blur.json", {}},
     {"06_bloom.json", {}},
+    {"09_depth_of_field.json",
+     {"models/character.gltf", "models/ground.gltf", "textures/ground_checker.png"}},
 };
 
 fs::path scenesDir() {
