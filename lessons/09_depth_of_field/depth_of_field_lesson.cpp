@@ -68,14 +68,14 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
                                 "Step 6: taps of the ring kernel (16, 22, 43 or 71; others round down)");
     taps.fromScene("postEffects.depthOfField.taps");
     taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
-    Param& method = params.addChoice("method", &method_, {"chapter's 13 taps", "gather"},
+    Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
                                      "Step 6: the chapter's 13 Poisson taps, or the near/far ring gather");
     method.knob = Knob{{0, 1}, 1, "method"};
     Param& resolution =
         params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
     Param& fields =
-        params.addChoice("fields", &fields_, {"one average", "near and far"},
+        params.addChoice("fields", &fields_, {"one", "near-far"},
                          "Step 6: near/far separation (the background does not bleed over a sharp "
                          "foreground)");
     fields.knob = Knob{{0, 1}, 1, "fields"};

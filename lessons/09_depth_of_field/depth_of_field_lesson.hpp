@@ -54,8 +54,9 @@ private:
     int method_ = 1;      // step 6: 0 the chapter's 13 taps, 1 the gather
     int resolution_ = 1;  // 0 full, 1 half
     int fields_ = 1;      // 0 one average, 1 near and far
-    float highlight_ = 1.0f;
-    int referenceSamples_ = 128;
+    float highlight_ =
+        0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
+    int referenceSamples_ = 64;
     bool benchReference_ = false;
 
     const fx::Scene* scene_ = nullptr;

@@ -158,17 +158,19 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     // The clamp as a radius in gather texels bounds the kernel and how many tiles it looks across.
     const float maxRadius = lens.maxCocPixels * lens.radiusPerDiameter / float(scale);
     TextureHandle tileTexture = g.tiles;
-    Pass& gath = fullscreen(graph, "dof gather", gather_,
-                            [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius](PassContext& ctx) {
-                                GLuint p = gather->program();
-                                glProgramUniform1i(p, 0, kernel.rings);
-                                glProgramUniform1i(p, 1, kernel.tapsPerRing);
-                                glProgramUniform1i(p, 2, s.separateFields ? 1 : 0);
-                                glProgramUniform1i(p, 3, tile);
-                                glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
-                                glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
-                                gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
-                            });
+    Pass& gath =
+        fullscreen(graph, "dof gather", gather_,
+                   [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
+                       GLuint p = gather->program();
+                       glProgramUniform1i(p, 0, kernel.rings);
+                       glProgramUniform1i(p, 1, kernel.tapsPerRing);
+                       glProgramUniform1i(p, 2, s.separateFields ? 1 : 0);
+                       glProgramUniform1i(p, 3, tile);
+                       glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
+                       glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
+                       glProgramUniform1i(p, 6, scale);
+                       gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
+                   });
     g.gathered =
         gath.create("dof.gathered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     gath.read(g.prefiltered).read(g.tiles);

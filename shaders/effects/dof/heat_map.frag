@@ -1,6 +1,6 @@
 #version 450 core
-// The CoC as a picture: the scene in grey where it is in focus (blur radius under half a pixel), the
-// near field orange and the far field blue, brighter the larger the blur, full at the clamp.
+// The CoC as a picture: the scene in grey, tinted orange in the near field and blue in the far field
+// by sqrt(blur radius / the clamp's radius): sub-pixel blurs show faintly, the clamp in full colour.
 #include "coc.glsl"
 
 layout(binding = 0) uniform sampler2D scene;
@@ -15,8 +15,8 @@ void main() {
     vec3 grey = vec3(0.35 * luma / (1.0 + luma));
     float c = texelFetch(cocTexture, p, 0).r;
     float radius = blurRadiusPixels(c);
-    // The full colour at the largest radius the clamp allows (guarded: a clamp of 0 shows no colour).
-    float t = radius < 0.5 ? 0.0 : clamp(radius / max(blurRadiusPixels(lens.z), 1e-6), 0.15, 1.0);
+    // Guarded: a clamp of 0 leaves every radius 0 and shows no colour.
+    float t = sqrt(clamp(radius / max(blurRadiusPixels(lens.z), 1e-6), 0.0, 1.0));
     vec3 field = c < 0.0 ? vec3(1.0, 0.35, 0.02) : vec3(0.05, 0.35, 1.0);
     color = vec4(mix(grey, field, t), 1.0);
 }
