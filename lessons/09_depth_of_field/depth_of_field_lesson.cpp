@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/log.hpp"
+#include "scene/scene_enums.hpp"
 
 namespace lesson09 {
 
@@ -83,6 +84,12 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
                     "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)");
     params.addInt("reference_samples", &referenceSamples_, 1, 1024,
                   "Step 7: pinhole renders averaged over the aperture");
+    params
+        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
+                   "The output's tone curve (not for the heat map, whose colours are for the display)")
+        .fromScene("postEffects.toneMap.operator");
+    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Multiplies the light before the tone curve")
+        .fromScene("postEffects.toneMap.exposure");
 }
 
 Status DepthOfFieldLesson::init(const Scene& scene) {
@@ -145,7 +152,8 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const DofLensUniforms lens = dofLensUniforms(model);
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
-    ToneCurve curve = ToneCurve::filmic;
+    ToneCurve curve = static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2));
+    float exposure = exposure_;
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
         if (step == Naive || step == MovedCamera) {
@@ -155,6 +163,7 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             if (step == PhysicalCamera) {
                 shown = dof_.declareHeatMap(graph, hdr.color, coc, lens).output;
                 curve = ToneCurve::clip;  // the heat map's colours are display colours
+                exposure = 1.0f;
             } else if (step == ChapterShader || (step == Beyond && method_ == 0 && !benchReference_)) {
                 shown = dof_.declareChapter(graph, hdr.color, coc, lens).output;
             } else if (showsReference(step)) {
@@ -172,7 +181,7 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             }
         }
     }
-    present_.declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, 1.0f);
+    present_.declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
 }
 
 void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {

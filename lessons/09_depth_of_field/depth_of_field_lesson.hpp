@@ -57,6 +57,8 @@ private:
     float highlight_ =
         0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
     int referenceSamples_ = 64;
+    int toneCurve_ = 2;  // fx::ToneCurve::filmic
+    float exposure_ = 1.0f;
     bool benchReference_ = false;
 
     const fx::Scene* scene_ = nullptr;

@@ -84,17 +84,24 @@ DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
     return {pass, coc};
 }
 
+// The heat map and the chapter's 13 taps: a full-resolution picture from the scene's colour and the CoC.
+static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const char* output,
+                                   const FullscreenPass& program, TextureHandle color, TextureHandle coc,
+                                   const DofLensUniforms& lens) {
+    const FullscreenPass* p = &program;
+    Pass& pass = fullscreen(graph, name, program, [p, color, coc, lens](PassContext& ctx) {
+        setRadius(p->program(), lens);
+        p->draw({ctx.native(color), ctx.native(coc)});
+    });
+    TextureHandle out = pass.create(output, {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                                    TextureUsage::ColorAttachment);
+    pass.read(color).read(coc);
+    return {pass, out};
+}
+
 DeclaredPass DepthOfField::declareHeatMap(FrameGraph& graph, TextureHandle color, TextureHandle coc,
                                           const DofLensUniforms& lens) const {
-    const FullscreenPass* program = &heat_;
-    Pass& pass = fullscreen(graph, "dof heat map", heat_, [program, color, coc, lens](PassContext& ctx) {
-        setRadius(program->program(), lens);
-        program->draw({ctx.native(color), ctx.native(coc)});
-    });
-    TextureHandle heat = pass.create("dof.heat", {TextureSize::output(), TextureFormat::RGBA16F, 1},
-                                     TextureUsage::ColorAttachment);
-    pass.read(color).read(coc);
-    return {pass, heat};
+    return declareFromCoc(graph, "dof heat map", "dof.heat", heat_, color, coc, lens);
 }
 
 DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, TextureHandle depth,
@@ -112,15 +119,7 @@ DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, 
 
 DeclaredPass DepthOfField::declareChapter(FrameGraph& graph, TextureHandle color, TextureHandle coc,
                                           const DofLensUniforms& lens) const {
-    const FullscreenPass* program = &chapter_;
-    Pass& pass = fullscreen(graph, "dof chapter", chapter_, [program, color, coc, lens](PassContext& ctx) {
-        setRadius(program->program(), lens);
-        program->draw({ctx.native(color), ctx.native(coc)});
-    });
-    TextureHandle out = pass.create("dof.chapter", {TextureSize::output(), TextureFormat::RGBA16F, 1},
-                                    TextureUsage::ColorAttachment);
-    pass.read(color).read(coc);
-    return {pass, out};
+    return declareFromCoc(graph, "dof chapter", "dof.chapter", chapter_, color, coc, lens);
 }
 
 DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandle color, TextureHandle coc,
