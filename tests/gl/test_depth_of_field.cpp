@@ -282,3 +282,62 @@ TEST(DofReference, JitteredCameraKeepsTheFocusPlaneAndBlursByTheCoc) {
         EXPECT_NEAR(std::abs(pixelX(rim, near) - pixelX(base, near)), radius, 2e-3 * radius);
     }
 }
+
+TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
+    // Everything at the focus distance: the chapter's 13 taps all land on the pixel itself, and the
+    // gather's composite keeps the sharp scene. The naive version is sharp where raw depth is 0.935.
+    const int w = 33, h = 17;
+    FloatImage patterned = makeImage(w, h, [](int x, int y) {
+        std::array<float, 4> v{};
+        // Multiples of 1/16 below 4: exact in the effect's RGBA16F outputs.
+        for (int c = 0; c < 3; ++c)
+            v[std::size_t(c)] = std::floor(fx::test::hashedValue(x, y, c) * 64.0f) / 16.0f;
+        v[3] = 1.0f;
+        return v;
+    });
+    ThinLensModel model = thinLensModel(chapterCamera(CocConvention::corrected, 32.0f));
+    DofLensUniforms lens = dofLensUniforms(model);
+    const float focusDepth = float(windowDepth(model.focusM, 0.5, 500.0));
+    auto worstChange = [&](const FloatImage& out) {
+        float worst = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::abs(out.texel(x, y, c) - patterned.texel(x, y, c)));
+        return worst;
+    };
+    FloatImage chapter = run(
+        w, h, patterned, [&](int, int) { return focusDepth; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
+        });
+    ASSERT_FALSE(chapter.empty()) << lastErrors;
+    // 13 equal taps summed and divided by 13 may land a float ulp below the value, and llvmpipe's
+    // conversion to half floats truncates: one half-float step (2^-9 between 2 and 4) at most.
+    EXPECT_LE(worstChange(chapter), 1.0f / 512.0f);
+    for (bool half : {false, true}) {
+        FloatImage gathered = run(
+            w, h, patterned, [&](int, int) { return focusDepth; },
+            [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                TextureHandle coc = effect.declareCoc(g, d, lens).output;
+                return effect.declareGather(g, c, coc, lens, {43, half, true, 0.0f}).result;
+            });
+        ASSERT_FALSE(gathered.empty()) << lastErrors;
+        EXPECT_EQ(worstChange(gathered), 0.0f) << "half " << half;
+    }
+    FloatImage naive = run(
+        w, h, patterned, [](int, int) { return 0.935f; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareNaive(g, c, d, {}).output;
+        });
+    ASSERT_FALSE(naive.empty()) << lastErrors;
+    EXPECT_LE(worstChange(naive), 1.0f / 512.0f);
+    // And elsewhere it blurs: raw depth 1 (the sky) scales the disk by 0.0065 of the screen.
+    FloatImage naiveSky = run(
+        w, h, patterned, [](int, int) { return 1.0f; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareNaive(g, c, d, {}).output;
+        });
+    ASSERT_FALSE(naiveSky.empty()) << lastErrors;
+    EXPECT_GT(worstChange(naiveSky), 0.1f);
+}
