@@ -45,7 +45,7 @@ struct RadialBlurSettings {
 };
 
 // Depth of field reads the camera's lens (focal length, f-number, focus distance), so it needs one.
-// Used by lesson 09 (planned); no lesson reads it yet.
+// Lesson 09 starts max_coc and taps from it.
 struct DepthOfFieldSettings {
     float maxCocPixels = 16.0f;  // circle-of-confusion diameter is clamped here
     int taps = 16;

@@ -46,6 +46,8 @@ const ShippedScene kShippedScenes[] = {
     {"06_bloom.json", {}},
     {"07_fire_emitter.json", {"textures/fire_sprite.png"}},
     {"08_clouds.json", {"textures/cloud_density.png", "textures/ground_checker.png"}},
+    {"09_depth_of_field.json",
+     {"models/character.gltf", "models/ground.gltf", "textures/ground_checker.png"}},
     {"10_deferred_shading.json", {}},
 };
 

@@ -1,0 +1,190 @@
+#include "effects/dof/depth_of_field.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "base/log.hpp"
+
+namespace fx {
+namespace {
+
+// shaders/effects/dof/coc.glsl (only in the programs that include it and use it: setting a location
+// a program lacks is a GL error).
+constexpr GLint kDepthRangeLocation = 10;
+constexpr GLint kLensLocation = 11;
+
+void setLens(GLuint program, const DofLensUniforms& l) {
+    glProgramUniform2f(program, kDepthRangeLocation, l.nearM, l.farM);
+    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+                       l.radiusPerDiameter);
+}
+
+// The radius part of coc.glsl only: heat map, chapter, prefilter and composite use blurRadiusPixels
+// and the clamp, not the depth range.
+void setRadius(GLuint program, const DofLensUniforms& l) {
+    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+                       l.radiusPerDiameter);
+}
+
+Pass& fullscreen(FrameGraph& graph, const char* name, const FullscreenPass& program, Pass::Body body) {
+    Pass& pass = graph.addPass(name, std::move(body));
+    pass.setState(FullscreenPass::state());
+    if (!program.usable()) pass.disable(cat("the ", name, " program did not build: ", program.error()));
+    return pass;
+}
+
+}  // namespace
+
+DofLensUniforms dofLensUniforms(const ThinLensModel& m) {
+    return {float(1.0 / m.focusM),      float(m.scalePixelsM), float(m.maxCocPixels),
+            float(m.radiusPerDiameter), float(m.nearM),        float(m.farM)};
+}
+
+DofKernel dofKernelForTaps(int taps) {
+    if (taps >= 71) return {71, 4, 7};
+    if (taps >= 43) return {43, 3, 7};
+    if (taps >= 22) return {22, 2, 7};
+    return {16, 2, 5};
+}
+
+DepthOfField DepthOfField::create() {
+    DepthOfField d;
+    d.coc_ = FullscreenPass("effects/dof/coc.frag", "dof coc");
+    d.heat_ = FullscreenPass("effects/dof/heat_map.frag", "dof heat map");
+    d.naive_ = FullscreenPass("effects/dof/naive.frag", "dof naive");
+    d.chapter_ = FullscreenPass("effects/dof/chapter.frag", "dof chapter");
+    d.prefilter_ = FullscreenPass("effects/dof/prefilter.frag", "dof prefilter");
+    d.tileMax_ = FullscreenPass("effects/dof/tile_max.frag", "dof tile max");
+    d.gather_ = FullscreenPass("effects/dof/gather.frag", "dof gather");
+    d.composite_ = FullscreenPass("effects/dof/composite.frag", "dof composite");
+    return d;
+}
+
+bool DepthOfField::usable() const {
+    return error().empty();
+}
+
+std::string DepthOfField::error() const {
+    for (const FullscreenPass* p :
+         {&coc_, &heat_, &naive_, &chapter_, &prefilter_, &tileMax_, &gather_, &composite_})
+        if (!p->usable()) return p->error();
+    return {};
+}
+
+DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
+                                      const DofLensUniforms& lens) const {
+    const FullscreenPass* program = &coc_;
+    Pass& pass = fullscreen(graph, "dof coc", coc_, [program, depth, lens](PassContext& ctx) {
+        setLens(program->program(), lens);
+        program->draw({ctx.native(depth)});
+    });
+    TextureHandle coc = pass.create("dof.coc", {TextureSize::output(), TextureFormat::R32F, 1},
+                                    TextureUsage::ColorAttachment);
+    pass.read(depth);
+    return {pass, coc};
+}
+
+// The heat map and the chapter's 13 taps: a full-resolution picture from the scene's colour and the CoC.
+static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const char* output,
+                                   const FullscreenPass& program, TextureHandle color, TextureHandle coc,
+                                   const DofLensUniforms& lens) {
+    const FullscreenPass* p = &program;
+    Pass& pass = fullscreen(graph, name, program, [p, color, coc, lens](PassContext& ctx) {
+        setRadius(p->program(), lens);
+        p->draw({ctx.native(color), ctx.native(coc)});
+    });
+    TextureHandle out = pass.create(output, {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                                    TextureUsage::ColorAttachment);
+    pass.read(color).read(coc);
+    return {pass, out};
+}
+
+DeclaredPass DepthOfField::declareHeatMap(FrameGraph& graph, TextureHandle color, TextureHandle coc,
+                                          const DofLensUniforms& lens) const {
+    return declareFromCoc(graph, "dof heat map", "dof.heat", heat_, color, coc, lens);
+}
+
+DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, TextureHandle depth,
+                                        const NaiveDofSettings& s) const {
+    const FullscreenPass* program = &naive_;
+    Pass& pass = fullscreen(graph, "dof naive", naive_, [program, color, depth, s](PassContext& ctx) {
+        glProgramUniform2f(program->program(), 0, s.sharpDepth, s.scale);
+        program->draw({ctx.native(color), ctx.native(depth)});
+    });
+    TextureHandle out = pass.create("dof.naive", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                                    TextureUsage::ColorAttachment);
+    pass.read(color).read(depth);
+    return {pass, out};
+}
+
+DeclaredPass DepthOfField::declareChapter(FrameGraph& graph, TextureHandle color, TextureHandle coc,
+                                          const DofLensUniforms& lens) const {
+    return declareFromCoc(graph, "dof chapter", "dof.chapter", chapter_, color, coc, lens);
+}
+
+DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandle color, TextureHandle coc,
+                                                 const DofLensUniforms& lens,
+                                                 const DofGatherSettings& s) const {
+    Gather g;
+    const int scale = s.halfResolution ? 2 : 1;
+    const int tile = kDofTileFullPixels / scale;  // gather texels per tile
+    const TextureSize gatherSize = TextureSize::outputFraction(1, scale);
+
+    const FullscreenPass* prefilter = &prefilter_;
+    Pass& pre = fullscreen(graph, "dof prefilter", prefilter_,
+                           [prefilter, color, coc, lens, scale](PassContext& ctx) {
+                               setRadius(prefilter->program(), lens);
+                               glProgramUniform1i(prefilter->program(), 0, scale);
+                               prefilter->draw({ctx.native(color), ctx.native(coc)});
+                           });
+    g.prefiltered =
+        pre.create("dof.prefiltered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
+    pre.read(color).read(coc);
+
+    const FullscreenPass* tileMax = &tileMax_;
+    TextureHandle prefiltered = g.prefiltered;
+    Pass& tiles = fullscreen(graph, "dof tile max", tileMax_, [tileMax, prefiltered, tile](PassContext& ctx) {
+        glProgramUniform1i(tileMax->program(), 0, tile);
+        tileMax->draw({ctx.native(prefiltered)});
+    });
+    g.tiles = tiles.create("dof.tiles",
+                           {TextureSize::outputFraction(1, kDofTileFullPixels), TextureFormat::RG16F, 1},
+                           TextureUsage::ColorAttachment);
+    tiles.read(g.prefiltered);
+
+    const FullscreenPass* gather = &gather_;
+    const DofKernel kernel = dofKernelForTaps(s.taps);
+    // The clamp as a radius in gather texels bounds the kernel and how many tiles it looks across.
+    const float maxRadius = lens.maxCocPixels * lens.radiusPerDiameter / float(scale);
+    TextureHandle tileTexture = g.tiles;
+    Pass& gath =
+        fullscreen(graph, "dof gather", gather_,
+                   [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
+                       GLuint p = gather->program();
+                       glProgramUniform1i(p, 0, kernel.rings);
+                       glProgramUniform1i(p, 1, kernel.tapsPerRing);
+                       glProgramUniform1i(p, 2, s.separateFields ? 1 : 0);
+                       glProgramUniform1i(p, 3, tile);
+                       glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
+                       glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
+                       glProgramUniform1i(p, 6, scale);
+                       gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
+                   });
+    g.gathered =
+        gath.create("dof.gathered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
+    gath.read(g.prefiltered).read(g.tiles);
+
+    const FullscreenPass* composite = &composite_;
+    TextureHandle gathered = g.gathered;
+    Pass& comp = fullscreen(graph, "dof composite", composite_,
+                            [composite, color, coc, gathered, lens](PassContext& ctx) {
+                                setRadius(composite->program(), lens);
+                                composite->draw({ctx.native(color), ctx.native(coc), ctx.native(gathered)});
+                            });
+    g.result = comp.create("dof.result", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+                           TextureUsage::ColorAttachment);
+    comp.read(color).read(coc).read(g.gathered);
+    return g;
+}
+
+}  // namespace fx

@@ -1,0 +1,124 @@
+#include "effects/dof/dof_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "gl/framebuffer.hpp"
+#include "gl/texture.hpp"
+#include "render_gl/gl_state.hpp"
+
+namespace fx {
+
+namespace {
+constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene/scene_hdr.frag
+}
+
+// The scene's colour and depth for one aperture sample, at the target's size.
+struct DofReference::Scratch {
+    Size2D size;
+    gl::Texture color, depth;
+    gl::Framebuffer framebuffer;
+
+    void ensure(Size2D wanted) {
+        if (wanted == size && framebuffer.name() != 0) return;
+        size = wanted;
+        color = gl::Texture::create2D(TextureFormat::RGBA16F, size.width, size.height, 1,
+                                      "dof reference sample colour");
+        depth = gl::Texture::create2D(TextureFormat::Depth32F, size.width, size.height, 1,
+                                      "dof reference sample depth");
+        framebuffer = gl::Framebuffer("dof reference sample");
+        framebuffer.attachColor(0, color);
+        framebuffer.attachDepth(depth);
+        framebuffer.setDrawBuffers(1);
+    }
+};
+
+glm::vec2 apertureSample(int i, int n) {
+    const float golden = 2.39996323f;  // pi (3 - sqrt 5)
+    float r = std::sqrt((float(i) + 0.5f) / float(std::max(n, 1)));
+    float a = golden * float(i);
+    return {r * std::cos(a), r * std::sin(a)};
+}
+
+CameraMatrices jitteredCamera(const CameraMatrices& base, float fovYDegrees, float nearM, float farM,
+                              glm::vec2 offset, float focusM) {
+    CameraMatrices m = base;
+    // Move the eye within its own right/up plane: view-space x and y shift by -offset.
+    m.view = glm::translate(glm::mat4(1.0f), glm::vec3(-offset, 0.0f)) * base.view;
+    glm::mat4 toWorld = glm::inverse(base.view);
+    m.position = glm::vec3(toWorld * glm::vec4(offset, 0.0f, 1.0f));
+    // Shear the frustum so that the focus plane keeps its pixels: at the near plane, by offset n / P.
+    float top = nearM * std::tan(glm::radians(fovYDegrees) * 0.5f), right = top * base.aspect;
+    glm::vec2 shift = offset * (nearM / std::max(focusM, 1e-6f));
+    m.projection =
+        glm::frustum(-right - shift.x, right - shift.x, -top - shift.y, top - shift.y, nearM, farM);
+    m.viewProjection = m.projection * m.view;
+    return m;
+}
+
+float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, float fovYDegrees,
+                               int heightPixels) {
+    float focalPixels = 0.5f * float(std::max(heightPixels, 1)) / std::tan(glm::radians(fovYDegrees) * 0.5f);
+    return scalePixelsM * radiusPerDiameter / focalPixels;
+}
+
+DofReference DofReference::create() {
+    DofReference r;
+    r.scene_ = gl::ReloadableProgram(
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "dof reference scene"});
+    r.accumulate_ = FullscreenPass("effects/dof/accumulate.frag", "dof reference accumulate");
+    r.scratch_ = std::make_shared<Scratch>();
+    return r;
+}
+
+DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
+                                   double seconds, const DofReferenceSettings& s) const {
+    const gl::ReloadableProgram* program = &scene_;
+    const FullscreenPass* accumulate = &accumulate_;
+    std::shared_ptr<Scratch> scratch = scratch_;
+    Pass& pass = graph.addPass(
+        "dof reference", [program, accumulate, scratch, &scene, &meshes, seconds, s](PassContext& ctx) {
+            GLint target = 0;
+            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+            const Size2D size = ctx.targetSize();
+            scratch->ensure(size);
+            const CameraMatrices base = cameraMatrices(s.camera, size.width, size.height);
+            const int n = std::max(s.samples, 1);
+            PassState accumulateState = FullscreenPass::state();
+            accumulateState.blend = true;
+            accumulateState.blendFunction = BlendFunction::additive();
+            const ClearColor sky = *hdrSceneState(scene).clearColor;
+            const float one = 1.0f;
+            for (int i = 0; i < n; ++i) {
+                glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
+                CameraMatrices camera =
+                    jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
+                glBindFramebuffer(GL_FRAMEBUFFER, scratch->framebuffer.name());
+                applyGlState(hdrSceneState(scene), size);
+                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
+                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
+                SceneMeshes::setFrameUniforms(program->name(), scene, camera);
+                glProgramUniform1f(program->name(), kHdrMaxLocation, kSceneHdrMax);
+                meshes.draw(program->name(), scene, seconds);
+
+                glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+                applyGlState(accumulateState, size);
+                glProgramUniform1f(accumulate->program(), 0, 1.0f / float(n));
+                accumulate->draw({scratch->color.name()});
+            }
+        });
+    TextureHandle out = pass.create("dof.reference", {TextureSize::output(), TextureFormat::RGBA32F, 1},
+                                    TextureUsage::ColorAttachment);
+    PassState state = FullscreenPass::state();
+    state.blend = true;
+    state.blendFunction = BlendFunction::additive();
+    state.clearColor = ClearColor{0.0f, 0.0f, 0.0f, 0.0f};
+    pass.setState(state);
+    if (!usable()) pass.disable("the dof reference programs did not build: " + error());
+    return {pass, out};
+}
+
+}  // namespace fx

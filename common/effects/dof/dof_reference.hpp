@@ -1,0 +1,62 @@
+#pragma once
+// The depth-of-field reference: accumulation over the aperture. The scene is rendered `samples` times
+// through pinholes spread over the lens's aperture disk (a Vogel spiral: even coverage, no random
+// numbers), each with its frustum sheared so that the focus plane lands on the same pixels, and the
+// renders are averaged. That is the thin lens exactly, occlusion included (a near object hides what
+// is behind it from part of the aperture only), up to the sampling of the aperture: a point blurred
+// to radius r is `samples` copies spaced about r sqrt(pi / samples) apart.
+//
+// One pass, "dof reference", writes dof.reference (RGBA32F, cleared to 0, additive). Inside it the
+// scene goes into a scratch colour and depth target of its own (labelled), once per sample.
+#include <memory>
+
+#include <glm/vec2.hpp>
+
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "render/frame_graph.hpp"
+
+namespace fx {
+
+// Sample i of n on the unit disk (golden-angle spiral; the first sample is near the centre).
+glm::vec2 apertureSample(int i, int n);
+
+// The camera seen through the point `lensOffsetM` (metres, in the camera's right/up plane) of the
+// aperture, its frustum sheared so that points at the planar distance `focusM` keep their pixels.
+// `base` is the pinhole camera (view and a symmetric projection of `fovYDegrees`).
+CameraMatrices jitteredCamera(const CameraMatrices& base, float fovYDegrees, float nearM, float farM,
+                              glm::vec2 lensOffsetM, float focusM);
+
+// The aperture radius (m) that blurs a point at distance D to the radius the CoC model gives:
+// K * radiusPerDiameter / (the projection's focal length in pixels), for a target `heightPixels` high.
+float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, float fovYDegrees,
+                               int heightPixels);
+
+struct DofReferenceSettings {
+    Camera camera;  // the pinhole camera: fovYDegrees is the projection's, lens unused
+    float apertureRadiusM = 0.0f;
+    float focusM = 10.0f;
+    int samples = 64;
+};
+
+class DofReference {
+public:
+    DofReference() = default;  // empty: no GL yet
+    static DofReference create();
+
+    bool usable() const { return scene_.usable() && accumulate_.usable(); }
+    std::string error() const { return scene_.usable() ? accumulate_.error() : scene_.error(); }
+
+    // `scene` and `meshes` must outlive the frame's execution.
+    DeclaredPass declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+                         const DofReferenceSettings& settings) const;
+
+private:
+    struct Scratch;
+    gl::ReloadableProgram scene_;
+    FullscreenPass accumulate_;
+    std::shared_ptr<Scratch> scratch_;
+};
+
+}  // namespace fx

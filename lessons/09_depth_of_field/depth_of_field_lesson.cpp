@@ -1,0 +1,222 @@
+#include "depth_of_field_lesson.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+#include <glm/geometric.hpp>
+
+#include "base/log.hpp"
+#include "scene/scene_enums.hpp"
+
+namespace lesson09 {
+
+using namespace fx;
+
+namespace {
+
+// The chapter's first camera: 55.9 m from the player, looking at it through a 30 deg vertical field
+// of view with near 1 m and far 1000 m (the projection its 0.935 was tuned for, at 15.264 m).
+constexpr float kChapterFirstDistanceM = 55.9f;
+constexpr float kChapterOldFovY = 30.0f, kChapterOldNear = 1.0f, kChapterOldFar = 1000.0f;
+
+float aspectOf(Size2D size) {
+    return size.width > 0 && size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
+}
+
+// The scene value unless the command line changed the parameter from the lesson's default.
+void fromLens(float& value, float lessonDefault, float sceneValue) {
+    if (value == lessonDefault) value = sceneValue;
+}
+
+}  // namespace
+
+LessonInfo DepthOfFieldLesson::info() const {
+    return {9, "depth-of-field", "Depth of field", "scenes/09_depth_of_field.json"};
+}
+
+std::vector<std::string> DepthOfFieldLesson::steps() const {
+    return {
+        "Render to a framebuffer, show it with a full-screen pass",
+        "The chapter's naive blur: raw depth minus 0.935",
+        "Focus by moving the camera",
+        "The physical camera: the circle of confusion as a heat map",
+        "The chapter's physical shader: 13 taps scaled by the CoC",
+        "Beyond the chapter: near and far fields, a ring kernel, half resolution",
+        "The reference: accumulation over the aperture",
+    };
+}
+
+void DepthOfFieldLesson::declareParams(ParamSet& params) {
+    params.addFloat(
+        "focal_length", &focalLengthMm_, 0.0f, 2000.0f,
+        "Steps 4 to 7: focal length (mm; the chapter: the image distance); starts from camera.lens");
+    params.addFloat("sensor_width", &sensorWidthMm_, 1.0f, 100.0f, "Steps 4 to 7: sensor width (mm)");
+    params.addFloat("f_number", &fNumber_, 0.0f, 32.0f,
+                    "Steps 4 to 7: f-number N; the aperture is F / N (below 0.5 counts as 0.5)");
+    params.addFloat("focus_distance", &focusM_, -1.0f, 300.0f,
+                    "Steps 4 to 7: focus distance (m); at or inside the focal length counts as 1.001 focal "
+                    "lengths");
+    params.addBool(
+        "chapter_compatible", &chapterCompatible_,
+        "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
+        "of view, the diameter used as a radius) instead of the corrected ones");
+    Param& maxCoc = params.addFloat("max_coc", &maxCoc_, 0.0f, 256.0f,
+                                    "Steps 4 to 6: largest CoC diameter (px); larger ones are clamped");
+    maxCoc.fromScene("postEffects.depthOfField.maxCoc");
+    maxCoc.knob = Knob{{8, 16, 32, 64}, 64, "px"};
+    Param& taps = params.addInt("taps", &taps_, 1, 128,
+                                "Step 6: taps of the ring kernel (16, 22, 43 or 71; others round down)");
+    taps.fromScene("postEffects.depthOfField.taps");
+    taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
+    Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
+                                     "Step 6: the chapter's 13 Poisson taps, or the near/far ring gather");
+    method.knob = Knob{{0, 1}, 1, "method"};
+    Param& resolution =
+        params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
+    resolution.knob = Knob{{0, 1}, 0, "resolution"};
+    Param& fields =
+        params.addChoice("fields", &fields_, {"one", "near-far"},
+                         "Step 6: near/far separation (the background does not bleed over a sharp "
+                         "foreground)");
+    fields.knob = Knob{{0, 1}, 1, "fields"};
+    params.addFloat("highlight", &highlight_, 0.0f, 8.0f,
+                    "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)");
+    params.addInt("reference_samples", &referenceSamples_, 1, 1024,
+                  "Step 7: pinhole renders averaged over the aperture");
+    params
+        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
+                   "The output's tone curve (not for the heat map, whose colours are for the display)")
+        .fromScene("postEffects.toneMap.operator");
+    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Multiplies the light before the tone curve")
+        .fromScene("postEffects.toneMap.exposure");
+}
+
+Status DepthOfFieldLesson::init(const Scene& scene) {
+    scene_ = &scene;
+    view_ = scene;
+    if (scene.camera.lens) {
+        const Lens& lens = *scene.camera.lens;
+        fromLens(focalLengthMm_, 31.1769f, lens.focalLengthMm);
+        fromLens(sensorWidthMm_, 36.0f, lens.sensorWidthMm);
+        fromLens(fNumber_, 1.4f, lens.fNumber);
+        fromLens(focusM_, 15.264f, lens.focusDistanceM);
+    }
+    meshes_ = SceneMeshes(scene);
+    scenePass_ = HdrScenePass::create();
+    dof_ = DepthOfField::create();
+    reference_ = DofReference::create();
+    present_ = OutputTransformPass::create();
+    return Status::success();
+}
+
+ThinLensModel DepthOfFieldLesson::lensModel(Size2D size) const {
+    ThinLensInput in;
+    in.lens = Lens{focalLengthMm_, sensorWidthMm_, fNumber_, focusM_};
+    in.nearM = scene_ ? scene_->camera.near : 0.1f;
+    in.farM = scene_ ? scene_->camera.far : 500.0f;
+    in.widthPixels = size.width;
+    in.maxCocPixels = maxCoc_;
+    in.convention = convention();
+    return thinLensModel(in);
+}
+
+Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
+    Camera camera = scene_ ? scene_->camera : Camera{};
+    camera.lens.reset();
+    if (step <= Naive) {
+        // The chapter's first camera: the same line of sight, 55.9 m from the point it looks at.
+        glm::vec3 dir = viewDirection(camera);
+        glm::vec3 target = camera.aim == CameraAim::target ? camera.target : camera.position + dir * focusM_;
+        camera.position = target - dir * kChapterFirstDistanceM;
+        camera.target = target;
+        camera.aim = CameraAim::target;
+    }
+    if (step <= MovedCamera) {
+        camera.fovYDegrees = kChapterOldFovY;
+        camera.near = kChapterOldNear;
+        camera.far = kChapterOldFar;
+    } else {
+        Lens lens{std::clamp(focalLengthMm_, float(kMinFocalMm), float(kMaxFocalMm)), sensorWidthMm_,
+                  fNumber_, focusM_};
+        camera.fovYDegrees = dofVerticalFovDegrees(lens, convention(), aspectOf(size));
+    }
+    return camera;
+}
+
+void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
+    const int step = frame.step;
+    view_.camera = cameraFor(step, frame.size);
+    HdrSceneTargets hdr = scenePass_.declare(graph, view_, meshes_, frame.seconds);
+    const ThinLensModel model = lensModel(frame.size);
+    const DofLensUniforms lens = dofLensUniforms(model);
+    const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
+    TextureHandle shown = hdr.color;
+    ToneCurve curve = static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2));
+    float exposure = exposure_;
+    {
+        PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
+        if (step == Naive || step == MovedCamera) {
+            shown = dof_.declareNaive(graph, hdr.color, hdr.depth, {}).output;
+        } else if (step >= PhysicalCamera) {
+            TextureHandle coc = dof_.declareCoc(graph, hdr.depth, lens).output;
+            if (step == PhysicalCamera) {
+                shown = dof_.declareHeatMap(graph, hdr.color, coc, lens).output;
+                curve = ToneCurve::clip;  // the heat map's colours are display colours
+                exposure = 1.0f;
+            } else if (step == ChapterShader || (step == Beyond && method_ == 0 && !benchReference_)) {
+                shown = dof_.declareChapter(graph, hdr.color, coc, lens).output;
+            } else if (showsReference(step)) {
+                DofReferenceSettings r;
+                r.camera = view_.camera;
+                r.apertureRadiusM =
+                    referenceApertureRadiusM(float(model.scalePixelsM), float(model.radiusPerDiameter),
+                                             r.camera.fovYDegrees, frame.size.height);
+                r.focusM = float(model.focusM);
+                r.samples = referenceSamples_;
+                shown = reference_.declare(graph, view_, meshes_, frame.seconds, r).output;
+            } else {
+                DofGatherSettings g{taps_, resolution_ == 1, fields_ == 1, highlight_};
+                shown = dof_.declareGather(graph, hdr.color, coc, lens, g).result;
+            }
+        }
+    }
+    present_.declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+}
+
+void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {
+    if (frame.step == PhysicalCamera)
+        ImGui::TextWrapped("Orange: near field (in front of the focus). Blue: far field. Grey: in focus.");
+    if (frame.step >= PhysicalCamera)
+        ImGui::TextWrapped("Inspect dof.coc for the signed CoC diameter in pixels at any pixel.");
+}
+
+void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
+    const int step = frame.step;
+    const Camera camera = cameraFor(step, frame.size);
+    out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
+    out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
+            "vertical field of view");
+    if (step < PhysicalCamera) {
+        out.add("targetDepth",
+                cat(windowDepth(glm::length(camera.target - camera.position), camera.near, camera.far)),
+                "raw depth at the target (sharp at 0.935)");
+        return;
+    }
+    const ThinLensModel m = lensModel(frame.size);
+    out.add("convention", chapterCompatible_ ? "chapter-compatible" : "corrected", "convention");
+    out.add("focus", cat(m.focusM), "focus distance used (m)");
+    out.add("focalLength", cat(m.focalMm), "focal length F (mm)");
+    out.add("imageDistance", cat(m.imageMm), "image distance I (mm)");
+    out.add("aperture", cat(m.apertureMm), "aperture A (mm)");
+    for (double d : {1.0, 2.0, 5.0, 50.0, 250.0})
+        out.add(cat("coc", int(d), "m"), cat(signedCocPixels(m, d)), cat("CoC diameter at ", d, " m (px)"));
+    out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter),
+            "blur radius at 1 m (px)");
+    if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps), "ring kernel taps");
+    if (showsReference(step)) out.add("referenceSamples", cat(referenceSamples_), "aperture samples");
+    if (frame.previousFrame)
+        out.add("dofMs", cat(dofGroup_.timeMs(*frame.previousFrame)), "depth-of-field passes (ms)");
+}
+
+}  // namespace lesson09

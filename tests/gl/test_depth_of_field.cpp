@@ -1,0 +1,343 @@
+// Depth of field (effects/dof): the shader's circle of confusion against the CPU thin lens
+// (scene/thin_lens.hpp) read back as floats, and the Depth of field chapter's hard cases: the focus at
+// or inside the focal length, f-number 0, extreme fields of view, the sky, the focus plane itself,
+// depths beyond far, a CoC far larger than the kernel, and odd and tiny sizes.
+#include <cmath>
+#include <functional>
+
+#include <glm/geometric.hpp>
+
+#include "effects/dof/depth_of_field.hpp"
+#include "effects/dof/dof_reference.hpp"
+#include "gl_test.hpp"
+#include "test_fullscreen_harness.hpp"
+
+using namespace fx;
+using fx::test::EffectRunner;
+using fx::test::makeImage;
+
+namespace {
+
+ThinLensInput chapterCamera(CocConvention convention, float maxCoc = 1.0e6f) {
+    ThinLensInput in;
+    in.lens = Lens{31.1769f, 36.0f, 1.4f, 15.264f};
+    in.nearM = 0.5f;
+    in.farM = 500.0f;
+    in.widthPixels = 1280;
+    in.maxCocPixels = maxCoc;
+    in.convention = convention;
+    return in;
+}
+
+FloatImage uniformColour(int w, int h, std::array<float, 4> c) {
+    return makeImage(w, h, [c](int, int) { return c; });
+}
+
+class DepthOfFieldOnGl : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        effect = DepthOfField::create();
+        ASSERT_TRUE(effect.usable()) << effect.error();
+    }
+
+    // Runs `declare` on `colour` (RGBA32F) with a depth texture (R32F) filled by depth(x, y).
+    FloatImage run(int w, int h, const FloatImage& colour, const std::function<float(int, int)>& depth,
+                   const std::function<TextureHandle(FrameGraph&, TextureHandle, TextureHandle)>& declare) {
+        std::vector<float> depths(std::size_t(w) * std::size_t(h));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                depths[std::size_t(y) * std::size_t(w) + std::size_t(x)] = depth(x, y);
+        gl::Texture depthTexture = gl::Texture::create2D(TextureFormat::R32F, w, h, 1, "test.depth");
+        glTextureSubImage2D(depthTexture.name(), 0, 0, 0, w, h, GL_RED, GL_FLOAT, depths.data());
+        EffectRunner runner(w, h);
+        FloatImage out = runner.run(colour, TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
+            TextureHandle d =
+                g.importTexture("test.depth", {w, h, TextureFormat::R32F, 1}, depthTexture.name());
+            return declare(g, in, d);
+        });
+        lastErrors = runner.lastErrors;
+        return out;
+    }
+
+    FloatImage coc(int w, int h, const ThinLensModel& model, const std::function<float(int, int)>& depth) {
+        DofLensUniforms lens = dofLensUniforms(model);
+        return run(w, h, uniformColour(w, h, {0, 0, 0, 1}), depth,
+                   [&](FrameGraph& g, TextureHandle, TextureHandle d) {
+                       return effect.declareCoc(g, d, lens).output;
+                   });
+    }
+
+    DepthOfField effect;
+    std::string lastErrors;
+};
+
+bool allFinite(const FloatImage& image) {
+    for (float v : image.texels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+}  // namespace
+
+TEST_F(DepthOfFieldOnGl, CocMatchesTheCpuThinLensAtAHundredDistances) {
+    // 99 distances from the near plane (0.5 m) to the far plane, evenly spaced in 1/D (as the CoC is),
+    // and the sky (depth 1).
+    for (CocConvention convention : {CocConvention::corrected, CocConvention::chapter}) {
+        ThinLensModel model = thinLensModel(chapterCamera(convention));
+        std::vector<float> depths;
+        for (int i = 0; i < 99; ++i) {
+            double inverse = 1.0 / 0.5 + (1.0 / 500.0 - 1.0 / 0.5) * i / 98.0;
+            depths.push_back(float(windowDepth(1.0 / inverse, 0.5, 500.0)));
+        }
+        depths.push_back(1.0f);
+        FloatImage out = coc(100, 1, model, [&](int x, int) { return depths[std::size_t(x)]; });
+        ASSERT_FALSE(out.empty()) << lastErrors;
+        double worst = 0;
+        for (int x = 0; x < 100; ++x) {
+            double cpu = signedCocPixelsFromDepth(model, depths[std::size_t(x)]);
+            worst = std::max(worst, std::abs(double(out.texel(x, 0, 0)) - cpu));
+        }
+        EXPECT_LE(worst, 1e-3) << (convention == CocConvention::chapter ? "chapter" : "corrected");
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, SkyFocusPlaneAndBeyondFar) {
+    ThinLensModel model = thinLensModel(chapterCamera(CocConvention::chapter, 32.0f));
+    const float atFocus = float(windowDepth(15.264, 0.5, 500.0));
+    const float values[] = {1.0f, atFocus, 1.5f, 1e30f, -0.5f, 0.0f};
+    FloatImage out = coc(6, 1, model, [&](int x, int) { return values[x]; });
+    ASSERT_FALSE(out.empty()) << lastErrors;
+    ASSERT_TRUE(allFinite(out));
+    // The sky is the far plane: a finite CoC (the chapter's 1.57 px at 1280 wide, hard case 9).
+    EXPECT_NEAR(out.texel(0, 0, 0), signedCocPixelsFromDepth(model, 1.0), 1e-3);
+    EXPECT_GT(out.texel(0, 0, 0), 1.5f);
+    // The focus plane: no 0 * infinity, a CoC of 0 (to the precision a float depth holds the distance).
+    EXPECT_LT(std::abs(out.texel(1, 0, 0)), 1e-3f);
+    // Beyond far counts as far; below 0 as the near plane.
+    EXPECT_EQ(out.texel(2, 0, 0), out.texel(0, 0, 0));
+    EXPECT_EQ(out.texel(3, 0, 0), out.texel(0, 0, 0));
+    EXPECT_EQ(out.texel(4, 0, 0), out.texel(5, 0, 0));
+    EXPECT_NEAR(out.texel(5, 0, 0), signedCocPixels(model, 0.5), 1e-3);
+}
+
+TEST_F(DepthOfFieldOnGl, SliderExtremesStayFiniteAndClamped) {
+    // What the overlay's sliders reach and the scene loader refuses: the focus at and inside the focal
+    // length, at 0 and behind the camera; f-number 0; fields of view near 0 and near 180 deg.
+    std::vector<ThinLensInput> inputs;
+    for (float focus : {0.0311769f, 0.02f, 0.0f, -1.0f}) {
+        ThinLensInput in = chapterCamera(CocConvention::corrected, 32.0f);
+        in.lens.focusDistanceM = focus;
+        inputs.push_back(in);
+        in.convention = CocConvention::chapter;
+        inputs.push_back(in);
+    }
+    ThinLensInput n0 = chapterCamera(CocConvention::corrected, 32.0f);
+    n0.lens.fNumber = 0.0f;
+    inputs.push_back(n0);
+    for (double fov : {0.01, 179.99}) {
+        ThinLensInput in = chapterCamera(CocConvention::corrected, 32.0f);
+        in.lens.focalLengthMm = float(18.0 / std::tan(fov * M_PI / 360.0));
+        inputs.push_back(in);
+    }
+    for (const ThinLensInput& in : inputs) {
+        ThinLensModel model = thinLensModel(in);
+        FloatImage out = coc(16, 1, model, [](int x, int) { return float(x) / 15.0f; });
+        ASSERT_FALSE(out.empty()) << lastErrors;
+        for (int x = 0; x < 16; ++x) {
+            float c = out.texel(x, 0, 0);
+            ASSERT_TRUE(std::isfinite(c)) << in.lens.focusDistanceM << " " << x;
+            EXPECT_LE(std::abs(c), 32.0f);
+            EXPECT_NEAR(c, signedCocPixelsFromDepth(model, float(x) / 15.0f),
+                        1e-3 * std::max(1.0f, std::abs(c)));
+        }
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, HugeCocIsClampedAndNeverWrapsAround) {
+    // Red, green and blue thirds, everything at the near plane with a CoC far beyond the clamp (20 px
+    // of radius here). From the left column the blur reaches 20 px to the right, never the blue third;
+    // a tap wrapped around from beyond the left edge would land in it. The same for the right column
+    // and red. Taps off the screen must read its edge.
+    const int w = 63, h = 63;
+    FloatImage split = makeImage(w, h, [](int x, int) {
+        if (x < 21) return std::array<float, 4>{1, 0, 0, 1};
+        return x < 42 ? std::array<float, 4>{0, 1, 0, 1} : std::array<float, 4>{0, 0, 1, 1};
+    });
+    ThinLensInput in = chapterCamera(CocConvention::chapter, 20.0f);
+    in.lens.focusDistanceM = 300.0f;
+    DofLensUniforms lens = dofLensUniforms(thinLensModel(in));
+    ASSERT_GT(std::abs(signedCocPixelsUnclamped(thinLensModel(in), 0.5)), 40.0);  // twice the clamp
+    auto check = [&](const FloatImage& out, const char* what) {
+        ASSERT_FALSE(out.empty()) << lastErrors;
+        ASSERT_TRUE(allFinite(out)) << what;
+        // (The gathered texture is half the size at half resolution.)
+        for (int y = 0; y < out.height; ++y) {
+            EXPECT_EQ(out.texel(0, y, 2), 0.0f) << what << " y " << y;
+            EXPECT_EQ(out.texel(out.width - 1, y, 0), 0.0f) << what << " y " << y;
+        }
+    };
+    check(run(
+              w, h, split, [](int, int) { return 0.0f; },
+              [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                  return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
+              }),
+          "chapter");
+    for (bool half : {false, true}) {
+        check(run(
+                  w, h, split, [](int, int) { return 0.0f; },
+                  [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                      TextureHandle coc = effect.declareCoc(g, d, lens).output;
+                      return effect.declareGather(g, c, coc, lens, {71, half, true, 0.0f}).gathered;
+                  }),
+              half ? "gather, half" : "gather, full");
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, GatherKeepsAUniformImageAtEverySize) {
+    // Any weighted average of one colour is that colour: at 1x1, 63x63 and odd half sizes, for every
+    // kernel, resolution and field setting, with CoCs from near to far across the picture.
+    ThinLensInput in = chapterCamera(CocConvention::corrected, 24.0f);
+    in.lens.focusDistanceM = 3.0f;
+    DofLensUniforms lens = dofLensUniforms(thinLensModel(in));
+    const std::array<float, 4> grey{0.25f, 2.5f, 0.75f, 1.0f};
+    for (auto [w, h] : {std::pair{1, 1}, std::pair{63, 63}, std::pair{7, 5}, std::pair{33, 17}}) {
+        for (int taps : {16, 22, 43, 71}) {
+            for (bool half : {false, true}) {
+                for (bool separate : {false, true}) {
+                    FloatImage out = run(
+                        w, h, uniformColour(w, h, grey),
+                        [w](int x, int) { return float(x) / float(std::max(w - 1, 1)); },
+                        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                            TextureHandle coc = effect.declareCoc(g, d, lens).output;
+                            return effect.declareGather(g, c, coc, lens, {taps, half, separate, 1.0f}).result;
+                        });
+                    ASSERT_FALSE(out.empty()) << lastErrors;
+                    float worst = 0;
+                    for (int y = 0; y < h; ++y)
+                        for (int x = 0; x < w; ++x)
+                            for (int ch = 0; ch < 3; ++ch)
+                                worst =
+                                    std::max(worst, std::abs(out.texel(x, y, ch) - grey[std::size_t(ch)]) /
+                                                        grey[std::size_t(ch)]);
+                    EXPECT_LE(worst, 2e-3f)
+                        << w << "x" << h << " taps " << taps << " half " << half << " separate " << separate;
+                }
+            }
+        }
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, BlurredForegroundSpreadsOverASharpBackgroundOnlyWithSeparateFields) {
+    // Left: a near red object far out of focus; right: a blue background exactly at the focus.
+    const int w = 64, h = 8;
+    ThinLensInput in = chapterCamera(CocConvention::corrected, 32.0f);
+    in.lens.focusDistanceM = 20.0f;
+    DofLensUniforms lens = dofLensUniforms(thinLensModel(in));
+    const float nearDepth = float(windowDepth(0.6, 0.5, 500.0));
+    const float focusDepth = float(windowDepth(20.0, 0.5, 500.0));
+    FloatImage split = makeImage(w, h, [](int x, int) {
+        return x < 32 ? std::array<float, 4>{1, 0, 0, 1} : std::array<float, 4>{0, 0, 1, 1};
+    });
+    auto redAt = [&](bool separate, int x) {
+        FloatImage out = run(
+            w, h, split, [&](int px, int) { return px < 32 ? nearDepth : focusDepth; },
+            [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                TextureHandle coc = effect.declareCoc(g, d, lens).output;
+                return effect.declareGather(g, c, coc, lens, {43, false, separate, 0.0f}).result;
+            });
+        EXPECT_FALSE(out.empty()) << lastErrors;
+        return out.empty() ? -1.0f : out.texel(x, h / 2, 0);
+    };
+    EXPECT_GT(redAt(true, 34), 0.1f);   // the foreground's blur reaches over the background
+    EXPECT_EQ(redAt(false, 34), 0.0f);  // one average: the sharp background stays sharp, a hard edge
+    EXPECT_EQ(redAt(true, 60), 0.0f);   // but not beyond its own radius (the clamp: 16 px here)
+}
+
+TEST(DofReference, JitteredCameraKeepsTheFocusPlaneAndBlursByTheCoc) {
+    // A pinhole moved across the aperture sees the focus plane on the same pixels, and a point at
+    // another distance moved by the CoC radius the model gives when the pinhole is at the rim.
+    Camera camera;
+    camera.position = {0, 1.2f, 0};
+    camera.target = {0, 1.2f, -15.264f};
+    camera.near = 0.5f;
+    camera.far = 500.0f;
+    ThinLensInput in = chapterCamera(CocConvention::corrected);
+    for (CocConvention convention : {CocConvention::corrected, CocConvention::chapter}) {
+        in.convention = convention;
+        ThinLensModel model = thinLensModel(in);
+        camera.fovYDegrees = dofVerticalFovDegrees(in.lens, convention, 1280.0f / 720.0f);
+        CameraMatrices base = cameraMatrices(camera, 1280, 720);
+        float aperture = referenceApertureRadiusM(float(model.scalePixelsM), float(model.radiusPerDiameter),
+                                                  camera.fovYDegrees, 720);
+        CameraMatrices rim = jitteredCamera(base, camera.fovYDegrees, camera.near, camera.far,
+                                            glm::vec2(aperture, 0.0f), float(model.focusM));
+        auto pixelX = [](const CameraMatrices& m, glm::vec3 p) {
+            glm::vec4 clip = m.viewProjection * glm::vec4(p, 1.0f);
+            return (clip.x / clip.w * 0.5f + 0.5f) * 1280.0f;
+        };
+        glm::vec3 onFocus(0.7f, 1.5f, -15.264f), near(0.2f, 1.0f, -2.0f);
+        EXPECT_NEAR(pixelX(rim, onFocus), pixelX(base, onFocus), 1e-3f);
+        double radius = std::abs(signedCocPixels(model, 2.0)) * model.radiusPerDiameter;
+        EXPECT_NEAR(std::abs(pixelX(rim, near) - pixelX(base, near)), radius, 2e-3 * radius);
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
+    // Everything at the focus distance: the chapter's 13 taps all land on the pixel itself, and the
+    // gather's composite keeps the sharp scene. The naive version is sharp where raw depth is 0.935.
+    const int w = 33, h = 17;
+    FloatImage patterned = makeImage(w, h, [](int x, int y) {
+        std::array<float, 4> v{};
+        // Multiples of 1/16 below 4: exact in the effect's RGBA16F outputs.
+        for (int c = 0; c < 3; ++c)
+            v[std::size_t(c)] = std::floor(fx::test::hashedValue(x, y, c) * 64.0f) / 16.0f;
+        v[3] = 1.0f;
+        return v;
+    });
+    ThinLensModel model = thinLensModel(chapterCamera(CocConvention::corrected, 32.0f));
+    DofLensUniforms lens = dofLensUniforms(model);
+    const float focusDepth = float(windowDepth(model.focusM, 0.5, 500.0));
+    auto worstChange = [&](const FloatImage& out) {
+        float worst = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::abs(out.texel(x, y, c) - patterned.texel(x, y, c)));
+        return worst;
+    };
+    FloatImage chapter = run(
+        w, h, patterned, [&](int, int) { return focusDepth; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
+        });
+    ASSERT_FALSE(chapter.empty()) << lastErrors;
+    // 13 equal taps summed and divided by 13 may land a float ulp below the value, and llvmpipe's
+    // conversion to half floats truncates: one half-float step (2^-9 between 2 and 4) at most.
+    EXPECT_LE(worstChange(chapter), 1.0f / 512.0f);
+    for (bool half : {false, true}) {
+        FloatImage gathered = run(
+            w, h, patterned, [&](int, int) { return focusDepth; },
+            [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+                TextureHandle coc = effect.declareCoc(g, d, lens).output;
+                return effect.declareGather(g, c, coc, lens, {43, half, true, 0.0f}).result;
+            });
+        ASSERT_FALSE(gathered.empty()) << lastErrors;
+        EXPECT_EQ(worstChange(gathered), 0.0f) << "half " << half;
+    }
+    FloatImage naive = run(
+        w, h, patterned, [](int, int) { return 0.935f; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareNaive(g, c, d, {}).output;
+        });
+    ASSERT_FALSE(naive.empty()) << lastErrors;
+    EXPECT_LE(worstChange(naive), 1.0f / 512.0f);
+    // And elsewhere it blurs: raw depth 1 (the sky) scales the disk by 0.0065 of the screen.
+    FloatImage naiveSky = run(
+        w, h, patterned, [](int, int) { return 1.0f; },
+        [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            return effect.declareNaive(g, c, d, {}).output;
+        });
+    ASSERT_FALSE(naiveSky.empty()) << lastErrors;
+    EXPECT_GT(worstChange(naiveSky), 0.1f);
+}
