@@ -50,9 +50,16 @@ std::vector<std::string> FboPipelineLesson::steps() const {
 }
 
 void FboPipelineLesson::declareParams(ParamSet& params) {
-    params.addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
-                    "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
-                    "(0: the fix only)");
+    params
+        .addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
+                  "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
+                  "(0: the fix only)")
+        .inSteps({OneOutputTransform});
+    params
+        .addBool("viewport_bug", &viewportBug_,
+                 "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a "
+                 "deliberate bug)")
+        .inSteps({FloatTarget, OneOutputTransform});
 }
 
 Status FboPipelineLesson::init(const Scene& scene) {
@@ -118,6 +125,12 @@ void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameIn
 void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
                                                   const DeclaredShadowMap& shadow) {
     LitSceneOptions sceneOptions;
+    // The chapter binds a framebuffer and sets its viewport in one go; forget the second half after
+    // the shadow map and the scene is drawn into a 2048x2048 viewport on a smaller target: only the
+    // bottom-left corner of the picture lands in it. The graph sets every pass's viewport from its
+    // target, so here the bug has to be declared on purpose.
+    if (viewportBug_ && shadow.pass)
+        sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
         HdrSceneTargets main = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
@@ -203,6 +216,17 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
             inherited.empty() ? "shadow pass inherits (nothing: it declares all the state it depends on)"
                               : "shadow pass inherits");
     if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_, "shadow map not run");
+    if (frame.step >= FloatTarget) {
+        std::string target = cat(frame.size.width, "x", frame.size.height);
+        bool bug = viewportBug_ && noShadowReason_.empty();
+        int map = 0;
+        if (const Light* sun = shadowCastingLight(*scene_)) map = sun->shadow.mapSize;
+        out.add(
+            "sceneViewport",
+            bug ? cat(map, "x", map, " on a ", target, " target (the shadow map's: only a corner is drawn)")
+                : cat(target, ", the target's (set by the graph)"),
+            "the scene pass's viewport");
+    }
 }
 
 }  // namespace lesson03

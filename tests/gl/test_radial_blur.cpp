@@ -271,6 +271,36 @@ TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
     }
 }
 
+TEST_F(RadialBlurOnGl, TheBlurSamplesWithItsOwnSamplerNotTheTexturesParameters) {
+    // The input texture itself says REPEAT and NEAREST (as a texture made for tiling would): the blur
+    // binds its own sampler, so its taps still clamp to the edge and filter bilinearly.
+    const int w = 64, h = 16;
+    EffectRunner runner(w, h);
+    FloatImage input = makeImage(w, h, [](int x, int) {
+        float v = x < 8 ? 50.0f : 0.25f;
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    RadialBlurParams params;
+    params.centre = {1.25f, 0.5f};
+    params.length = 0.1f;
+    params.start = 0.0f;
+    FloatImage out = runner.run(input, TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
+        GLuint texture = GLuint(g.texture(in).native);
+        EXPECT_NE(texture, 0u);
+        glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        return effect.declare(g, in, params, TextureFormat::RGBA32F).blur.output;
+    });
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    for (int y = 0; y < h; ++y) {
+        for (int x = w - 4; x < w; ++x)
+            EXPECT_NEAR(out.texel(x, y, 0), 0.25f, 1e-5f)
+                << "pixel " << x << ", " << y << ": the texture's REPEAT was used";
+    }
+}
+
 TEST_F(RadialBlurOnGl, NegativeLengthIsNoBlurAndNoOffset) {
     // Shader effects, hard case 3: z <= 0 skips the blur. The effect clamps a negative length to 0
     // itself (a scene file or a script need not go through the slider), so the offsets it shows are 0
