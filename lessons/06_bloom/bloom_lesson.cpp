@@ -41,7 +41,8 @@ std::string brightestEmitters(const Scene& scene, std::size_t count) {
         float brightest = std::max({e.r, e.g, e.b});
         if (brightest > 0.0f) emitters.emplace_back(brightest, o.name);
     }
-    std::sort(emitters.begin(), emitters.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::sort(emitters.begin(), emitters.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
     std::string text;
     for (std::size_t i = 0; i < emitters.size() && i < count; ++i)
         text += cat(i ? ", " : "", emitters[i].second, " ", emitters[i].first);
@@ -250,11 +251,11 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
         return;
     }
     if (step < Chapter000) {
-        ImGui::TextWrapped("Inspect scene.color and look at the range: %s",
-                           step == EightBit ? "nothing above 1."
-                                            : cat("the brightest emitters are ", brightestEmitters(*scene_, 3),
-                                                  ".")
-                                                  .c_str());
+        ImGui::TextWrapped(
+            "Inspect scene.color and look at the range: %s",
+            step == EightBit
+                ? "nothing above 1."
+                : cat("the brightest emitters are ", brightestEmitters(*scene_, 3), ".").c_str());
         return;
     }
     if (flicker_.stats().measured && !showsReference(step)) {
