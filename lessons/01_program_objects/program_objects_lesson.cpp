@@ -48,20 +48,29 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 }
 
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
-    params.addChoice(
-        "broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
-        "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 "
-        "uses it unchecked, step 2 refuses it and shows the log)");
-    params.addBool("lookup_every_draw", &lookupEveryDraw_,
-                   "Step 3: call glGetUniformLocation for every draw");
-    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid");
-    Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
-                                    "Step 4: which product the presented sphere uses");
+    // Each parameter is listed in the steps it acts in.
+    params
+        .addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
+                   "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 "
+                   "uses it unchecked, step 2 refuses it and shows the log)")
+        .inSteps({CopyPasted, CheckedPrograms});
+    params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw")
+        .inSteps({CachedLocations});
+    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid")
+        .inSteps({CachedLocations});
+    Param& order = params
+                       .addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
+                                  "Step 4: which product the presented sphere uses")
+                       .inSteps({Parentheses});
     order.knob = Knob{{0, 1}, 1, "order"};
-    params.addInt("spheres", &spheres_, 1, 256,
-                  "Step 4: spheres drawn (a square grid), so vertex work shows in the time");
-    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512,
-                                  "Step 4: sphere segments (vertices grow with the square)");
+    params
+        .addInt("spheres", &spheres_, 1, 256,
+                "Step 4: spheres drawn (a square grid), so vertex work shows in the time")
+        .inSteps({Parentheses});
+    Param& detail = params
+                        .addInt("mesh_detail", &meshDetail_, 8, 512,
+                                "Step 4: sphere segments (vertices grow with the square)")
+                        .inSteps({Parentheses});
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
