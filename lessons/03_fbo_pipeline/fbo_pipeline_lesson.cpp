@@ -14,12 +14,6 @@ using namespace fx;
 
 namespace {
 
-std::string joined(const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
-    return text;
-}
-
 // The chapter's frame state from section 3.2 step 3: depth testing and alpha blending for every 3D
 // draw that follows, set once at the start of the frame.
 PassState chapterDrawState(const Scene& scene) {
@@ -160,20 +154,6 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
     uiQueue_.declare(graph, frame.size);
 }
 
-namespace {
-
-// The passes that ran in `report`, in order.
-std::vector<std::string> executedPasses(const FrameReport* report) {
-    std::vector<std::string> names;
-    if (!report) return names;
-    for (const PassRecord& p : report->passes) {
-        if (p.executed) names.push_back(p.name);
-    }
-    return names;
-}
-
-}  // namespace
-
 std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* report) const {
     if (!report) return {};
     std::vector<const PassRecord*> shadow = shadowPass_.records(*report);
@@ -181,7 +161,8 @@ std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* r
 }
 
 void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
-    const std::vector<std::string> executed = executedPasses(frame.previousFrame);
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
     ImGui::TextUnformatted("Frame order");
     if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
         return;
@@ -209,10 +190,11 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
 
 void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
     // The two orders are the panel's table; the report has them for the draw-order check.
-    out.check("chapterPassOrder", joined(chapterPassOrder(frame.step)));
-    out.check("executedPassOrder", joined(executedPasses(frame.previousFrame)));
+    out.check("chapterPassOrder", joinedNames(chapterPassOrder(frame.step)));
+    out.check("executedPassOrder", joinedNames(frame.previousFrame ? frame.previousFrame->executedPasses()
+                                                                   : std::vector<std::string>{}));
     std::vector<std::string> inherited = shadowInherited(frame.previousFrame);
-    out.add("shadowPassInherits", joined(inherited),
+    out.add("shadowPassInherits", joinedNames(inherited),
             inherited.empty() ? "shadow pass inherits (nothing: it declares all the state it depends on)"
                               : "shadow pass inherits");
     if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_, "shadow map not run");

@@ -298,28 +298,9 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     }
 }
 
-namespace {
-
-// The passes that ran in `report`, in order.
-std::vector<std::string> executedPasses(const FrameReport* report) {
-    std::vector<std::string> names;
-    if (!report) return names;
-    for (const PassRecord& p : report->passes) {
-        if (p.executed) names.push_back(p.name);
-    }
-    return names;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
-    return text;
-}
-
-}  // namespace
-
 void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
-    const std::vector<std::string> executed = executedPasses(frame.previousFrame);
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
     ImGui::TextUnformatted("The chapter's per-frame pipeline, and the passes that ran");
     if (!ImGui::BeginTable("whole frame", 2,
                            ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
@@ -348,9 +329,10 @@ void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
     out.add("frameMatrix", matrices[std::clamp(frameMatrix_, 0, 2)], "colour matrix");
     std::vector<std::string> passes;
     for (const ChapterFrameRow& row : chapterFrameTable()) passes.push_back(row.pass);
-    out.check("chapterTableOrder", joined(passes));
-    const std::vector<std::string> executed = executedPasses(frame.previousFrame);
-    out.check("executedPassOrder", joined(executed));
+    out.check("chapterTableOrder", joinedNames(passes));
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
+    out.check("executedPassOrder", joinedNames(executed));
     if (frame.previousFrame) {
         std::string why;
         bool follows = followsChapterTable(executed, &why);

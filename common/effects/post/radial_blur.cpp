@@ -72,12 +72,7 @@ RadialBlur RadialBlur::create() {
     RadialBlur r;
     r.blur_ = FullscreenPass("effects/post/radial_blur.frag", "radial blur");
     r.offsets_ = FullscreenPass("effects/post/radial_blur_offset.frag", "radial blur offsets");
-    r.sampler_ = gl::createSampler("radial blur (linear, clamp to edge)");
-    GLuint name = r.sampler_.name();
-    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    r.sampler_ = gl::createLinearClampSampler("radial blur (linear, clamp to edge)");
     return r;
 }
 
