@@ -49,6 +49,10 @@ void printParams(const ParamSet& params) {
                   << ")";
         if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
         if (!p.sceneSetting.empty()) std::cout << "\n    starts from the scene's " << p.sceneSetting;
+        if (!p.steps.empty()) {
+            std::cout << "\n    acts in step" << (p.steps.size() > 1 ? "s" : "");
+            for (std::size_t i = 0; i < p.steps.size(); ++i) std::cout << (i ? ", " : " ") << p.steps[i] + 1;
+        }
         std::cout << "\n    " << p.description << "\n";
     }
 }

@@ -164,6 +164,18 @@ Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string
     return add(std::move(p));
 }
 
+bool Param::actsIn(int step) const {
+    return steps.empty() || std::find(steps.begin(), steps.end(), step) != steps.end();
+}
+
+std::vector<const Param*> ParamSet::forStep(int step) const {
+    std::vector<const Param*> list;
+    for (const Param& p : params_) {
+        if (p.actsIn(step)) list.push_back(&p);
+    }
+    return list;
+}
+
 const Param* ParamSet::find(std::string_view name) const {
     for (auto& p : params_) {
         if (p.name == name) return &p;

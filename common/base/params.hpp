@@ -56,11 +56,21 @@ struct Param {
     double startValue = 0;
     ParamSource startOrigin = ParamSource::lessonDefault;
 
+    // The steps (0-based) the parameter acts in; empty: every step. The overlay lists only the
+    // parameters of the step on screen, so a step never shows another step's settings.
+    std::vector<int> steps;
+
     // Names the scene setting that gives this parameter its starting value.
     Param& fromScene(std::string setting) {
         sceneSetting = std::move(setting);
         return *this;
     }
+    // The parameter acts only in these steps (0-based).
+    Param& inSteps(std::vector<int> only) {
+        steps = std::move(only);
+        return *this;
+    }
+    bool actsIn(int step) const;
     ParamSource source() const;
 
     double get() const;
@@ -99,6 +109,8 @@ public:
     void markStartingValues();
 
     const Param* find(std::string_view name) const;
+    // The parameters that act in `step` (0-based), in the order they were added.
+    std::vector<const Param*> forStep(int step) const;
     const std::vector<Param>& all() const { return params_; }
     std::vector<const Param*> knobs() const;
     // Back to the starting values (the lesson's defaults until markStartingValues()).

@@ -49,6 +49,16 @@ SamplerName createSampler(std::string_view label) {
     return createLabelled<SamplerName>([](GLuint* n) { glCreateSamplers(1, n); }, label);
 }
 
+SamplerName createLinearClampSampler(std::string_view label) {
+    SamplerName sampler = createSampler(label);
+    GLuint name = sampler.name();
+    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return sampler;
+}
+
 QueryName createQuery(GLenum target, std::string_view label) {
     return createLabelled<QueryName>([target](GLuint* n) { glCreateQueries(target, 1, n); }, label);
 }

@@ -113,6 +113,9 @@ FramebufferName createFramebuffer(std::string_view label);
 RenderbufferName createRenderbuffer(std::string_view label);
 VertexArrayName createVertexArray(std::string_view label);
 SamplerName createSampler(std::string_view label);
+// Bilinear filtering, clamped to the edge on both axes: what a post effect's taps need whatever
+// parameters the texture it reads carries (REPEAT would bring in the opposite edge).
+SamplerName createLinearClampSampler(std::string_view label);
 QueryName createQuery(GLenum target, std::string_view label);
 
 }  // namespace fx::gl

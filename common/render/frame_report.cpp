@@ -12,6 +12,20 @@ double FrameReport::timedMs() const {
     return total;
 }
 
+std::vector<std::string> FrameReport::executedPasses() const {
+    std::vector<std::string> names;
+    for (const PassRecord& p : passes) {
+        if (p.executed) names.push_back(p.name);
+    }
+    return names;
+}
+
+std::string joinedNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
 const PassRecord* FrameReport::findPass(std::string_view name) const {
     auto it = std::find_if(passes.begin(), passes.end(), [&](const PassRecord& p) { return p.name == name; });
     return it == passes.end() ? nullptr : &*it;

@@ -77,10 +77,14 @@ struct FrameReport {
     const PassRecord* findPass(std::string_view name) const;
     // The summed time of every timed pass.
     double timedMs() const;
+    // The names of the passes that ran, in the order they ran (what a lesson compares with a chapter's).
+    std::vector<std::string> executedPasses() const;
     const TextureRecord* findTexture(std::string_view name) const;
 };
 
 std::string_view toString(PassStatus status);
+// "a, b, c": a list of names in one line, for facts and reports.
+std::string joinedNames(const std::vector<std::string>& names);
 // A plain-text table of the report, for logs and the headless run report.
 std::string describe(const FrameReport& report);
 

@@ -42,8 +42,9 @@ bool drawParamWidget(const Param& p) {
 
 }  // namespace
 
-void drawParams(ParamSet& params) {
-    for (const Param& p : params.all()) {
+void drawParams(ParamSet& params, int step) {
+    for (const Param* each : params.forStep(step)) {
+        const Param& p = *each;
         ImGui::PushID(p.name.c_str());
         if (drawParamWidget(p)) params.markEdited(p);
         bool hovered = ImGui::IsItemHovered();
@@ -127,9 +128,10 @@ void drawLessonWindowContents(const OverlayModel& m) {
         ImGui::TextColored(ui_style::kError, "Shader errors (the last good program keeps running):");
         for (auto& e : m.shaderErrors) ImGui::TextWrapped("%s", e.c_str());
     }
-    if (m.params && !m.params->all().empty() &&
+    const int step = m.step ? *m.step : 0;
+    if (m.params && !m.params->forStep(step).empty() &&
         ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-        drawParams(*m.params);
+        drawParams(*m.params, step);
         if (ImGui::Button("Reset")) m.params->resetAll();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Back to the values the run started with (scene, preset, command line)");

@@ -5,7 +5,8 @@
 
 namespace fx {
 
-void drawParams(ParamSet& params);
+// The parameters that act in `step` (0-based), each with its widget and where its value came from.
+void drawParams(ParamSet& params, int step);
 void drawLessonWindowContents(const OverlayModel& model);
 
 }  // namespace fx

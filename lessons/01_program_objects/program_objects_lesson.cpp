@@ -1,7 +1,9 @@
 #include "program_objects_lesson.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -10,6 +12,7 @@
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "gl/debug_output.hpp"
 #include "raw_programs.hpp"
 
 namespace lesson01 {
@@ -45,18 +48,29 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 }
 
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
-    params.addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
-                     "Step 2: build a deliberately broken program and show its log");
-    params.addBool("lookup_every_draw", &lookupEveryDraw_,
-                   "Step 3: call glGetUniformLocation for every draw");
-    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid");
-    Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
-                                    "Step 4: which product the presented sphere uses");
+    // Each parameter is listed in the steps it acts in.
+    params
+        .addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
+                   "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 "
+                   "uses it unchecked, step 2 refuses it and shows the log)")
+        .inSteps({CopyPasted, CheckedPrograms});
+    params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw")
+        .inSteps({CachedLocations});
+    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid")
+        .inSteps({CachedLocations});
+    Param& order = params
+                       .addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
+                                  "Step 4: which product the presented sphere uses")
+                       .inSteps({Parentheses});
     order.knob = Knob{{0, 1}, 1, "order"};
-    params.addInt("spheres", &spheres_, 1, 256,
-                  "Step 4: spheres drawn (a square grid), so vertex work shows in the time");
-    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512,
-                                  "Step 4: sphere segments (vertices grow with the square)");
+    params
+        .addInt("spheres", &spheres_, 1, 256,
+                "Step 4: spheres drawn (a square grid), so vertex work shows in the time")
+        .inSteps({Parentheses});
+    Param& detail = params
+                        .addInt("mesh_detail", &meshDetail_, 8, 512,
+                                "Step 4: sphere segments (vertices grow with the square)")
+                        .inSteps({Parentheses});
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
@@ -65,10 +79,6 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
     meshes_ = SceneMeshes(scene);
     gridBox_ = GpuMesh(makeBox({0.18f, 0.18f, 0.18f}), "grid box");
     emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
-
-    rawLit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("lit.frag"));
-    rawUnlit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("unlit.frag"));
-    rawNormals_ = buildProgramWithoutChecks(shader("lit.vert"), shader("normals.frag"));
 
     lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
     unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
@@ -81,17 +91,64 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
     return Status::success();
 }
 
-void ProgramObjectsLesson::updateBrokenAttempt() {
-    if (brokenBuilt_ == broken_) return;
-    brokenBuilt_ = broken_;
-    const char* files[] = {nullptr, "broken_syntax.frag", "broken_undeclared.frag", "broken_link.frag"};
-    if (broken_ == NotBroken) {
+namespace {
+
+// The deliberately broken fragment shaders, by Broken value (shaders/lessons/01_program_objects/).
+const char* brokenFile(int broken) {
+    const char* files[] = {"normals.frag", "broken_syntax.frag", "broken_undeclared.frag",
+                           "broken_link.frag"};
+    return files[std::clamp(broken, 0, 3)];
+}
+
+// The objects drawn with a program of their own (scenes/01_program_objects.json).
+constexpr const char* kUnlitObject = "box";
+constexpr const char* kNormalsObject = "sphere";
+
+}  // namespace
+
+void ProgramObjectsLesson::updateRawPrograms() {
+    if (rawBuiltWith_ == broken_) return;
+    rawBuiltWith_ = broken_;
+    // The typo lands in the normals program, as a typo lands in one file: nothing here looks at the
+    // compile or link status, so the program is kept, unusable, and used.
+    rawLit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("lit.frag"), "raw lit");
+    rawUnlit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("unlit.frag"), "raw unlit");
+    rawNormals_ = buildProgramWithoutChecks(shader("lit.vert"), shader(brokenFile(broken_)), "raw normals");
+}
+
+void ProgramObjectsLesson::updateBrokenAttempt(int step) {
+    // Only step 2 keeps the failed build: every program built joins the run's registry, whose errors
+    // the overlay shows in red, and F5 rebuilds; in the other steps nothing is broken on purpose.
+    const int wanted = step == CheckedPrograms && broken_ != NotBroken ? broken_ : -1;
+    if (brokenBuilt_ == wanted) return;
+    brokenBuilt_ = wanted;
+    if (wanted < 0) {
         brokenAttempt_ = {};
         return;
     }
-    // The checked build fails and says why; the scene keeps drawing with the good programs.
-    brokenAttempt_ =
-        gl::ReloadableProgram({shader("lit.vert"), shader(files[broken_]), {}, {}, files[broken_]});
+    // The checked build fails and says why; the sphere keeps drawing with the good normals program.
+    brokenAttempt_ = gl::ReloadableProgram(
+        {shader("lit.vert"), shader(brokenFile(wanted)), {}, {}, cat("normals (", brokenFile(wanted), ")")});
+}
+
+void ProgramObjectsLesson::drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals,
+                                             const FrameInfo& frame) const {
+    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+    auto named = [](const char* name) { return [name](const SceneObject& o) { return o.name == name; }; };
+    MeshDrawOptions rest;
+    rest.only = [](const SceneObject& o) { return o.name != kUnlitObject && o.name != kNormalsObject; };
+    meshes_.draw(lit, *scene_, frame.seconds, rest);
+    MeshDrawOptions box;
+    box.only = named(kUnlitObject);
+    meshes_.draw(unlit, *scene_, frame.seconds, box);
+    // glUseProgram with a program that did not link fails and leaves the program bound before it in
+    // use: what the object looks like then depends on what ran last (the chapter's engine drew it
+    // black). Unbinding first makes it the same every frame: no program, nothing drawn.
+    glUseProgram(0);
+    MeshDrawOptions sphere;
+    sphere.only = named(kNormalsObject);
+    meshes_.draw(normals, *scene_, frame.seconds, sphere);
 }
 
 void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
@@ -200,32 +257,43 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    updateBrokenAttempt();
+    updateBrokenAttempt(frame.step);
     if (frame.step == Parentheses) {
         buildSkinningComparison(graph, frame);
         return;
     }
+    if (frame.step == CopyPasted) updateRawPrograms();
     PassState sceneState = hdrSceneState(*scene_);
     graph
-        .addPass("scene",
-                 [this, frame](PassContext&) {
-                     switch (frame.step) {
-                         case CopyPasted: {
-                             CameraMatrices camera =
-                                 cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-                             GLuint programs[3] = {rawLit_.name(), rawUnlit_.name(), rawNormals_.name()};
-                             for (GLuint p : programs) SceneMeshes::setFrameUniforms(p, *scene_, camera);
-                             meshes_.draw(rawLit_.name(), *scene_, frame.seconds);
-                             break;
-                         }
-                         case CachedLocations:
-                             drawGrid(lit_.name(), frame);
-                             break;
-                         default:
-                             drawScene(lit_.name(), frame);
-                             break;
-                     }
-                 })
+        .addPass(
+            "scene",
+            [this, frame](PassContext&) {
+                switch (frame.step) {
+                    case CopyPasted: {
+                        // A broken program raises GL_INVALID_OPERATION at every use, and nothing in
+                        // step 1 asks: the debug output counts them as expected here.
+                        std::optional<gl::ExpectedErrorScope> expected;
+                        if (broken_ != NotBroken) expected.emplace("lesson 01 step 1: an unchecked program");
+                        std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
+                        drawThreePrograms(rawLit_.name(), rawUnlit_.name(), rawNormals_.name(), frame);
+                        rawErrorsLastFrame_ =
+                            gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
+                        break;
+                    }
+                    case CheckedPrograms: {
+                        // The failed build is refused; the last good normals program draws.
+                        GLuint normals = brokenAttempt_.usable() ? brokenAttempt_.name() : normals_.name();
+                        drawThreePrograms(lit_.name(), unlit_.name(), normals, frame);
+                        break;
+                    }
+                    case CachedLocations:
+                        drawGrid(lit_.name(), frame);
+                        break;
+                    default:
+                        drawScene(lit_.name(), frame);
+                        break;
+                }
+            })
         .writeColor(graph.output())
         .setState(sceneState);
 }
@@ -235,11 +303,20 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
         case CopyPasted:
             ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)",
                                rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
+            if (broken_ != NotBroken) {
+                ImGui::TextWrapped(
+                    "The normals program was built from %s: it did not link, nothing asked, and the "
+                    "sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
+                    brokenFile(broken_), static_cast<long long>(rawErrorsLastFrame_));
+            }
             break;
         case CheckedPrograms:
             if (broken_ == NotBroken) {
                 ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
             } else {
+                ImGui::TextWrapped(
+                    "The check refused the broken normals program; the sphere keeps the last "
+                    "good one. Its log:");
                 ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
             }
             break;
@@ -269,6 +346,11 @@ void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
     fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_),
          "time spent in glGetUniformLocation (ms)");
     out.check("brokenShaderLog", brokenAttempt_.error());  // the panel shows it in colour
+    // Step 1 with a broken shader exists to show GL errors (counted as expected); the smoke test
+    // checks that it does, and that no other step raises any.
+    out.check("expectErrorsInStep", frame.step == CopyPasted && broken_ != NotBroken);
+    fact(frame.step == CopyPasted, "uncheckedProgramGlErrorsLastFrame", std::to_string(rawErrorsLastFrame_),
+         "GL errors step 1's draws raised last frame (nothing checks them)");
     fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()), "vertices per sphere");
     fact(products, "spheres", std::to_string(spheres_), "spheres");
     fact(products, "opsGroupedPerVertex", std::to_string(kGrouped.mul + kGrouped.add),

@@ -1,5 +1,6 @@
 #pragma once
 // Lesson 01: program objects (the Shader effects chapter, §1 and its learning goals).
+#include <cstdint>
 #include <memory>
 
 #include "app/lesson.hpp"
@@ -25,7 +26,9 @@ public:
 
 private:
     // Parameters.
-    int broken_ = NotBroken;
+    // Steps 1 and 2 start with the chapter's typo in the normals program: step 1 shows what it does
+    // unchecked, step 2 the check that catches it. "none" shows both steps working.
+    int broken_ = SyntaxError;
     bool lookupEveryDraw_ = false;
     int gridSize_ = 20;
     int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
@@ -38,12 +41,15 @@ private:
     fx::GpuMesh denseSphere_;
     int denseSphereDetail_ = 0;
 
-    // Step 1: raw names, built without checks.
+    // Step 1: raw names, built without checks (again whenever broken_shader changes).
     fx::gl::ProgramName rawLit_, rawUnlit_, rawNormals_;
+    int rawBuiltWith_ = -1;
+    std::int64_t rawErrorsLastFrame_ = 0;  // GL errors step 1's draws raised (none checks them)
     // Steps 2 to 5: checked, reloadable program objects.
     fx::gl::ReloadableProgram lit_, unlit_, normals_;
+    // Step 2: the normals program rebuilt from the broken file, checked; only while step 2 shows it.
     fx::gl::ReloadableProgram brokenAttempt_;
-    int brokenBuilt_ = -1;
+    int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
     fx::gl::ReloadableProgram skinGrouped_, skinParenthesised_;
     fx::gl::ReloadableProgram copy_;
     fx::gl::VertexArrayName emptyVao_;
@@ -55,9 +61,13 @@ private:
     fx::PassGroup groupedPass_, parenthesisedPass_;
 
     void drawScene(GLuint program, const fx::FrameInfo& frame) const;
+    // The chapter's picture of several programs: the box unlit, the sphere in the normals program,
+    // the rest lit.
+    void drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals, const fx::FrameInfo& frame) const;
+    void updateRawPrograms();
     void drawGrid(GLuint program, const fx::FrameInfo& frame);
     void buildSkinningComparison(fx::FrameGraph& graph, const fx::FrameInfo& frame);
-    void updateBrokenAttempt();
+    void updateBrokenAttempt(int step);
 };
 
 }  // namespace lesson01

@@ -6,7 +6,8 @@
 namespace lesson01 {
 
 fx::gl::ProgramName buildProgramWithoutChecks(const std::filesystem::path& vertexFile,
-                                              const std::filesystem::path& fragmentFile) {
+                                              const std::filesystem::path& fragmentFile,
+                                              const std::string& label) {
     // #include still has to be expanded for the files to compile at all; that part is fxlab's.
     auto vsText = fx::gl::expandShaderSource(fx::shaderDir() / vertexFile, fx::shaderDir());
     auto fsText = fx::gl::expandShaderSource(fx::shaderDir() / fragmentFile, fx::shaderDir());
@@ -16,10 +17,13 @@ fx::gl::ProgramName buildProgramWithoutChecks(const std::filesystem::path& verte
     GLuint vs = glCreateShader(GL_VERTEX_SHADER);
     glShaderSource(vs, 1, &vsSource, nullptr);
     glCompileShader(vs);
+    fx::gl::labelObject(GL_SHADER, vs, label + ".vert");
     GLuint fs = glCreateShader(GL_FRAGMENT_SHADER);
     glShaderSource(fs, 1, &fsSource, nullptr);
     glCompileShader(fs);
+    fx::gl::labelObject(GL_SHADER, fs, label + ".frag");
     GLuint program = glCreateProgram();
+    fx::gl::labelObject(GL_PROGRAM, program, label + " (unchecked)");
     glAttachShader(program, vs);
     glAttachShader(program, fs);
     glLinkProgram(program);

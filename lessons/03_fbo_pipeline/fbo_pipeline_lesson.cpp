@@ -14,12 +14,6 @@ using namespace fx;
 
 namespace {
 
-std::string joined(const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
-    return text;
-}
-
 // The chapter's frame state from section 3.2 step 3: depth testing and alpha blending for every 3D
 // draw that follows, set once at the start of the frame.
 PassState chapterDrawState(const Scene& scene) {
@@ -50,9 +44,16 @@ std::vector<std::string> FboPipelineLesson::steps() const {
 }
 
 void FboPipelineLesson::declareParams(ParamSet& params) {
-    params.addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
-                    "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
-                    "(0: the fix only)");
+    params
+        .addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
+                  "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
+                  "(0: the fix only)")
+        .inSteps({OneOutputTransform});
+    params
+        .addBool("viewport_bug", &viewportBug_,
+                 "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a "
+                 "deliberate bug)")
+        .inSteps({FloatTarget, OneOutputTransform});
 }
 
 Status FboPipelineLesson::init(const Scene& scene) {
@@ -118,6 +119,12 @@ void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameIn
 void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
                                                   const DeclaredShadowMap& shadow) {
     LitSceneOptions sceneOptions;
+    // The chapter binds a framebuffer and sets its viewport in one go; forget the second half after
+    // the shadow map and the scene is drawn into a 2048x2048 viewport on a smaller target: only the
+    // bottom-left corner of the picture lands in it. The graph sets every pass's viewport from its
+    // target, so here the bug has to be declared on purpose.
+    if (viewportBug_ && shadow.pass)
+        sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
         HdrSceneTargets main = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
@@ -147,20 +154,6 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
     uiQueue_.declare(graph, frame.size);
 }
 
-namespace {
-
-// The passes that ran in `report`, in order.
-std::vector<std::string> executedPasses(const FrameReport* report) {
-    std::vector<std::string> names;
-    if (!report) return names;
-    for (const PassRecord& p : report->passes) {
-        if (p.executed) names.push_back(p.name);
-    }
-    return names;
-}
-
-}  // namespace
-
 std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* report) const {
     if (!report) return {};
     std::vector<const PassRecord*> shadow = shadowPass_.records(*report);
@@ -168,7 +161,8 @@ std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* r
 }
 
 void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
-    const std::vector<std::string> executed = executedPasses(frame.previousFrame);
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
     ImGui::TextUnformatted("Frame order");
     if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
         return;
@@ -196,13 +190,25 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
 
 void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
     // The two orders are the panel's table; the report has them for the draw-order check.
-    out.check("chapterPassOrder", joined(chapterPassOrder(frame.step)));
-    out.check("executedPassOrder", joined(executedPasses(frame.previousFrame)));
+    out.check("chapterPassOrder", joinedNames(chapterPassOrder(frame.step)));
+    out.check("executedPassOrder", joinedNames(frame.previousFrame ? frame.previousFrame->executedPasses()
+                                                                   : std::vector<std::string>{}));
     std::vector<std::string> inherited = shadowInherited(frame.previousFrame);
-    out.add("shadowPassInherits", joined(inherited),
+    out.add("shadowPassInherits", joinedNames(inherited),
             inherited.empty() ? "shadow pass inherits (nothing: it declares all the state it depends on)"
                               : "shadow pass inherits");
     if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_, "shadow map not run");
+    if (frame.step >= FloatTarget) {
+        std::string target = cat(frame.size.width, "x", frame.size.height);
+        bool bug = viewportBug_ && noShadowReason_.empty();
+        int map = 0;
+        if (const Light* sun = shadowCastingLight(*scene_)) map = sun->shadow.mapSize;
+        out.add(
+            "sceneViewport",
+            bug ? cat(map, "x", map, " on a ", target, " target (the shadow map's: only a corner is drawn)")
+                : cat(target, ", the target's (set by the graph)"),
+            "the scene pass's viewport");
+    }
 }
 
 }  // namespace lesson03

@@ -7,10 +7,10 @@
 #include "app/lesson.hpp"
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
+#include "effects/post/ui_queue_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "lit_scene_pass.hpp"
-#include "ui_queue_pass.hpp"
 
 namespace lesson03 {
 
@@ -31,6 +31,9 @@ private:
     // Step 5: left of this fraction of the width, the scene shader still encodes for the display and
     // the output transform encodes again (the washout); right of it, the fix.
     float washoutSplit_ = 0.5f;
+    // Steps 4 and 5: the scene pass keeps the shadow map's viewport (the deliberate bug the graph
+    // otherwise rules out by setting every pass's viewport from its target).
+    bool viewportBug_ = false;
 
     const fx::Scene* scene_ = nullptr;
     fx::SceneMeshes meshes_;
@@ -38,7 +41,7 @@ private:
     LitScenePass litScene_;
     fx::FullscreenPass copyToWindow_;
     fx::OutputTransformPass outputTransform_;
-    UiQueuePass uiQueue_;
+    fx::UiQueuePass uiQueue_;
 
     fx::PassGroup shadowPass_;    // the shadow map pass: what state it inherited last frame
     std::string noShadowReason_;  // why there is no shadow pass, if there is none

@@ -59,7 +59,11 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const Scene& scene, const SceneMe
         meshes.draw(name, scene, seconds);
     });
     if (hasMap) pass.read(map);
-    if (options.declaresState) pass.setState(sceneDrawState(scene));
+    if (options.declaresState) {
+        PassState state = sceneDrawState(scene);
+        if (options.viewport) state.viewport = *options.viewport;
+        pass.setState(state);
+    }
     if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
     return pass;
 }

@@ -6,6 +6,7 @@
 //    full-screen pass encodes again);
 //  - declaresState: whether the pass sets the depth, blend and culling state it draws with, or relies
 //    on the frame's "draw state" set earlier, as the chapter's Render() does until section 3.3.
+#include <optional>
 #include <string>
 
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -22,6 +23,9 @@ struct LitSceneOptions {
     bool declaresState = true;
     // Clear the target first (the pass creates it). Off when an earlier pass cleared the window.
     bool clears = true;
+    // A viewport the pass declares instead of its target's size: the deliberate bug of the viewport
+    // toggle (the shadow map's, left over as if nobody set it for the scene's framebuffer).
+    std::optional<fx::Viewport> viewport;
 };
 
 class LitScenePass {

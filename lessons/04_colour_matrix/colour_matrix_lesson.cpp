@@ -55,25 +55,40 @@ std::vector<std::string> ColourMatrixLesson::steps() const {
 
 void ColourMatrixLesson::declareParams(ParamSet& params) {
     // The scene's colorMatrix names the starting preset (identity, grayscale, sepia or invert) and amount.
+    // Step 4's choices are step 4's alone: the panel of steps 1 to 3 shows the chapter's matrix, not a
+    // preset those steps do not use.
+    const std::vector<int> affine{Affine};
     params
         .addChoice("preset", &preset_,
                    {"identity", "grayscale", "sepia", "saturation", "hue_rotation", "channel_swap",
                     "brightness_contrast", "invert", "invert_3x3", "custom"},
                    "Step 4: the transform (custom: the matrix edited in the panel)")
-        .fromScene("postEffects.colorMatrix.preset");
+        .fromScene("postEffects.colorMatrix.preset")
+        .inSteps(affine);
     params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)")
         .fromScene("postEffects.colorMatrix.amount");
-    params.addFloat("saturation", &saturation_, -1.0f, 3.0f,
-                    "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours");
-    params.addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f,
-                    "Preset hue_rotation: degrees around the grey axis");
-    params.addChoice("channel_order", &channelOrder_, {"rgb", "rbg", "grb", "gbr", "brg", "bgr"},
-                     "Preset channel_swap: which input channels become r, g and b");
-    params.addFloat("brightness", &brightness_, -1.0f, 1.0f,
-                    "Preset brightness_contrast: added to every channel");
-    params.addFloat("contrast", &contrast_, 0.0f, 4.0f,
-                    "Preset brightness_contrast: scales the distance from mid grey (linear 0.18)");
-    params.addBool("split_view", &splitView_, "Show the picture before the matrix left of the divider");
+    params
+        .addFloat("saturation", &saturation_, -1.0f, 3.0f,
+                  "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours")
+        .inSteps(affine);
+    params
+        .addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f,
+                  "Preset hue_rotation: degrees around the grey axis")
+        .inSteps(affine);
+    params
+        .addChoice("channel_order", &channelOrder_, {"rgb", "rbg", "grb", "gbr", "brg", "bgr"},
+                   "Preset channel_swap: which input channels become r, g and b")
+        .inSteps(affine);
+    params
+        .addFloat("brightness", &brightness_, -1.0f, 1.0f,
+                  "Preset brightness_contrast: added to every channel")
+        .inSteps(affine);
+    params
+        .addFloat("contrast", &contrast_, 0.0f, 4.0f,
+                  "Preset brightness_contrast: scales the distance from mid grey (linear 0.18)")
+        .inSteps(affine);
+    params.addBool("split_view", &splitView_,
+                   "Show the picture before the matrix right of the divider, after it on the left");
     params.addFloat("divider", &divider_, 0.0f, 1.0f,
                     "Where the split view's divider is (drag it with the mouse)");
 }
@@ -142,9 +157,13 @@ void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const bool calledFor = !lacks(graph, SceneFeature::colorMatrix);
     TextureHandle shown = calledFor ? graded.output : hdr.color;
     // The split view is for people; a bench frame measures the effect alone.
-    std::optional<SplitView> split;
-    if (splitView_ && calledFor && !frame.benchmark) split = SplitView{hdr.color, divider_};
-    present_.declare(graph, shown, split);
+    // The matrix's picture goes left of the divider, where the scene's red box, green sphere and blue
+    // cylinder stand (the objects the steps' text talks about); the untouched frame is on the right.
+    if (splitView_ && calledFor && !frame.benchmark) {
+        present_.declare(graph, hdr.color, SplitView{graded.output, divider_});
+        return;
+    }
+    present_.declare(graph, shown);
 }
 
 void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {

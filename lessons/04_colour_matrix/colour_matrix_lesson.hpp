@@ -46,7 +46,7 @@ private:
     float brightness_ = 0.1f;
     float contrast_ = 1.4f;
     bool splitView_ = true;
-    float divider_ = 0.5f;
+    float divider_ = 0.72f;  // right of the blue cylinder: every object but the capsule is processed
 
     const fx::Scene* scene_ = nullptr;
     fx::SceneMeshes meshes_;

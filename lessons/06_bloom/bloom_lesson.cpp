@@ -32,6 +32,23 @@ std::string sizesText(const std::vector<BloomLevel>& levels) {
     return text.empty() ? "none (the output is too small for the first level)" : text;
 }
 
+// The scene's brightest emitters, brightest first, by their largest channel: "firefly 900, sun 300,
+// orange sphere 8". The panel quotes the scene rather than a number written here.
+std::string brightestEmitters(const Scene& scene, std::size_t count) {
+    std::vector<std::pair<float, std::string>> emitters;
+    for (const SceneObject& o : scene.objects) {
+        glm::vec3 e = o.material.emitted();
+        float brightest = std::max({e.r, e.g, e.b});
+        if (brightest > 0.0f) emitters.emplace_back(brightest, o.name);
+    }
+    std::sort(emitters.begin(), emitters.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::string text;
+    for (std::size_t i = 0; i < emitters.size() && i < count; ++i)
+        text += cat(i ? ", " : "", emitters[i].second, " ", emitters[i].first);
+    return text.empty() ? "none" : text;
+}
+
 }  // namespace
 
 LessonInfo BloomLesson::info() const {
@@ -45,6 +62,7 @@ std::vector<std::string> BloomLesson::steps() const {
         "The Shader effects chapter's bloom: a quarter-size chain, averaged",
         "The Bloom chapter's chain: half size, summed, bloomScale",
         "Beyond the chapters: Karis, soft knee, energy, tone curve",
+        "The Shader effects chapter's whole frame, and its order",
     };
 }
 
@@ -91,6 +109,17 @@ void BloomLesson::declareParams(ParamSet& params) {
         "reference", &reference_,
         "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
         "(slow)");
+    std::vector<std::string> orders;
+    for (const EffectOrder& o : effectOrders()) orders.push_back(o.name);
+    params
+        .addChoice("frame_order", &frameOrder_, orders,
+                   "Step 6: the order of the post effects (the first is the chapter's: the colour matrix "
+                   "greys the glow)")
+        .inSteps({WholeFrameStep});
+    params
+        .addChoice("frame_matrix", &frameMatrix_, {"identity", "grayscale", "sepia"},
+                   "Step 6: the colour matrix the whole frame applies")
+        .inSteps({WholeFrameStep});
 }
 
 Status BloomLesson::init(const Scene& scene) {
@@ -102,12 +131,13 @@ Status BloomLesson::init(const Scene& scene) {
     reference_glow_ = BloomReference::create();
     flicker_ = BloomFlicker::create();
     present_ = OutputTransformPass::create();
+    wholeFrame_ = WholeFrame::create();
     return Status::success();
 }
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
     TextureFormat format = kChainFormats[std::clamp(format_, 0, 3)];
-    if (step == Chapter000) {
+    if (step == Chapter000 || step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
         BloomChainSettings s = chapter000Bloom(threshold_, intensity_, levels_);
         s.format = format;
         return s;
@@ -124,7 +154,7 @@ BloomChainSettings BloomLesson::chainFor(int step) const {
 }
 
 float BloomLesson::compositeScale(int step, int levels) const {
-    if (step == Chapter000) return chapter000CompositeScale(levels);
+    if (step == Chapter000 || step == WholeFrameStep) return chapter000CompositeScale(levels);
     if (step == Beyond) return normalisedCompositeScale(intensity_, levels);
     return bloomScale_;
 }
@@ -140,6 +170,19 @@ float BloomLesson::uniformGain(int step, Size2D size) const {
 
 void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
+    if (step == WholeFrameStep) {
+        WholeFrameSettings w;
+        w.order = frameOrder_;
+        const ColourTransform matrices[] = {ColourTransform::identity(), ColourTransform::grayscale(),
+                                            ColourTransform::sepia()};
+        w.matrix = matrices[std::clamp(frameMatrix_, 0, 2)];
+        w.chain = chainFor(step);
+        int n =
+            int(bloomLevels(graph.outputSize(), firstLevelDivisor(w.chain.filters), w.chain.levels).size());
+        w.compositeScale = compositeScale(step, std::max(n, 1));
+        wholeFrame_.declare(graph, *scene_, meshes_, frame, w, chain_, composite_, present_);
+        return;
+    }
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds, sceneFormat);
     TextureHandle shown = hdr.color;
@@ -203,9 +246,16 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {
     const int step = frame.step;
+    if (step == WholeFrameStep) {
+        drawWholeFramePanel(frame);
+        return;
+    }
     if (step < Chapter000) {
-        ImGui::TextWrapped("Inspect scene.color and look at the range: %s",
-                           step == EightBit ? "nothing above 1." : "the sun's disc holds thousands.");
+        ImGui::TextWrapped(
+            "Inspect scene.color and look at the range: %s",
+            step == EightBit
+                ? "nothing above 1."
+                : cat("the brightest emitters are ", brightestEmitters(*scene_, 3), ".").c_str());
         return;
     }
     if (flicker_.stats().measured && !showsReference(step)) {
@@ -218,8 +268,10 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
 
 void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
+    if (step == WholeFrameStep) wholeFrameFacts(out, frame);
     if (step < Chapter000) {
         out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
+        out.add("brightestEmitters", brightestEmitters(*scene_, 3), "the scene's brightest emitters");
         return;
     }
     BloomChainSettings s = chainFor(step);
@@ -235,14 +287,56 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("reference", showsReference(step), "showing the reference Gaussian");
     }
     const BloomFlicker::Stats& f = flicker_.stats();
-    if (f.measured && !showsReference(step)) {
+    if (f.measured && !showsReference(step) && step != WholeFrameStep) {
         out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
         out.add("glowChangeMaxPercent", cat(f.maxPercent),
                 cat("largest change over the last ", BloomFlicker::kWindow, " frames (%)"));
     }
-    if (frame.previousFrame) {
+    if (frame.previousFrame && step != WholeFrameStep) {
         out.add("bloomMs", cat(bloomGroup_.timeMs(*frame.previousFrame)), "bloom passes (ms)");
         out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
+    }
+}
+
+void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
+    ImGui::TextUnformatted("The chapter's per-frame pipeline, and the passes that ran");
+    if (!ImGui::BeginTable("whole frame", 2,
+                           ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
+        return;
+    ImGui::TableSetupColumn("the chapter's table");
+    ImGui::TableSetupColumn("the graph's order, derived");
+    ImGui::TableHeadersRow();
+    const std::vector<ChapterFrameRow>& table = chapterFrameTable();
+    std::size_t rows = std::max(table.size(), executed.size());
+    for (std::size_t i = 0; i < rows; ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        if (i < table.size())
+            ImGui::TextWrapped("%s. %s [%s]", table[i].rows.c_str(), table[i].action.c_str(),
+                               table[i].pass.c_str());
+        ImGui::TableNextColumn();
+        if (i < executed.size()) ImGui::Text("%d. %s", int(i) + 1, executed[i].c_str());
+    }
+    ImGui::EndTable();
+}
+
+void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
+    const EffectOrder& order = effectOrders()[std::size_t(std::clamp(frameOrder_, 0, 5))];
+    out.add("frameOrder", order.name, "post effects, in order");
+    const char* matrices[] = {"identity", "grayscale", "sepia"};
+    out.add("frameMatrix", matrices[std::clamp(frameMatrix_, 0, 2)], "colour matrix");
+    std::vector<std::string> passes;
+    for (const ChapterFrameRow& row : chapterFrameTable()) passes.push_back(row.pass);
+    out.check("chapterTableOrder", joinedNames(passes));
+    const std::vector<std::string> executed =
+        frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
+    out.check("executedPassOrder", joinedNames(executed));
+    if (frame.previousFrame) {
+        std::string why;
+        bool follows = followsChapterTable(executed, &why);
+        out.add("followsChapterTable", follows ? std::string("yes") : "no: " + why, "the chapter's order");
     }
 }
 

@@ -14,6 +14,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "whole_frame.hpp"
 
 namespace lesson06 {
 
@@ -31,7 +32,7 @@ public:
     void setBenchReference(bool on) override { benchReference_ = on; }
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
-    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond };
+    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond, WholeFrameStep };
 
     // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
     fx::BloomChainSettings chainFor(int step) const;
@@ -42,6 +43,8 @@ public:
     float uniformGain(int step, fx::Size2D size) const;
 
 private:
+    void drawWholeFramePanel(const fx::FrameInfo& frame) const;
+    void wholeFrameFacts(fx::Facts& out, const fx::FrameInfo& frame) const;
     bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
 
     // Parameters (the chapters' values).
@@ -58,6 +61,8 @@ private:
     float exposure_ = 1.0f;
     bool reference_ = false;
     bool benchReference_ = false;
+    int frameOrder_ = 0;   // step 6: index into effectOrders(), 0 the chapter's
+    int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
 
     const fx::Scene* scene_ = nullptr;
     fx::SceneMeshes meshes_;
@@ -69,6 +74,7 @@ private:
     int flickerStep_ = -1;      // the step and Karis setting the flicker measure last compared
     bool flickerKaris_ = false;
     fx::OutputTransformPass present_;
+    WholeFrame wholeFrame_;  // step 6
     // Every bloom pass (chain, composite, flicker view, reference): its time, and the scene's say.
     fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
 };

@@ -248,27 +248,58 @@ TEST_F(RadialBlurOnGl, GpuOffsetsMatchTheCpuReference) {
     }
 }
 
-TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
-    // A centre off screen to the right sends the right edge's taps past it (up to 7 x 0.1 x 0.25 of
-    // the width). With CLAMP_TO_EDGE they read the dark right edge; REPEAT would bring in the bright
-    // column at the left edge (Shader effects: "REPEAT pulls in the opposite edge").
-    const int w = 64, h = 16;
-    EffectRunner runner(w, h);
-    FloatImage input = makeImage(w, h, [](int x, int) {
+namespace {
+
+// A bright column at the left edge, and a centre off screen to the right that sends the right edge's
+// taps past it (up to 7 x 0.1 x 0.25 of the width). With CLAMP_TO_EDGE they read the dark right edge;
+// REPEAT would bring in the bright column (Shader effects: "REPEAT pulls in the opposite edge").
+constexpr int kEdgeW = 64, kEdgeH = 16;
+FloatImage brightLeftColumn() {
+    return makeImage(kEdgeW, kEdgeH, [](int x, int) {
         float v = x < 8 ? 50.0f : 0.25f;
         return std::array<float, 4>{v, v, v, 1.0f};
     });
+}
+RadialBlurParams pastTheRightEdge() {
     RadialBlurParams params;
     params.centre = {1.25f, 0.5f};
     params.length = 0.1f;
     params.start = 0.0f;
-    FloatImage out = blur(runner, effect, input, params, TextureFormat::RGBA32F);
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
-    for (int y = 0; y < h; ++y) {
-        for (int x = w - 4; x < w; ++x)
+    return params;
+}
+void expectRightEdgeDark(const FloatImage& out) {
+    for (int y = 0; y < kEdgeH; ++y) {
+        for (int x = kEdgeW - 4; x < kEdgeW; ++x)
             EXPECT_NEAR(out.texel(x, y, 0), 0.25f, 1e-5f)
                 << "pixel " << x << ", " << y << ": light wrapped round";
     }
+}
+
+}  // namespace
+
+TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
+    EffectRunner runner(kEdgeW, kEdgeH);
+    FloatImage out = blur(runner, effect, brightLeftColumn(), pastTheRightEdge(), TextureFormat::RGBA32F);
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    expectRightEdgeDark(out);
+}
+
+TEST_F(RadialBlurOnGl, TheBlurSamplesWithItsOwnSamplerNotTheTexturesParameters) {
+    // The input texture itself says REPEAT and NEAREST (as a texture made for tiling would): the blur
+    // binds its own sampler, so its taps still clamp to the edge and filter bilinearly.
+    EffectRunner runner(kEdgeW, kEdgeH);
+    FloatImage out =
+        runner.run(brightLeftColumn(), TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
+            GLuint texture = GLuint(g.texture(in).native);
+            EXPECT_NE(texture, 0u);
+            glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+            glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            return effect.declare(g, in, pastTheRightEdge(), TextureFormat::RGBA32F).blur.output;
+        });
+    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    expectRightEdgeDark(out);
 }
 
 TEST_F(RadialBlurOnGl, NegativeLengthIsNoBlurAndNoOffset) {

@@ -8,7 +8,7 @@ set -uo pipefail
 with="$1" without="$2" difference="$3"
 log="$with.log"  # run_window_test.sh writes <work>/with.log beside <work>/with/
 "$FXLAB_WINDOW_CHECK" "$with" "$without" "$difference" || exit 1
-if ! grep -q 'lesson text: .*lessons/06_bloom/lesson\.ja\.md translates 5 of 5 steps' "$log"; then
+if ! grep -q 'lesson text: .*lessons/06_bloom/lesson\.ja\.md translates 6 of 6 steps' "$log"; then
   echo "FAIL: the log does not say that the step text came from lessons/06_bloom/lesson.ja.md:"; cat "$log"; exit 1
 fi
 line=$(grep -o 'overlay font: [0-9]* glyphs of the lesson text merged from [^ ]* ([0-9]* not in the font)' "$log" | tail -1)

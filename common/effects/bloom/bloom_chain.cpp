@@ -14,12 +14,7 @@ std::string bloomShaderDefines() {
 
 BloomSampler BloomSampler::create() {
     BloomSampler s;
-    s.sampler_ = gl::createSampler("bloom (linear, clamp to edge)");
-    GLuint name = s.sampler_.name();
-    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    s.sampler_ = gl::createLinearClampSampler("bloom (linear, clamp to edge)");
     return s;
 }
 

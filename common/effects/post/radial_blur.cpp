@@ -72,6 +72,7 @@ RadialBlur RadialBlur::create() {
     RadialBlur r;
     r.blur_ = FullscreenPass("effects/post/radial_blur.frag", "radial blur");
     r.offsets_ = FullscreenPass("effects/post/radial_blur_offset.frag", "radial blur offsets");
+    r.sampler_ = gl::createLinearClampSampler("radial blur (linear, clamp to edge)");
     return r;
 }
 
@@ -79,10 +80,13 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
                                          const RadialBlurParams& asked, TextureFormat format) const {
     const RadialBlurParams params = clampedRadialBlurParams(asked);
     const FullscreenPass* blur = &blur_;
-    Pass& blurPass = graph.addPass("radial blur", [blur, input, params](PassContext& ctx) {
+    const GLuint sampler = sampler_.name();
+    Pass& blurPass = graph.addPass("radial blur", [blur, input, params, sampler](PassContext& ctx) {
         setUniforms(blur->program(), params, ctx.targetSize());
         glProgramUniform1i(blur->program(), kSamplesLocation, params.samples);
+        glBindSampler(0, sampler);
         blur->draw({ctx.native(input)});
+        glBindSampler(0, 0);  // unit 0 goes back to its textures' own parameters
     });
     TextureHandle result =
         blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);

@@ -89,6 +89,10 @@ public:
 private:
     FullscreenPass blur_;
     FullscreenPass offsets_;
+    // Linear, clamp to edge: the taps need bilinear filtering, and a tap past the edge must read the
+    // edge, not the opposite side (REPEAT). Bound for the draw, so whatever parameters the input
+    // texture carries are not inherited.
+    gl::SamplerName sampler_;
 };
 
 }  // namespace fx

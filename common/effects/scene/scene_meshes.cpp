@@ -138,6 +138,7 @@ std::size_t SceneMeshes::draw(GLuint program, const Scene& scene, double seconds
         const ObjectMeshes& meshes = objects_[i];
         const SceneObject& object = scene.objects[i];
         if (options.shadowCastersOnly && !object.castsShadows) continue;
+        if (options.only && !options.only(object)) continue;
         if (options.skinFilter == SkinFilter::withoutSkin && isSkinned(i)) continue;
         if (options.skinFilter == SkinFilter::skinnedOnly && !isSkinned(i)) continue;
         glm::mat4 model = options.placement * modelAt(object, seconds);

@@ -14,6 +14,7 @@
 //   meshes.update(frame.seconds);                      // animation + GPU skinning, once per frame
 //   SceneMeshes::setFrameUniforms(program, scene, camera);
 //   meshes.draw(program, scene, frame.seconds);        // poses first if update() was not called
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -62,6 +63,8 @@ struct MeshDrawOptions {
     // A world transform applied after each object's own: draws a copy of the scene's objects
     // elsewhere (lesson 02's crowd is the character drawn at many placements).
     glm::mat4 placement{1.0f};
+    // When set, only the objects it accepts are drawn (lesson 01 draws one object with another program).
+    std::function<bool(const SceneObject&)> only;
 };
 
 class SceneMeshes {

@@ -142,3 +142,27 @@ TEST(Params, SceneValuesOutsideTheRangeAreRefusedByFileFieldAndRange) {
               std::string::npos)
         << unknown.error();
 }
+
+TEST(Params, AStepListsOnlyItsOwnParameters) {
+    // Lesson 04's panel once showed preset=invert during the grayscale step: a parameter says which
+    // steps it acts in, and a step lists only those (and the ones for every step).
+    int preset = 0, split = 0;
+    bool everywhere = false;
+    fx::ParamSet params;
+    params.addChoice("preset", &preset, {"none", "invert"}, "step 3's matrix").inSteps({2});
+    params.addInt("split", &split, 0, 100, "steps 2 and 3").inSteps({1, 2});
+    params.addBool("everywhere", &everywhere, "every step");
+    auto names = [&](int step) {
+        std::vector<std::string> list;
+        for (const fx::Param* p : params.forStep(step)) list.push_back(p->name);
+        return list;
+    };
+    EXPECT_EQ(names(0), (std::vector<std::string>{"everywhere"}));
+    EXPECT_EQ(names(1), (std::vector<std::string>{"split", "everywhere"}));
+    EXPECT_EQ(names(2), (std::vector<std::string>{"preset", "split", "everywhere"}));
+    EXPECT_FALSE(params.find("preset")->actsIn(1));
+    EXPECT_TRUE(params.find("everywhere")->actsIn(7));
+    // A parameter of another step can still be set (a preset file, the command line): it waits.
+    EXPECT_TRUE(params.assign("preset=invert").ok());
+    EXPECT_EQ(preset, 1);
+}

@@ -1,18 +1,16 @@
-#include "ui_queue_pass.hpp"
+#include "effects/post/ui_queue_pass.hpp"
 
 #include <algorithm>
 
-namespace lesson03 {
-
-using namespace fx;
+namespace fx {
 
 namespace {
-constexpr GLint kPanelLocation = 0;  // shaders/lessons/03_fbo_pipeline/ui_badge.frag
+constexpr GLint kPanelLocation = 0;  // shaders/effects/post/ui_badge.frag
 }
 
 UiQueuePass UiQueuePass::create() {
     UiQueuePass ui;
-    ui.pass_ = FullscreenPass("lessons/03_fbo_pipeline/ui_badge.frag", "ui queue");
+    ui.pass_ = FullscreenPass("effects/post/ui_badge.frag", "ui queue");
     return ui;
 }
 
@@ -48,4 +46,4 @@ Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
     return ui;
 }
 
-}  // namespace lesson03
+}  // namespace fx
