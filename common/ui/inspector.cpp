@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 #include "base/log.hpp"
 #include "ui/texture_saver.hpp"
@@ -101,28 +102,29 @@ void Inspector::refreshThumbnails(const InspectorFrame& frame) {
     thumbnails_.keepOnly(names);
 }
 
-void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) {
+ImVec2 Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) {
     graph_ = frame.graph;
-    ImGui::SetNextWindowPos(position, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(position, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     if (requestOpen_) {
         ImGui::SetNextWindowCollapsed(!*requestOpen_, ImGuiCond_Always);
         requestOpen_.reset();
     } else {
         ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     }
-    visible_ = ImGui::Begin("Inspector");
+    visible_ = ImGui::Begin("Inspector", nullptr, ImGuiWindowFlags_NoMove);
+    const ImVec2 shown = ImGui::GetWindowSize();
     if (!visible_) {
         ImGui::End();
         graph_ = nullptr;
-        return;
+        return shown;
     }
     ++frameIndex_;
     if (!frame.report) {
         ImGui::TextDisabled("no frame yet");
         ImGui::End();
         graph_ = nullptr;
-        return;
+        return shown;
     }
     refreshThumbnails(frame);
 
@@ -137,6 +139,7 @@ void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) 
     ImGui::EndChild();
     ImGui::End();
     graph_ = nullptr;
+    return shown;
 }
 
 Result<std::filesystem::path> Inspector::saveSelected(bool exactFloats) {
@@ -199,6 +202,13 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     }
     drawViewControls(s, source, analysis());
     ui_style::continueRow(170.0f, 16.0f);
+    if (ImGui::Button("find NaN/Inf")) findSpecialAsked_ = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "F4: the next texel with a NaN or an infinity; the probe is pinned there and the view\n"
+            "zooms onto it");
+    if (std::exchange(findSpecialAsked_, false)) findSpecial(source, s);
+    ImGui::SameLine();
     drawSaveButtons();
     if (const TextureAnalysis* a = analysis())
         drawHistogram(*a, s, ImVec2(ImGui::GetContentRegionAvail().x, 44.0f));
@@ -274,6 +284,31 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     }
 }
 
+void Inspector::findSpecial(const TextureSource& source, const ViewSettings& s) {
+    const int level = std::clamp(s.level, 0, source.levels() - 1);
+    // Searching from the pinned texel goes on to the next one each time.
+    int afterX = -1, afterY = -1;
+    if (auto pinned = probe_.target(std::nullopt);
+        pinned && pinned->texture.empty() && pinned->level == level) {
+        afterX = pinned->x;
+        afterY = pinned->y;
+    }
+    std::int64_t count = 0;
+    auto found = nextSpecialTexel(gl::readTexture(source.native, source.spec, level), afterX, afterY, &count);
+    if (!found) {
+        status_ = cat("no NaN or Inf in ", selected_, " mip ", level);
+        return;
+    }
+    probe_.pin({level, found->x, found->y, {}});
+    const Size2D size = source.levelSize(level);
+    // About 24 screen pixels per texel of this level, centred on it.
+    const double levelScale = double(source.levelSize(0).width) / std::max(size.width, 1);
+    view_.setZoom(24.0 / levelScale, (found->x + 0.5) / size.width, (found->y + 0.5) / size.height);
+    status_ = cat("NaN/Inf at texel (", found->x, ", ", found->y, ") of mip ", level, "; ", count,
+                  " such texel", count == 1 ? "" : "s", " (F4: the next)");
+    log::info("inspector: ", status_);
+}
+
 void Inspector::drawSaveButtons() {
     for (bool exact : {false, true}) {
         if (exact) ImGui::SameLine();
@@ -301,7 +336,11 @@ void Inspector::drawChainProbe(float height) {
                                   ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
     if (!ImGui::BeginTable("chain probe", 6, flags, ImVec2(0, height))) return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("same place in", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    // The names in full ("bloom.down[3]", never "bloom.dow"): the first column is as wide as the longest.
+    float nameWidth = ImGui::CalcTextSize("same place in").x;
+    for (const ChainMember& m : chain_.members)
+        nameWidth = std::max(nameWidth, ImGui::CalcTextSize(m.label.c_str()).x);
+    ImGui::TableSetupColumn("same place in", ImGuiTableColumnFlags_WidthFixed, nameWidth);
     ImGui::TableSetupColumn("texel", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     for (const char* c : {"R", "G", "B", "A"})
         ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch, 1.0f);

@@ -106,6 +106,8 @@ void drawLessonWindowContents(const OverlayModel& m) {
                 if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
             }
         }
+        if (!m.clock.empty()) ImGui::TextColored(ui_style::kWarning, "%s", m.clock.c_str());
+        if (!m.compare.empty()) ImGui::TextColored(ui_style::kWarning, "%s", m.compare.c_str());
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
@@ -153,7 +155,6 @@ void drawLessonWindowContents(const OverlayModel& m) {
                            static_cast<long long>(m.glExpectedErrors));
     }
     if (!m.status.empty()) ImGui::TextDisabled("%s", m.status.c_str());
-    ImGui::TextDisabled("F1 overlay  F5 reload  F12 screenshot  arrows: steps");
 }
 
 }  // namespace fx
