@@ -196,6 +196,7 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     if (keys.compare) {
         compare_ = picture_ ? nextCompareMode(compare_) : CompareMode::Off;
         s_.status = picture_ ? cat("compare: ", describeCompareMode(compare_)) : "compare: needs a window";
+        log::info(s_.status);
     }
     if (keys.findSpecial && overlay_) {
         overlay_->inspector().setOpen(true);

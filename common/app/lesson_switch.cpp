@@ -28,8 +28,8 @@ bool isLessonName(const std::string& name) {
 }
 
 // Flags whose value names something of one lesson, and flags the neighbour gets anew.
-const std::set<std::string> kLessonOwnFlags = {"--step",    "--scene", "--param", "--preset",
-                                               "--inspect", "--knob",  "--press", "--size", "--resize"};
+const std::set<std::string> kLessonOwnFlags = {"--step", "--scene", "--param", "--preset", "--inspect",
+                                               "--knob", "--press", "--size",  "--resize"};
 // args without the flags in `drop` (and their values).
 std::vector<std::string> without(const std::vector<std::string>& args, const std::set<std::string>& drop) {
     std::vector<std::string> kept;

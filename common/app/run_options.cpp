@@ -178,11 +178,11 @@ Status addPress(RunOptions& o, const FlagUse& use) {
 // WxH@FRAME: sizes as --size takes them.
 Status addResize(RunOptions& o, const FlagUse& use) {
     const auto at = use.value.find('@');
-    if (at == std::string::npos)
-        return Error{cat(use.flag, ": expected WxH@FRAME, got \"", use.value, "\"")};
+    if (at == std::string::npos) return Error{cat(use.flag, ": expected WxH@FRAME, got \"", use.value, "\"")};
     RunOptions sized;
     if (auto status = parseSize(sized, {use.flag, use.value.substr(0, at), 0}); !status) return status;
-    auto frame = parseWhole(std::string_view(use.value).substr(at + 1), 0, 1000000, use.flag, "a frame number after @");
+    auto frame = parseWhole(std::string_view(use.value).substr(at + 1), 0, 1000000, use.flag,
+                            "a frame number after @");
     if (!frame) return Error{frame.error()};
     o.resizes.push_back({*sized.width, *sized.height, int(*frame)});
     return Status::success();

@@ -28,17 +28,16 @@ nlohmann::ordered_json layoutJson(const PanelLayout& layout, Size2D window, floa
 }
 
 std::string capturesWrittenMessage(const std::filesystem::path& dir, bool finalImage, bool picture,
-                                   std::size_t textures) {
+                                   std::size_t textures, bool emptyFrame) {
     std::string what;
     if (finalImage)
         what = picture ? "final.png (the window), picture.png (the lesson's picture)" : "final.png";
     const std::string texturesText = cat(textures, " intermediate texture", textures == 1 ? "" : "s");
-    if (!finalImage && textures == 0)
-        return cat("nothing captured into ", dir.string(),
-                   "/: the frame was empty (0x0), so no picture was drawn");
+    const std::string why = emptyFrame ? "the frame was empty (0x0), so no picture was drawn"
+                                       : "the run ended before its last frame (the window was closed)";
+    if (!finalImage && textures == 0) return cat("nothing captured into ", dir.string(), "/: ", why);
     if (!finalImage)
-        return cat("captures written to ", dir.string(), "/: ", texturesText,
-                   "; no final.png (the frame was empty, 0x0)");
+        return cat("captures written to ", dir.string(), "/: ", texturesText, "; no final.png: ", why);
     return cat("captures written to ", dir.string(), "/: ", what, " and ", texturesText);
 }
 
@@ -71,12 +70,14 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
             exitCode = 1;
         } else {
             log::info(capturesWrittenMessage(plan.captureDir, !record.lastFinalBytes.empty(),
-                                             !record.lastPicture.empty(), record.lastTextures.size()));
+                                             !record.lastPicture.empty(), record.lastTextures.size(),
+                                             facts.size.empty()));
         }
     }
     if (!plan.reportFile.empty()) {
         auto report = buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal);
-        if (record.lastLayout) report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
+        if (record.lastLayout)
+            report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
         auto json = report.dump(2) + "\n";
         if (auto written = writeFileAtomically(plan.reportFile, json); !written) {
             log::error(written.error());

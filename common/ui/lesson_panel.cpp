@@ -106,8 +106,13 @@ void drawLessonWindowContents(const OverlayModel& m) {
                 if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
             }
         }
-        if (!m.clock.empty()) ImGui::TextColored(ui_style::kWarning, "%s", m.clock.c_str());
-        if (!m.compare.empty()) ImGui::TextColored(ui_style::kWarning, "%s", m.compare.c_str());
+        // While the clock stands still or the picture compares, the lesson window says so (wrapped).
+        for (const std::string* line : {&m.clock, &m.compare}) {
+            if (line->empty()) continue;
+            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
+            ImGui::TextWrapped("%s", line->c_str());
+            ImGui::PopStyleColor();
+        }
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);

@@ -6,7 +6,7 @@
 #   layout-WxH   lesson 02 at WxH: the picture uncovered, every panel on the window
 #   text-scale   + twice, then a second start without --size: the scale and the window size come back
 #   reset        a layout left jammed in ui.json, the window shrunk to 400x300 and back, then F2
-#   compare      lesson 04 step 1, right arrow, F3: the split view of step 1 against step 2
+#   compare      lesson 04 step 1 (colour) then step 2 (grey), F3: the split view of one against the other
 #   find-nan     lesson 05 step 2, inspector on the blur's output, F4: the probe pinned on the centre texel
 #   next-lesson  lesson 01, Page Down: lesson 02 starts in the same window size with the same flags
 # Each run gets its own settings folder (FXLAB_CONFIG_DIR), so no teacher's ui.json is read or written.
@@ -25,7 +25,7 @@ lesson() { ls "$lessons"/fxlab-"$1"-* 2>/dev/null | head -1; }
 # run <folder> <exe> [flags]: the run's captures and report in <folder>, its log beside it.
 run() {
   local out="$1" exe="$2"; shift 2
-  if ! "$exe" --frames 6 "$@" --capture "$work/$out" --report "$work/$out/report.json" >"$work/$out.log" 2>&1; then
+  if ! "$exe" --frames "${frames:-6}" "$@" --capture "$work/$out" --report "$work/$out/report.json" >"$work/$out.log" 2>&1; then
     echo "FAIL: $(basename "$exe") $* exited with an error:"; cat "$work/$out.log"; exit 1
   fi
 }
@@ -46,18 +46,19 @@ case "$case_" in
   reset)
     mkdir -p "$FXLAB_CONFIG_DIR"
     printf '{"textScale": 2.0, "columnShare": 0.6, "lessonShare": 0.2, "pictureShare": 0.8}\n' >"$FXLAB_CONFIG_DIR/ui.json"
-    run jammed "$(lesson 02)" --size 1280x720 --resize 400x300@1 --resize 1280x720@3 --frames 6
+    run jammed "$(lesson 02)" --size 1280x720 --resize 400x300@1 --resize 1280x720@3
     checked "$work/jammed" --window 1280x720 --text-scale 2 --picture-share 0.39
-    run reset "$(lesson 02)" --size 1280x720 --resize 400x300@1 --resize 1280x720@3 --press F2@4 --frames 7
+    frames=7 run reset "$(lesson 02)" --size 1280x720 --resize 400x300@1 --resize 1280x720@3 --press F2@4
     checked "$work/reset" --window 1280x720 --text-scale 2
     grep -q '"columnShare": 0.3' "$FXLAB_CONFIG_DIR/ui.json" || { echo "FAIL: F2 did not put the default layout back:"; cat "$FXLAB_CONFIG_DIR/ui.json"; exit 1; } ;;
   compare)
-    run split "$(lesson 04)" --size 1280x720 --step 1 --press right@2 --press F3@3
+    # Without the lesson's own before|after split, so that the whole picture changes between the steps.
+    run split "$(lesson 04)" --size 1280x720 --step 1 --param split_view=false --press right@2 --press F3@3
     checked "$work/split" --split
     grep -q "compare: split" "$work/split.log" || { echo "FAIL: the log does not say the split view is on"; exit 1; } ;;
   find-nan)
-    run nan "$(lesson 05)" --size 1280x720 --step 2 --inspect blur.offset --press F4@3 --frames 6
-    checked "$work/nan" --picture-share 0.3 --nan-log "$work/nan.log" ;;
+    run nan "$(lesson 05)" --size 1280x720 --step 2 --inspect blur.offset --press F4@3
+    checked "$work/nan" --picture-share 0.25 --nan-log "$work/nan.log" ;;
   next-lesson)
     run next "$(lesson 01)" --size 1024x768 --press pagedown@2
     grep -q "starting fxlab-02-" "$work/next.log" || { echo "FAIL: Page Down did not start lesson 02"; cat "$work/next.log"; exit 1; }

@@ -28,14 +28,17 @@ TEST(Screenshots, NamesSayLessonAndStepAndNeverReplaceAnEarlierOne) {
 }
 
 TEST(CaptureMessage, AnEmptyFrameDoesNotClaimAFinalImage) {
-    const std::string empty = fx::capturesWrittenMessage("out/x", false, false, 0);
+    const std::string empty = fx::capturesWrittenMessage("out/x", false, false, 0, true);
     EXPECT_EQ(empty.find("final.png written"), std::string::npos) << empty;
     EXPECT_NE(empty.find("nothing captured"), std::string::npos) << empty;
     EXPECT_NE(empty.find("0x0"), std::string::npos) << empty;
-    const std::string textures = fx::capturesWrittenMessage("out/x", false, false, 3);
+    const std::string textures = fx::capturesWrittenMessage("out/x", false, false, 3, true);
     EXPECT_NE(textures.find("no final.png"), std::string::npos) << textures;
-    const std::string full = fx::capturesWrittenMessage("out/x", true, false, 1);
+    const std::string full = fx::capturesWrittenMessage("out/x", true, false, 1, false);
     EXPECT_EQ(full, "captures written to out/x/: final.png and 1 intermediate texture");
+    const std::string closed = fx::capturesWrittenMessage("out/x", false, false, 0, false);
+    EXPECT_EQ(closed.find("0x0"), std::string::npos) << closed;
+    EXPECT_NE(closed.find("ended before its last frame"), std::string::npos) << closed;
 }
 
 TEST(ProbeText, ValuesShowEnoughDigitsToRead) {
