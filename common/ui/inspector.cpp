@@ -16,6 +16,11 @@ constexpr std::size_t kThumbnailsPerFrame = 2;  // textures kept alive in turn t
 constexpr float kListWidth = 250.0f;
 constexpr float kStripTileHeight = 64.0f;
 
+// The probe's lines: the texel and its values, and the chain's table (a header and up to 4 rows).
+float probeHeightFor(std::size_t chainRows, bool hasStrip, float line) {
+    return 2.0f * line + (hasStrip ? float(chainRows + 1) * line + 10.0f : 0.0f);
+}
+
 }  // namespace
 
 Inspector::Inspector() = default;
@@ -133,8 +138,7 @@ ImVec2 Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size
     if (auto clicked = list_.draw(*frame.report, thumbnails_, selected_, frameIndex_)) select(*clicked);
     ImGui::EndChild();
     ImGui::SameLine();
-    ImGui::BeginChild("detail", ImVec2(0, 0), false,
-                      ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar);
+    ImGui::BeginChild("detail", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollWithMouse);
     drawDetail(frame);
     ImGui::EndChild();
     ImGui::End();
@@ -217,8 +221,16 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const bool hasStrip = chain_.kind != TextureChain::Kind::None;
     const std::size_t chainRows = hasStrip ? std::min<std::size_t>(chain_.members.size(), 4) : 0;
-    const float stripHeight = hasStrip ? kStripTileHeight + 3.0f * line + 18.0f : 0.0f;
-    const float probeHeight = 2.0f * line + (hasStrip ? float(chainRows + 1) * line + 10.0f : 0.0f);
+    // In a short inspector (the lower part of a 720-line window) the strip's tiles give up height
+    // before the view goes below its least: the whole chain stays on the screen, labels included.
+    const float stripText = 3.0f * line + 18.0f;
+    const float tileHeight =
+        hasStrip ? std::clamp(ImGui::GetContentRegionAvail().y - probeHeightFor(chainRows, hasStrip, line) -
+                                  64.0f - stripText,
+                              24.0f, kStripTileHeight)
+                 : 0.0f;
+    const float stripHeight = hasStrip ? tileHeight + stripText : 0.0f;
+    const float probeHeight = probeHeightFor(chainRows, hasStrip, line);
     ImVec2 avail = ImGui::GetContentRegionAvail();
     ImVec2 viewSize(avail.x, std::max(avail.y - stripHeight - probeHeight, 64.0f));
 
@@ -270,7 +282,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
         }
         ChainStrip::Interaction stripped = strip_.draw(
             display_, chain_, [this](const std::string& n) { return lookup(n); }, s, chainSamples_, current,
-            kStripTileHeight);
+            tileHeight);
         if (stripped.hovered) hovered_ = stripped.hovered;
         if (stripped.clicked) {
             const ChainMember& m = chain_.members[*stripped.clicked];
