@@ -97,6 +97,9 @@ std::vector<std::string> neighbourArguments(const std::vector<std::string>& args
 std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& args,
                                               const fs::path& captureDir, int step) {
     std::vector<std::string> one = without(args, {"--all-steps", "--capture", "--report", "--step"});
+    // Headless: a fixed time step, the same pictures every time, and a run that ends by itself (a
+    // window without --frames would run until closed).
+    if (std::find(one.begin(), one.end(), "--headless") == one.end()) one.insert(one.begin(), "--headless");
     const fs::path folder = captureDir / cat("step-", step);
     for (std::string a : {std::string("--step"), cat(step), std::string("--capture"), folder.string(),
                           std::string("--report"), (folder / "report.json").string()})

@@ -31,8 +31,8 @@ std::optional<std::filesystem::path> neighbourLesson(const std::string& current,
 // lesson (--step, --scene, --param, --preset, --inspect, --knob, --press), and --size set to the window's.
 std::vector<std::string> neighbourArguments(const std::vector<std::string>& args, Size2D window);
 
-// The command line for step `step` (1-based) of --all-steps: without --all-steps, --capture and
-// --report, with --step K --capture DIR/step-K --report DIR/step-K/report.json.
+// The command line for step `step` (1-based) of --all-steps: headless, without --all-steps, --capture
+// and --report, with --step K --capture DIR/step-K --report DIR/step-K/report.json.
 std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& args,
                                               const std::filesystem::path& captureDir, int step);
 
