@@ -51,31 +51,26 @@ PictureView::PictureView() {
 
 GLuint PictureView::target(Size2D size) {
     if (size.empty()) return 0;
-    if (size == size_ && target_.name()) return target_.name();
+    if (size == size_ && target_.framebuffer.name()) return target_.framebuffer.name();
     size_ = size;
-    color_ = gl::Texture::create2D(TextureFormat::RGBA8, size.width, size.height, 1, "picture.color");
-    depth_ = gl::Texture::create2D(TextureFormat::Depth24, size.width, size.height, 1, "picture.depth");
-    target_ = gl::Framebuffer("picture (the lesson's output in a window)");
-    target_.attachColor(0, color_);
-    target_.attachDepth(depth_);
-    target_.setDrawBuffers(1);
-    if (auto status = target_.checkComplete(); !status) log::error(status.error());
-    return target_.name();
+    target_ = gl::ColorDepthTarget::create(size.width, size.height, "picture",
+                                           "picture (the lesson's output in a window)");
+    return target_.framebuffer.name();
 }
 
 void PictureView::keepAsPrevious(int step) {
-    if (!color_) return;
+    if (!target_.color) return;
     if (!previous_ || previous_.width() != size_.width || previous_.height() != size_.height) {
         previous_ = gl::Texture::create2D(TextureFormat::RGBA8, size_.width, size_.height, 1,
                                           "picture.previous_step");
     }
-    glCopyImageSubData(color_.name(), GL_TEXTURE_2D, 0, 0, 0, 0, previous_.name(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       size_.width, size_.height, 1);
+    glCopyImageSubData(target_.color.name(), GL_TEXTURE_2D, 0, 0, 0, 0, previous_.name(), GL_TEXTURE_2D, 0, 0,
+                       0, 0, size_.width, size_.height, 1);
     previousStep_ = step;
 }
 
 void PictureView::present(GLuint window, int windowHeight, const LayoutRect& place, CompareMode mode) const {
-    if (!target_.name() || place.width < 1 || place.height < 1) return;
+    if (!target_.framebuffer.name() || place.width < 1 || place.height < 1) return;
     GlStateScope keep;
     // The place in GL's bottom-left window coordinates.
     const int x = int(place.x), width = int(place.width), height = int(place.height);
@@ -83,8 +78,8 @@ void PictureView::present(GLuint window, int windowHeight, const LayoutRect& pla
     const bool comparing = mode != CompareMode::Off && previous_ && program_;
     if (!comparing) {
         // The exact pixels the lesson drew: the picture is as large as its place.
-        glBlitNamedFramebuffer(target_.name(), window, 0, 0, size_.width, size_.height, x, y, x + width,
-                               y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitNamedFramebuffer(target_.framebuffer.name(), window, 0, 0, size_.width, size_.height, x, y,
+                               x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         return;
     }
     const GLuint p = program_.name();
@@ -93,24 +88,18 @@ void PictureView::present(GLuint window, int windowHeight, const LayoutRect& pla
     glProgramUniform1f(p, kGain, kDifferenceGain);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, window);
     glViewport(x, y, width, height);
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_FRAMEBUFFER_SRGB);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    usePlainDrawState();
     glUseProgram(p);
     glBindVertexArray(vertexArray_.name());
-    glBindTextureUnit(0, color_.name());
+    glBindTextureUnit(0, target_.color.name());
     glBindTextureUnit(1, previous_.name());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(1, 0);
 }
 
 ByteImage PictureView::read() const {
-    if (!target_.name()) return {};
-    return gl::readFramebufferRgba8(target_.name(), size_.width, size_.height);
+    if (!target_.framebuffer.name()) return {};
+    return gl::readFramebufferRgba8(target_.framebuffer.name(), size_.width, size_.height);
 }
 
 }  // namespace fx

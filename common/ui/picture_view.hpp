@@ -46,8 +46,8 @@ public:
 
 private:
     Size2D size_;
-    gl::Texture color_, depth_, previous_;
-    gl::Framebuffer target_, previousTarget_;
+    gl::ColorDepthTarget target_;
+    gl::Texture previous_;
     std::optional<int> previousStep_;
     gl::Program program_;
     gl::VertexArrayName vertexArray_;
