@@ -6,9 +6,11 @@
 #   layout-WxH   lesson 02 at WxH: the picture uncovered, every panel on the window
 #   text-scale   + twice, then a second start without --size: the scale and the window size come back
 #   reset        a layout left jammed in ui.json, the window shrunk to 400x300 and back, then F2
-#   compare      lesson 04 step 1 (colour) then step 2 (grey), F3: the split view of one against the other
+#   compare      lesson 04 step 1 (colour) then step 2 (grey), F3: the split view of one against the other,
+#                then F3 again: the difference x8
 #   find-nan     lesson 05 step 2, inspector on the blur's output, F4: the probe pinned on the centre texel
 #   next-lesson  lesson 01, Page Down: lesson 02 starts in the same window size with the same flags
+#   screenshots  F12 in two sessions of lesson 05 step 2: two files, neither replacing the other
 # Each run gets its own settings folder (FXLAB_CONFIG_DIR), so no teacher's ui.json is read or written.
 # Without a display it runs itself again under xvfb-run -a.
 set -uo pipefail
@@ -55,7 +57,17 @@ case "$case_" in
     # Without the lesson's own before|after split, so that the whole picture changes between the steps.
     run split "$(lesson 04)" --size 1280x720 --step 1 --param split_view=false --press right@2 --press F3@3
     checked "$work/split" --split
-    grep -q "compare: split" "$work/split.log" || { echo "FAIL: the log does not say the split view is on"; exit 1; } ;;
+    grep -q "compare: split" "$work/split.log" || { echo "FAIL: the log does not say the split view is on"; exit 1; }
+    # F3 again: the difference x8 (grey steps agree with colour ones on white and grey surfaces).
+    run difference "$(lesson 04)" --size 1280x720 --step 1 --param split_view=false --press right@2 --press F3@3 --press F3@4
+    checked "$work/difference" --difference ;;
+  screenshots)
+    # F12 in two sessions: the second never replaces the first, and the names say lesson and step.
+    (cd "$work" && run one "$(lesson 05)" --size 640x360 --step 2 --press F12@2) || exit 1
+    (cd "$work" && run two "$(lesson 05)" --size 640x360 --step 2 --press F12@2) || exit 1
+    for n in 001 002; do
+      [ -s "$work/out/fxlab-05-radial-blur-step2-$n.png" ] || { echo "FAIL: no out/fxlab-05-radial-blur-step2-$n.png"; ls -R "$work/out"; exit 1; }
+    done ;;
   find-nan)
     run nan "$(lesson 05)" --size 1280x720 --step 2 --inspect blur.offset --press F4@3
     checked "$work/nan" --picture-share 0.25 --nan-log "$work/nan.log" ;;

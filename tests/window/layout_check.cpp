@@ -7,6 +7,7 @@
 //                   [--picture-share F]
 // --split: the compare view is on; the place shows a white line down its middle, this step's picture
 // right of it and the previous step's left of it (which must differ from this step's somewhere).
+// --difference: the compare view's difference: black where the steps agree, lit where they differ.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     const std::string dir = argv[1];
     std::string expectWindow, expectLesson;
     double expectScale = -1, minShare = 0.45;
-    bool split = false;
+    bool split = false, difference = false;
     std::string nanLog;
     for (int i = 2; i < argc; ++i) {
         std::string a = argv[i];
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
             minShare = std::atof(argv[++i]);
         else if (a == "--split")
             split = true;
+        else if (a == "--difference")
+            difference = true;
         else if (a == "--nan-log" && i + 1 < argc)
             nanLog = argv[++i];
         else {
@@ -125,7 +128,12 @@ int main(int argc, char** argv) {
         for (int x = 0; x < picture.w; ++x) {
             const std::uint8_t* s = at(*shot, picture.x + x, picture.y + y);
             const std::uint8_t* p = at(*alone, x, y);
-            if (!split) {
+            if (difference) {
+                // The difference view: black where the steps agree, the change x8 where they do not.
+                const bool black = s[0] == 0 && s[1] == 0 && s[2] == 0;
+                covered += black ? 1 : 0;  // counted as "black" below
+                leftDiffers += black ? 0 : 1;
+            } else if (!split) {
                 covered += samePixel(s, p) ? 0 : 1;
             } else if (x == middle) {
                 lineWhite += s[0] == 255 && s[1] == 255 && s[2] == 255 ? 1 : 0;
@@ -135,6 +143,13 @@ int main(int argc, char** argv) {
                 leftDiffers += samePixel(s, p) ? 0 : 1;
             }
         }
+    }
+    if (difference) {
+        const double area = double(picture.w) * picture.h, black = double(covered) / area;
+        std::printf("difference: %.0f%% of the place black (the steps agree), %.0f%% lit\n", black * 100.0,
+                    100.0 - black * 100.0);
+        if (black < 0.2 || black > 0.95) ok = fail("the difference view is not black where the steps agree");
+        covered = 0;
     }
     std::printf("pixels of the picture's place that are not the lesson's picture: %ld\n", covered);
     if (covered > 0) ok = fail(std::to_string(covered) + " pixels of the picture are covered or changed");
