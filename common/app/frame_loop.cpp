@@ -305,9 +305,8 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
     model.measureKnobs = [&] {
         return sweepKnobs(lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
     };
-    if (!plan_.headless) {
-        for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
-    }
+    // Headless too: --press takes the same keys, and an --overlay capture shows what a window would.
+    for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
     model.executable = s_.exe;
     if (clock_.paused())
         model.clock =

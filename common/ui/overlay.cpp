@@ -34,7 +34,7 @@ float titleBarHeight(float scale) {
 
 void drawKeys(const OverlayModel& m) {
     if (m.keys.empty()) {
-        ImGui::TextDisabled("no keys: this overlay is drawn without a window");
+        ImGui::TextDisabled("no keys: this overlay is drawn without a runner");
         return;
     }
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
