@@ -10,6 +10,7 @@
 #                then F3 again: the difference x8
 #   find-nan     lesson 05 step 2, inspector on the blur's output, F4: the probe pinned on the centre texel
 #   next-lesson  lesson 01, Page Down: lesson 02 starts in the same window size with the same flags
+#   hidden       lesson 05 unmapped for 2 s (fx_unmap_window): frames skipped, waiting for events
 #   screenshots  F12 in two sessions of lesson 05 step 2: two files, neither replacing the other
 # Each run gets its own settings folder (FXLAB_CONFIG_DIR), so no teacher's ui.json is read or written.
 # Without a display it runs itself again under xvfb-run -a.
@@ -75,6 +76,17 @@ case "$case_" in
     run next "$(lesson 01)" --size 1024x768 --press pagedown@2
     grep -q "starting fxlab-02-" "$work/next.log" || { echo "FAIL: Page Down did not start lesson 02"; cat "$work/next.log"; exit 1; }
     checked "$work/next" --lesson "$(basename "$(lesson 02)")" --window 1024x768 ;;
+  hidden)
+    # Unmapped for 2 s (as when minimised): the loop waits for events instead of rendering, so the
+    # report has frames of 0 ms (skipped) for that time, and the run still ends with a picture.
+    "$FXLAB_UNMAP_WINDOW" "fxlab 5:" 2 >"$work/unmap.log" 2>&1 &
+    unmapper=$!
+    frames=150 run hidden "$(lesson 05)" --size 320x180 --no-overlay
+    wait "$unmapper" || { echo "FAIL: could not unmap the window:"; cat "$work/unmap.log"; exit 1; }
+    skipped="$(grep -c '"cpuMs": 0.0' "$work/hidden/report.json" || true)"
+    echo "frames skipped while hidden: $skipped"
+    [ "$skipped" -ge 3 ] || { echo "FAIL: the hidden window kept rendering (no skipped frames)"; exit 1; }
+    [ -s "$work/hidden/final.png" ] || { echo "FAIL: no picture after the window came back"; exit 1; } ;;
   *) echo "FAIL: unknown case $case_"; exit 2 ;;
 esac
 echo "$case_: as expected (screenshots in $work)"
