@@ -1,5 +1,7 @@
 #include "app/capture.hpp"
 
+#include <cstdio>
+
 #include "base/log.hpp"
 #include "gl/readback.hpp"
 #include "image/pfm_file.hpp"
@@ -34,6 +36,18 @@ std::string captureFileStem(std::string_view name) {
         }
     }
     return stem.empty() ? "texture" : stem;
+}
+
+std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder, const std::string& exe,
+                                         int step) {
+    std::error_code ec;
+    for (int n = 1;; ++n) {
+        char number[16];
+        std::snprintf(number, sizeof number, "%03d", n);
+        std::filesystem::path path = folder / cat(exe, "-step", step, "-", number, ".png");
+        // A folder that cannot be read: the write will say why.
+        if (!std::filesystem::exists(path, ec) || ec) return path;
+    }
 }
 
 Status writeCaptures(const std::filesystem::path& dir, const ByteImage& finalImage,

@@ -26,6 +26,11 @@ std::vector<CapturedTexture> readFrameTextures(const FrameGraph& graph);
 // "bloom.down[3]" -> "bloom.down-3": a file name without brackets or spaces.
 std::string captureFileStem(std::string_view textureName);
 
+// out/fxlab-05-radial-blur-step2-003.png: the first number from 1 that no file in `folder` has yet for
+// this lesson and step, so a screenshot never replaces an earlier one (of this run or another).
+std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder, const std::string& exe,
+                                         int step);
+
 // Writes final.png and <texture>.png (and .pfm with floats) into dir; each file whole or not at all.
 Status writeCaptures(const std::filesystem::path& dir, const ByteImage& finalImage,
                      const std::vector<CapturedTexture>& textures, bool floats);

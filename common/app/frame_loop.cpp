@@ -1,12 +1,14 @@
 #include "app/frame_loop.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
-#include <thread>
 
 #include "app/bench.hpp"
+#include "app/capture.hpp"
 #include "app/facts_panel.hpp"
 #include "app/lesson_listing.hpp"
+#include "app/lesson_switch.hpp"
 #include "app/run_options.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
@@ -17,6 +19,16 @@ namespace fx {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+std::string secondsText(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", seconds);
+    return text;
+}
+
+}  // namespace
+
 FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context, FrameRenderer& renderer,
                      WindowInput& input, Overlay* overlay, gl::ProgramRegistry& programs)
     : s_(session),
@@ -26,7 +38,8 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
       input_(input),
       overlay_(overlay),
       programs_(programs),
-      overlayVisible_(plan.headless ? session.options.overlayHeadless : session.options.overlay) {
+      overlayVisible_(plan.headless ? session.options.overlayHeadless : session.options.overlay),
+      clock_(session.options.timeStep.value_or(1.0 / 60.0)) {
     RunFacts& facts = record_.facts;
     facts.lesson = s_.exe;
     facts.contextKind = context.kind();
@@ -39,13 +52,17 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
     if (overlay_) {
         lessonText_.emplace(lessonSourceFolder(s_.lesson->info()), s_.lesson->steps(), s_.options.language);
         (void)lessonText_->reloadIfChanged();
+        overlay_->setTextScale(s_.ui.textScale);
+        overlay_->setShares(s_.ui.shares);
     }
+    // In a window the picture always has its own place (and the compare view); headless only with the
+    // overlay, so captures without it are the lesson's frame exactly as before.
+    if (!plan.headless || overlay_) picture_ = std::make_unique<PictureView>();
 }
 
 void FrameLoop::run() {
     const double timeStep = s_.options.timeStep.value_or(1.0 / 60.0);
     const std::uint64_t frames = std::uint64_t(plan_.frames);
-    double seconds = 0;
     Clock::time_point lastWall = Clock::now();
     lastReloadCheck_ = lastWall;
     gl::resetDebugCounters();
@@ -53,27 +70,44 @@ void FrameLoop::run() {
     for (std::uint64_t index = 0; frames == 0 || index < frames; ++index) {
         context_.pollEvents();
         if (context_.shouldClose()) break;
+        if (!plan_.headless && context_.hidden()) {
+            // Minimised or unmapped: nothing is seen, so nothing is drawn; sleep until the window
+            // system has news (a quarter second at most, so the shader watch still runs).
+            context_.waitEvents(0.25);
+            lastWall = Clock::now();
+            record_.facts.frameCpuMs.push_back(0);
+            record_.facts.frameGpuMs.push_back(0);
+            continue;
+        }
         Clock::time_point frameStart = Clock::now();
-        double delta =
+        double elapsed =
             plan_.headless ? timeStep : std::chrono::duration<double>(frameStart - lastWall).count();
         lastWall = frameStart;
-        seconds += delta;
-        takeKeys(frameStart);
+        if (!takeKeys(frameStart, index)) break;
+        const double delta = clock_.advance(elapsed);
 
-        Size2D extent = context_.framebufferSize();
-        FrameInfo frame = frameInfo(index, delta, extent);
-        frame.seconds = seconds;
+        const Size2D window = context_.framebufferSize();
+        const bool drawOverlay = overlay_ && overlayVisible_;
+        // The picture's place: beside the panels when they show, else the whole window.
+        LayoutRect place{0, 0, float(window.width), float(window.height)};
+        std::optional<PanelLayout> layout;
+        if (drawOverlay && picture_ && !window.empty()) {
+            layout = overlay_->layout(window.width, window.height);
+            place = layout->picture;
+        }
+        const Size2D extent = window.empty() ? Size2D{} : Size2D{int(place.width), int(place.height)};
+        FrameInfo frame = frameInfo(index, delta, extent, place);
+        frame.seconds = clock_.seconds();
         if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, frame.deltaSeconds);
         s_.lesson->update(frame);
         if (extent.empty()) {
             // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
-            if (!plan_.headless) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            if (!plan_.headless) context_.waitEvents(0.25);
             record_.facts.frameCpuMs.push_back(0);
             record_.facts.frameGpuMs.push_back(0);
             continue;
         }
         const bool lastFrame = frames != 0 && index + 1 == frames;
-        const bool drawOverlay = overlay_ && overlayVisible_;
         const bool screenshot = std::exchange(screenshotAsked_, false);
         FrameRequest request;
         request.inspect = s_.options.inspect;
@@ -83,23 +117,34 @@ void FrameLoop::run() {
         }
         request.readTextures = lastFrame;
         request.readFinal = lastFrame || screenshot;
+        if (picture_) {
+            // The picture of the step before is kept for the compare view before this step draws.
+            if (renderedStep_ >= 0 && renderedStep_ != s_.step) picture_->keepAsPrevious(renderedStep_);
+            renderedStep_ = s_.step;
+            request.target = picture_->target(extent);
+        }
         // A sweep asked for by the cost panel runs here, between frames, never inside one.
         if (drawOverlay && overlay_->costPanel().measurePending()) {
             overlay_->costPanel().runPending([&] {
                 return sweepKnobs(*s_.lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
             });
         }
-        RenderedFrame rendered = renderer_.render(*s_.lesson, frame, request,
-                                                  [&](const FrameGraph& graph, const FrameReport& report) {
-                                                      if (drawOverlay)
-                                                          this->drawOverlay(frame, graph, report, delta);
-                                                  });
+        RenderedFrame rendered = renderer_.render(
+            *s_.lesson, frame, request, [&](const FrameGraph& graph, const FrameReport& report) {
+                if (picture_) present(place, window);
+                if (drawOverlay) this->drawOverlay(frame, graph, report, delta, window);
+            });
         if (!inspectChecked_) {
             inspectChecked_ = true;  // the first frame's graph knows the texture names --inspect can use
             for (const auto& warning : unknownInspectWarnings(s_.options.inspect, rendered.report, s_.step))
                 log::warning(warning);
         }
         record_.lastFrame = frame;
+        if (lastFrame && picture_) {
+            record_.lastPicture = picture_->read();
+            record_.lastLayout = layout;
+            if (overlay_) record_.textScale = overlay_->textScale();
+        }
         keep(rendered, lastFrame, request.readFinal, screenshot);
         context_.present();
         gl::drainErrorFlags();
@@ -109,15 +154,54 @@ void FrameLoop::run() {
     }
     // The facts of the last frame read the last frame's report.
     record_.lastFrame.previousFrame = &record_.lastReport;
+    s_.windowSize = context_.framebufferSize();
+    saveUiSettings();
 }
 
-void FrameLoop::takeKeys(Clock::time_point now) {
+void FrameLoop::present(const LayoutRect& place, Size2D window) {
+    // Around the picture (where no panel is, for a moment during a resize): a dark ground.
+    const GLuint target = context_.presentFramebuffer();
+    const float ground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+    glClearNamedFramebufferfv(target, GL_COLOR, 0, ground);
+    picture_->present(target, window.height, place, compare_);
+}
+
+bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     int stepCount = int(s_.lesson->steps().size());
     KeyPresses keys = input_.takeKeyPresses();
-    bool keysForUs = !(overlay_ && overlay_->wantsKeyboard());
-    if (keys.next && keysForUs) s_.step = std::min(s_.step + 1, stepCount - 1);
-    if (keys.previous && keysForUs) s_.step = std::max(s_.step - 1, 0);
+    if (overlay_ && overlay_->wantsKeyboard()) {
+        // Typing into one of the overlay's fields: the keys that are characters are the field's.
+        keys.next = keys.previous = keys.pause = keys.advanceFrame = false;
+        keys.textBigger = keys.textSmaller = false;
+    }
+    // --press KEY@FRAME: the same presses, at the frame asked for.
+    for (const ScriptedPress& p : s_.options.presses) {
+        if (std::uint64_t(p.frame) == index) keys |= p.press;
+    }
+    for (const ScriptedResize& r : s_.options.resizes) {
+        if (std::uint64_t(r.frame) == index && !plan_.headless) context_.resize({r.width, r.height});
+    }
+    if (keys.next) s_.step = std::min(s_.step + 1, stepCount - 1);
+    if (keys.previous) s_.step = std::max(s_.step - 1, 0);
     if (keys.toggleOverlay) overlayVisible_ = !overlayVisible_;
+    if (keys.pause) clock_.togglePause();
+    if (keys.advanceFrame) clock_.stepOnce();
+    if (keys.textBigger) changeTextScale(kTextScaleStep);
+    if (keys.textSmaller) changeTextScale(-kTextScaleStep);
+    if (keys.resetLayout && overlay_) {
+        overlay_->resetLayout();
+        s_.status = "layout reset";
+        saveUiSettings();
+    }
+    if (keys.compare) {
+        compare_ = picture_ ? nextCompareMode(compare_) : CompareMode::Off;
+        s_.status = picture_ ? cat("compare: ", describeCompareMode(compare_)) : "compare: needs a window";
+        log::info(s_.status);
+    }
+    if (keys.findSpecial && overlay_) {
+        overlay_->inspector().setOpen(true);
+        overlay_->inspector().findNextSpecial();
+    }
     screenshotAsked_ = keys.screenshot;
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
         lastReloadCheck_ = now;
@@ -128,9 +212,39 @@ void FrameLoop::takeKeys(Clock::time_point now) {
         programs_.reloadAll();
         s_.status = "reloaded shaders";
     }
+    if (keys.nextLesson || keys.previousLesson) {
+        const int direction = keys.nextLesson ? 1 : -1;
+        if (neighbourLesson(s_.exe, direction)) {
+            s_.switchLesson = direction;
+            return false;
+        }
+        s_.status = direction > 0 ? "this is the last lesson" : "this is the first lesson";
+    }
+    return !keys.quit;
 }
 
-FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, Size2D extent) const {
+void FrameLoop::changeTextScale(float by) {
+    if (!overlay_) return;
+    const float scale = clampTextScale(overlay_->textScale() + by);
+    overlay_->setTextScale(scale);
+    s_.status = cat("text scale ", scale);
+    saveUiSettings();
+}
+
+void FrameLoop::saveUiSettings() {
+    // Only a window's settings are the teacher's: headless runs (tests, captures) leave the file alone.
+    if (plan_.headless) return;
+    if (overlay_) {
+        s_.ui.textScale = overlay_->textScale();
+        s_.ui.shares = overlay_->shares();
+    }
+    Size2D window = context_.framebufferSize();
+    if (!window.empty()) s_.ui.windowSize = window;
+    if (auto saved = fx::saveUiSettings(uiSettingsPath(), s_.ui); !saved) log::warning(saved.error());
+}
+
+FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, Size2D extent,
+                               const LayoutRect& place) const {
     FrameInfo frame;
     frame.index = index;
     frame.deltaSeconds = delta;
@@ -139,14 +253,15 @@ FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, Size2D extent)
     frame.seed = s_.options.seed;
     frame.headless = plan_.headless;
     frame.previousFrame = index > 0 ? &record_.lastReport : nullptr;
-    frame.pointer = input_.pointer(extent, overlay_ && overlayVisible_ && overlay_->wantsMouse());
+    frame.pointer = input_.pointer(context_.framebufferSize(), int(place.x), int(place.y), extent,
+                                   overlay_ && overlayVisible_ && overlay_->wantsMouse());
     return frame;
 }
 
 void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, const FrameReport& report,
-                            double delta) {
+                            double delta, Size2D window) {
     glBindFramebuffer(GL_FRAMEBUFFER, context_.presentFramebuffer());
-    glViewport(0, 0, frame.size.width, frame.size.height);
+    glViewport(0, 0, window.width, window.height);
     Lesson& lesson = *s_.lesson;
     OverlayModel model;
     model.title = cat(lesson.info().number, ". ", lesson.info().title);
@@ -190,7 +305,20 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
     model.measureKnobs = [&] {
         return sweepKnobs(lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
     };
-    overlay_->draw(model, frame.size.width, frame.size.height, delta);
+    // Headless too: --press takes the same keys, and an --overlay capture shows what a window would.
+    for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
+    model.executable = s_.exe;
+    if (clock_.paused())
+        model.clock =
+            cat("paused at ", secondsText(clock_.seconds()), " s (space resumes, . steps one frame)");
+    if (compare_ != CompareMode::Off) {
+        model.compare =
+            picture_ && picture_->previousStep()
+                ? cat("compare: ", describeCompareMode(compare_), " (step ", *picture_->previousStep() + 1,
+                      " against step ", s_.step + 1, "; F3 changes)")
+                : "compare: change the step (arrows) to keep a picture to compare with";
+    }
+    overlay_->draw(model, window.width, window.height, delta);
 }
 
 void FrameLoop::keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bool screenshot) {
@@ -200,7 +328,8 @@ void FrameLoop::keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bo
     record_.lastFinalBytes = std::move(rendered.finalImage);
     record_.lastFinal = toFloatImage(record_.lastFinalBytes);
     if (screenshot) {
-        fs::path shot = fs::path("out") / cat(s_.exe, "-screenshot-", ++screenshotCount_, ".png");
+        // Never over an earlier one: the first free number for this lesson and step.
+        fs::path shot = nextScreenshotPath("out", s_.exe, s_.step + 1);
         auto written = writePng(shot, record_.lastFinalBytes);
         s_.status = written ? cat("saved ", shot.string()) : written.error();
         log::info(s_.status);

@@ -2,16 +2,19 @@
 // The frames of a run: input, reload, the lesson's update and frame, the overlay on top, screenshots,
 // and what the last frame leaves for the captures and the report.
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "app/frame_renderer.hpp"
+#include "app/lesson_clock.hpp"
 #include "app/lesson_text_files.hpp"
 #include "app/run_report.hpp"
 #include "app/run_session.hpp"
 #include "app/window_input.hpp"
 #include "gl/program.hpp"
 #include "ui/overlay.hpp"
+#include "ui/picture_view.hpp"
 
 namespace fx {
 
@@ -23,6 +26,11 @@ struct RunRecord {
     ByteImage lastFinalBytes;
     FloatImage lastFinal;
     FrameInfo lastFrame;  // the last frame the lesson built (its facts go in the report)
+    // With the picture in its own place (a window, or the overlay headless): the lesson's picture
+    // alone, and where it and the panels were in the window.
+    ByteImage lastPicture;
+    std::optional<PanelLayout> lastLayout;
+    float textScale = 1.0f;
 };
 
 class FrameLoop {
@@ -38,11 +46,15 @@ public:
 private:
     using Clock = std::chrono::steady_clock;
 
-    void takeKeys(Clock::time_point now);
-    FrameInfo frameInfo(std::uint64_t index, double delta, Size2D extent) const;
-    void drawOverlay(const FrameInfo& frame, const FrameGraph& graph, const FrameReport& report,
-                     double delta);
+    // False when the run should end (Esc, or another lesson asked for).
+    bool takeKeys(Clock::time_point now, std::uint64_t index);
+    void changeTextScale(float by);
+    void saveUiSettings();
+    FrameInfo frameInfo(std::uint64_t index, double delta, Size2D extent, const LayoutRect& place) const;
+    void drawOverlay(const FrameInfo& frame, const FrameGraph& graph, const FrameReport& report, double delta,
+                     Size2D window);
     void keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bool screenshot);
+    void present(const LayoutRect& place, Size2D window);
 
     RunSession& s_;
     const RunPlan& plan_;
@@ -54,7 +66,10 @@ private:
     bool overlayVisible_ = false;
     bool screenshotAsked_ = false;
     bool inspectChecked_ = false;  // --inspect names are checked against the first frame's graph
-    int screenshotCount_ = 0;
+    LessonClock clock_;
+    std::unique_ptr<PictureView> picture_;  // windows and headless overlays: the picture has its place
+    CompareMode compare_ = CompareMode::Off;
+    int renderedStep_ = -1;  // the step the picture now in picture_ shows
     Clock::time_point lastReloadCheck_;
     RunRecord record_;
     std::optional<LessonTextFiles> lessonText_;  // with an overlay only: the steps' text

@@ -16,7 +16,7 @@ FrameRenderer::FrameRenderer(Context& context, TimingMode timing, bool checkStat
 RenderedFrame FrameRenderer::render(Lesson& lesson, const FrameInfo& frame, const FrameRequest& request,
                                     const WhileHeld& whileHeld) {
     RenderedFrame out;
-    executor_.setPresentFramebuffer(context_.presentFramebuffer());
+    executor_.setPresentFramebuffer(request.target ? request.target : context_.presentFramebuffer());
     FrameGraph graph(OutputTarget{frame.size, "output", TextureFormat::RGBA8, 0});
     if (work_) work_->describeTo(graph);
     lesson.buildFrame(graph, frame);
@@ -40,8 +40,9 @@ RenderedFrame FrameRenderer::render(Lesson& lesson, const FrameInfo& frame, cons
     }
     if (whileHeld) whileHeld(graph, out.report);
     if (request.readFinal) {
-        out.finalImage =
-            gl::readFramebufferRgba8(context_.presentFramebuffer(), frame.size.width, frame.size.height);
+        // What is on the screen: the whole window (the picture's place and the panels beside it).
+        const Size2D shown = request.target ? context_.framebufferSize() : frame.size;
+        out.finalImage = gl::readFramebufferRgba8(context_.presentFramebuffer(), shown.width, shown.height);
     }
     // Inspected and captured textures go back to the pool only now.
     graph.releaseTextures();

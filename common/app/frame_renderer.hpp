@@ -21,13 +21,16 @@ struct FrameRequest {
     bool readTextures = false;           // read back every texture of the frame (captures, report)
     std::vector<std::string> readNamed;  // read back only these (the bench's effect output)
     bool readFinal = false;              // read back the presented image (after whileHeld drew on it)
+    // Where the lesson's output goes: 0 for the context's present framebuffer, else a framebuffer of
+    // the frame's size (ui/picture_view.hpp: the picture's own target, shown beside the panels).
+    GLuint target = 0;
 };
 
 struct RenderedFrame {
     FrameReport report;
     std::vector<CapturedTexture> textures;
-    ByteImage finalImage;
-    double passMs = 0;  // sum of the pass times the timer had
+    ByteImage finalImage;  // the context's whole framebuffer, overlay and all
+    double passMs = 0;     // sum of the pass times the timer had
 };
 
 class FrameRenderer {

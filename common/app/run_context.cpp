@@ -27,7 +27,9 @@ RunPlan planRun(const RunOptions& o, const std::string& exe) {
 Result<std::unique_ptr<Context>> openRunContext(const RunSession& s, RunPlan& plan) {
     const RunOptions& o = s.options;
     ContextOptions co;
-    co.size = {o.width.value_or(1280), o.height.value_or(720)};
+    // A window opens at the size the teacher left it (ui.json) unless --size says otherwise.
+    Size2D remembered = !plan.headless && s.ui.windowSize ? *s.ui.windowSize : Size2D{1280, 720};
+    co.size = {o.width.value_or(remembered.width), o.height.value_or(remembered.height)};
     co.title = cat("fxlab ", s.lesson->info().number, ": ", s.lesson->info().title);
     Result<std::unique_ptr<Context>> made =
         plan.headless ? createHeadlessContext(co) : createWindowContext(co);

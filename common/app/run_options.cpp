@@ -9,7 +9,6 @@
 #include <string_view>
 
 #include "app/lesson_text_files.hpp"
-#include "app/window_input.hpp"
 #include "base/log.hpp"
 #include "render/frame_report.hpp"
 #include "scene/closest_name.hpp"
@@ -150,6 +149,45 @@ Status addInspect(RunOptions& o, const FlagUse& use) {
     return Status::success();
 }
 
+// KEY or KEY@FRAME, KEY one of the window's keys by its --press name.
+Status addPress(RunOptions& o, const FlagUse& use) {
+    const std::string& v = use.value;
+    const auto at = v.find('@');
+    const std::string key = v.substr(0, at);
+    auto press = keyPressNamed(key);
+    if (!press) {
+        std::vector<std::string> names;
+        for (const WindowKeyHelp& k : windowKeysHelp()) names.push_back(k.token);
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        auto near = closestName(key, names);
+        return Error{cat(use.flag, ": no key named \"", key, "\"",
+                         near ? cat(" (did you mean ", *near, "?)") : "", "; the keys: ", list)};
+    }
+    long frame = 0;
+    if (at != std::string::npos) {
+        auto n =
+            parseWhole(std::string_view(v).substr(at + 1), 0, 1000000, use.flag, "a frame number after @");
+        if (!n) return Error{n.error()};
+        frame = *n;
+    }
+    o.presses.push_back({key, int(frame), *press});
+    return Status::success();
+}
+
+// WxH@FRAME: sizes as --size takes them.
+Status addResize(RunOptions& o, const FlagUse& use) {
+    const auto at = use.value.find('@');
+    if (at == std::string::npos) return Error{cat(use.flag, ": expected WxH@FRAME, got \"", use.value, "\"")};
+    RunOptions sized;
+    if (auto status = parseSize(sized, {use.flag, use.value.substr(0, at), 0}); !status) return status;
+    auto frame = parseWhole(std::string_view(use.value).substr(at + 1), 0, 1000000, use.flag,
+                            "a frame number after @");
+    if (!frame) return Error{frame.error()};
+    o.resizes.push_back({*sized.width, *sized.height, int(*frame)});
+    return Status::success();
+}
+
 // The languages lesson text comes in (lesson_text_files.hpp), each its own word.
 std::vector<Choice<std::string>> languageChoices() {
     std::vector<Choice<std::string>> choices;
@@ -256,6 +294,21 @@ const std::vector<Flag>& flags() {
          .value = "DIR",
          .help = "with --bench: where the results go (default out/bench/<lesson>/)",
          .apply = nonEmpty(&RunOptions::benchOut, "a path")},
+        {.name = "--press",
+         .value = "KEY@FRAME",
+         .help = "press a window key at frame FRAME (0 when left out), as if typed; KEY is the\n"
+                 "name in brackets in the key list below (scripted demonstrations, window tests)",
+         .repeatable = true,
+         .apply = addPress},
+        {.name = "--resize",
+         .value = "WxH@FRAME",
+         .help = "resize the window at frame FRAME, as if its border were dragged",
+         .repeatable = true,
+         .apply = addResize},
+        {.name = "--all-steps",
+         .help = "with --capture DIR: capture every step of the lesson, each into DIR/step-K/\n"
+                 "(with its report.json), one run per step",
+         .apply = set(&RunOptions::allSteps, true)},
         {.name = "--list-steps",
          .help = "print the lesson's steps and exit",
          .apply = set(&RunOptions::listSteps, true)},
@@ -312,7 +365,15 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int ste
         if (auto status = flag->apply(o, {flag->name, value, stepCount}); !status)
             return Error{status.error()};
     }
+    if (o.allSteps && o.captureDir.empty())
+        return Error{"--all-steps: needs --capture DIR (each step's captures go into DIR/step-K/)"};
+    if (o.allSteps && o.step) return Error{"--all-steps: captures every step; leave out --step"};
     return o;
+}
+
+bool runFlagTakesValue(std::string_view word) {
+    const Flag* flag = findFlag(word);
+    return flag && !flag->value.empty();
 }
 
 std::string runOptionsHelp(const std::string& program) {
@@ -322,8 +383,9 @@ std::string runOptionsHelp(const std::string& program) {
             f.name + (f.alias.empty() ? "" : ", " + f.alias) + (f.value.empty() ? "" : " " + f.value);
         text += helpLine(left, f.help);
     }
-    text += "\nkeys in a window:\n";
-    for (const WindowKeyHelp& k : windowKeysHelp()) text += helpLine(k.key, k.action);
+    text += "\nkeys in a window (the overlay's Keys tab lists the same; [name] for --press):\n";
+    for (const WindowKeyHelp& k : windowKeysHelp())
+        text += helpLine(cat(k.key, " [", k.token, "]"), k.action);
     return text;
 }
 

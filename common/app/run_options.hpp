@@ -5,14 +5,30 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "app/window_input.hpp"
 #include "base/result.hpp"
 #include "base/timing_mode.hpp"
 
 namespace fx {
 
 struct FrameReport;
+
+// --press KEY@FRAME: a window key pressed at a frame, as if typed (scripted demonstrations, the
+// window tests, documentation pictures).
+struct ScriptedPress {
+    std::string key;  // its --press name: "space", "F2"
+    int frame = 0;
+    KeyPresses press;
+};
+
+// --resize WxH@FRAME: the window resized at a frame, as if the user dragged its border.
+struct ScriptedResize {
+    int width = 0, height = 0;
+    int frame = 0;
+};
 
 struct RunOptions {
     bool help = false;
@@ -41,12 +57,18 @@ struct RunOptions {
     int benchFrames = 5;                        // --bench-frames N: measured frames per setting
     int benchValues = 0;                        // --bench-values N: only the first N values of each knob
     std::filesystem::path benchOut;             // --bench-out DIR (default out/bench/<NN-name>)
+    std::vector<ScriptedPress> presses;         // --press KEY@FRAME
+    std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
+    bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".
 // `stepCount` is the lesson's number of steps: --step is checked against it. A flag that takes one
 // value may be given once; --param and --inspect may be repeated.
 Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int stepCount);
+
+// Whether a flag takes a value ("--size" does, "--headless" does not), from the same table.
+bool runFlagTakesValue(std::string_view flag);
 
 // Every flag with its value and what it does, then the keys of a lesson window.
 std::string runOptionsHelp(const std::string& program);

@@ -3,9 +3,43 @@
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
+#include "image/png_file.hpp"
 #include "render/graph_dot.hpp"
 
 namespace fx {
+
+namespace {
+
+nlohmann::ordered_json rectJson(const LayoutRect& r) {
+    return {int(r.x), int(r.y), int(r.width), int(r.height)};
+}
+
+}  // namespace
+
+nlohmann::ordered_json layoutJson(const PanelLayout& layout, Size2D window, float textScale) {
+    nlohmann::ordered_json j;
+    j["window"] = {window.width, window.height};
+    j["textScale"] = textScale;
+    j["picture"] = rectJson(layout.picture);
+    j["lesson"] = rectJson(layout.lesson);
+    j["frame"] = rectJson(layout.frame);
+    j["inspector"] = rectJson(layout.inspector);
+    return j;
+}
+
+std::string capturesWrittenMessage(const std::filesystem::path& dir, bool finalImage, bool picture,
+                                   std::size_t textures, bool emptyFrame) {
+    std::string what;
+    if (finalImage)
+        what = picture ? "final.png (the window), picture.png (the lesson's picture)" : "final.png";
+    const std::string texturesText = cat(textures, " intermediate texture", textures == 1 ? "" : "s");
+    const std::string why = emptyFrame ? "the frame was empty (0x0), so no picture was drawn"
+                                       : "the run ended before its last frame (the window was closed)";
+    if (!finalImage && textures == 0) return cat("nothing captured into ", dir.string(), "/: ", why);
+    if (!finalImage)
+        return cat("captures written to ", dir.string(), "/: ", texturesText, "; no final.png: ", why);
+    return cat("captures written to ", dir.string(), "/: ", what, " and ", texturesText);
+}
 
 int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const gl::ProgramRegistry& programs,
                     RunRecord& record) {
@@ -27,19 +61,24 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
 
     int exitCode = 0;
     if (!plan.captureDir.empty()) {
-        if (auto written = writeCaptures(plan.captureDir, record.lastFinalBytes, record.lastTextures,
-                                         s.options.captureFloat);
-            !written) {
+        Status written = writeCaptures(plan.captureDir, record.lastFinalBytes, record.lastTextures,
+                                       s.options.captureFloat);
+        if (written && !record.lastPicture.empty())
+            written = writePng(plan.captureDir / "picture.png", record.lastPicture);
+        if (!written) {
             log::error(written.error());
             exitCode = 1;
         } else {
-            log::info("captures written to ", plan.captureDir.string(), "/ (final.png and ",
-                      record.lastTextures.size(), " intermediate textures)");
+            log::info(capturesWrittenMessage(plan.captureDir, !record.lastFinalBytes.empty(),
+                                             !record.lastPicture.empty(), record.lastTextures.size(),
+                                             facts.size.empty()));
         }
     }
     if (!plan.reportFile.empty()) {
-        auto json =
-            buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal).dump(2) + "\n";
+        auto report = buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal);
+        if (record.lastLayout)
+            report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
+        auto json = report.dump(2) + "\n";
         if (auto written = writeFileAtomically(plan.reportFile, json); !written) {
             log::error(written.error());
             exitCode = 1;

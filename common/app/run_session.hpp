@@ -7,6 +7,7 @@
 
 #include "app/lesson.hpp"
 #include "app/run_options.hpp"
+#include "app/ui_settings.hpp"
 
 namespace fx {
 
@@ -18,6 +19,13 @@ struct RunSession {
     Scene scene;
     int step = 0;  // 0-based
     std::string status;
+    std::vector<std::string> args;  // the command line after the program's name (for the next lesson)
+    // In a window: the text scale, window size and layout the teacher left (app/ui_settings.hpp).
+    UiSettings ui;
+    // Set by Page Down / Page Up: +1 or -1 starts the neighbouring lesson when this run ends, in a
+    // window of windowSize (app/lesson_switch.hpp).
+    int switchLesson = 0;
+    Size2D windowSize;
 };
 
 // Where a run draws and what it leaves behind, decided from the options and whether a display exists.

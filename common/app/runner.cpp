@@ -7,6 +7,7 @@
 #include "app/bench_mode.hpp"
 #include "app/frame_loop.hpp"
 #include "app/lesson_listing.hpp"
+#include "app/lesson_switch.hpp"
 #include "app/lesson_text_files.hpp"
 #include "app/run_context.hpp"
 #include "app/run_results.hpp"
@@ -33,6 +34,7 @@ Status initLesson(RunSession& s, const gl::ProgramRegistry& programs) {
 int run(RunSession& s) {
     const RunOptions& o = s.options;
     RunPlan plan = planRun(o, s.exe);
+    if (!plan.headless) s.ui = loadUiSettings(uiSettingsPath());
     auto made = openRunContext(s, plan);
     if (!made) {
         log::error(made.error());
@@ -63,6 +65,8 @@ int run(RunSession& s) {
     }
     FrameLoop loop(s, plan, *context, renderer, input, overlay.get(), programs);
     loop.run();
+    // Page Down / Page Up: the next lesson writes the captures and the report asked for, not this one.
+    if (s.switchLesson != 0) return 0;
     return writeRunResults(s, plan, *context, programs, loop.record());
 }
 
@@ -123,6 +127,24 @@ std::optional<int> setParameters(RunSession& s) {
     return std::nullopt;
 }
 
+// --all-steps: this executable once per step, each writing DIR/step-K/ (lesson_switch.hpp).
+int captureEveryStep(const RunSession& s) {
+    const int steps = int(s.lesson->steps().size());
+    const fs::path self = runningExecutable();
+    int failures = 0;
+    for (int step = 1; step <= steps; ++step) {
+        auto code = runAndWait(self, stepCaptureArguments(s.args, s.options.captureDir, step));
+        if (!code || *code != 0) {
+            log::error(s.exe, ": step ", step,
+                       code ? cat(" exited with code ", *code) : cat(": ", code.error()));
+            ++failures;
+        }
+    }
+    log::info(s.exe, ": ", steps - failures, " of ", steps, " steps captured into ",
+              s.options.captureDir.string(), "/step-1 ... step-", steps);
+    return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
@@ -134,7 +156,7 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         std::cerr << exe << ": " << parsed.error() << "\n";
         return 2;
     }
-    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}};
+    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}};
     lesson.declareParams(s.params);
     if (s.options.help) {
         std::cout << lesson.info().title << "\n\n" << runOptionsHelp(exe);
@@ -145,6 +167,7 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         (void)text.reloadIfChanged();
         return printSteps(text) ? 0 : 1;
     }
+    if (s.options.allSteps) return captureEveryStep(s);
     if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
     if (auto failed = loadLessonScene(s)) return *failed;
     if (auto failed = setParameters(s)) return *failed;
@@ -152,7 +175,17 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         printParams(s.params);
         return 0;
     }
-    return run(s);
+    int code = run(s);
+    if (s.switchLesson != 0) {
+        // The window is closed and the lesson released: the neighbour takes this process's place.
+        if (auto next = neighbourLesson(s.exe, s.switchLesson)) {
+            log::info("starting ", next->filename().string());
+            Error failed = execLesson(*next, neighbourArguments(s.args, s.windowSize));
+            log::error(failed.message);
+            return 1;
+        }
+    }
+    return code;
 }
 
 }  // namespace fx

@@ -7,42 +7,74 @@ namespace fx {
 namespace {
 
 struct WindowKey {
-    int key;           // GLFW_KEY_*
-    const char* name;  // as --help shows it
+    int key;            // GLFW_KEY_*
+    int alternate;      // another key that does the same (the keypad's + and -), or 0
+    const char* name;   // as --help and the Keys tab show it
+    const char* token;  // as --press takes it
     const char* action;
-    bool KeyPresses::*press;  // what a press sets; nullptr: Esc, which closes the window
+    bool KeyPresses::*press;  // what a press sets
 };
 
 constexpr WindowKey kWindowKeys[] = {
-    {GLFW_KEY_LEFT, "left arrow", "previous step", &KeyPresses::previous},
-    {GLFW_KEY_RIGHT, "right arrow", "next step", &KeyPresses::next},
-    {GLFW_KEY_F1, "F1", "show or hide the overlay", &KeyPresses::toggleOverlay},
-    {GLFW_KEY_F5, "F5", "reload shaders (they also reload when saved)", &KeyPresses::reload},
-    {GLFW_KEY_F12, "F12", "save a screenshot to out/", &KeyPresses::screenshot},
-    {GLFW_KEY_ESCAPE, "Esc", "quit", nullptr},
+    {GLFW_KEY_LEFT, 0, "left arrow", "left", "previous step", &KeyPresses::previous},
+    {GLFW_KEY_RIGHT, 0, "right arrow", "right", "next step", &KeyPresses::next},
+    {GLFW_KEY_PAGE_UP, 0, "Page Up", "pageup", "previous lesson (same window size and flags)",
+     &KeyPresses::previousLesson},
+    {GLFW_KEY_PAGE_DOWN, 0, "Page Down", "pagedown", "next lesson (same window size and flags)",
+     &KeyPresses::nextLesson},
+    {GLFW_KEY_SPACE, 0, "space", "space", "pause or resume the clock", &KeyPresses::pause},
+    {GLFW_KEY_PERIOD, 0, ".", "period", "one frame forward (pauses the clock)", &KeyPresses::advanceFrame},
+    {GLFW_KEY_F3, 0, "F3", "F3", "compare with the previous step: split, difference x8, off",
+     &KeyPresses::compare},
+    {GLFW_KEY_F4, 0, "F4", "F4", "inspector: go to the next NaN or Inf texel and pin the probe",
+     &KeyPresses::findSpecial},
+    {GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD, "+", "plus", "larger text (kept for the next start)",
+     &KeyPresses::textBigger},
+    {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT, "-", "minus", "smaller text", &KeyPresses::textSmaller},
+    {GLFW_KEY_F2, 0, "F2", "F2", "reset the layout (panels to their places, text size kept)",
+     &KeyPresses::resetLayout},
+    {GLFW_KEY_F1, 0, "F1", "F1", "show or hide the overlay", &KeyPresses::toggleOverlay},
+    {GLFW_KEY_F5, 0, "F5", "F5", "reload shaders (they also reload when saved)", &KeyPresses::reload},
+    {GLFW_KEY_F12, 0, "F12", "F12", "save a screenshot to out/ (named by lesson and step, never replaced)",
+     &KeyPresses::screenshot},
+    {GLFW_KEY_ESCAPE, 0, "Esc", "Esc", "quit", &KeyPresses::quit},
 };
 
 // GLFW callbacks are plain functions: the presses of the one lesson window go here.
 KeyPresses* pending = nullptr;
 KeyPresses presses;
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || !pending) return;
+    // Ctrl/Alt/Super chords are someone else's (the window manager's, ImGui's text fields').
+    if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
+    // Shift+= is "+" on most layouts; the key is the same.
     for (const WindowKey& k : kWindowKeys) {
-        if (k.key != key) continue;
-        if (k.press)
-            pending->*k.press = true;
-        else
-            glfwSetWindowShouldClose(window, GLFW_TRUE);
+        if (k.key == key || (k.alternate != 0 && k.alternate == key)) pending->*k.press = true;
     }
 }
 
 }  // namespace
 
+KeyPresses& KeyPresses::operator|=(const KeyPresses& o) {
+    for (const WindowKey& k : kWindowKeys) this->*k.press = this->*k.press || o.*k.press;
+    return *this;
+}
+
 std::vector<WindowKeyHelp> windowKeysHelp() {
     std::vector<WindowKeyHelp> keys;
-    for (const WindowKey& k : kWindowKeys) keys.push_back({k.name, k.action});
+    for (const WindowKey& k : kWindowKeys) keys.push_back({k.name, k.action, k.token});
     return keys;
+}
+
+std::optional<KeyPresses> keyPressNamed(std::string_view token) {
+    for (const WindowKey& k : kWindowKeys) {
+        if (token != k.token) continue;
+        KeyPresses p;
+        p.*k.press = true;
+        return p;
+    }
+    return std::nullopt;
 }
 
 WindowInput::WindowInput(GLFWwindow* window) : window_(window) {
@@ -62,19 +94,21 @@ KeyPresses WindowInput::takeKeyPresses() {
     return window_ ? taken : KeyPresses{};
 }
 
-Pointer WindowInput::pointer(Size2D framebuffer, bool overUi) const {
+Pointer WindowInput::pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture,
+                             bool overUi) const {
     Pointer p;
-    if (!window_ || framebuffer.empty()) return p;
+    if (!window_ || framebuffer.empty() || picture.empty()) return p;
     double x = 0, y = 0;
     glfwGetCursorPos(window_, &x, &y);
     int windowWidth = 0, windowHeight = 0;
     glfwGetWindowSize(window_, &windowWidth, &windowHeight);
     if (windowWidth <= 0 || windowHeight <= 0) return p;
-    // Window coordinates (top-left origin, screen units) to framebuffer pixels (bottom-left origin).
+    // Window coordinates (top-left origin, screen units) to the picture's pixels (bottom-left origin).
     double sx = double(framebuffer.width) / windowWidth, sy = double(framebuffer.height) / windowHeight;
-    p.x = float(x * sx);
-    p.y = float(framebuffer.height - y * sy);
-    p.present = x >= 0 && y >= 0 && x < windowWidth && y < windowHeight;
+    const double px = x * sx - pictureX, py = y * sy - pictureY;
+    p.x = float(px);
+    p.y = float(picture.height - py);
+    p.present = px >= 0 && py >= 0 && px < picture.width && py < picture.height;
     p.leftDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     p.overUi = overUi;
     return p;

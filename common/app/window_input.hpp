@@ -1,7 +1,9 @@
 #pragma once
 // The keys and the mouse of a lesson window. Create it before the overlay: Dear ImGui's GLFW
 // backend chains the key callback that was installed before it, so both see every key.
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/lesson.hpp"
@@ -13,14 +15,25 @@ namespace fx {
 
 struct KeyPresses {
     bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
+    bool pause = false, advanceFrame = false;      // the clock
+    bool textBigger = false, textSmaller = false;  // the overlay's text scale
+    bool resetLayout = false, compare = false, findSpecial = false;
+    bool nextLesson = false, previousLesson = false;
+    bool quit = false;
+
+    KeyPresses& operator|=(const KeyPresses& o);
 };
 
-// The keys of a lesson window and what each does, for --help. The same table decides what a press
-// does, so the help and the window cannot disagree.
+// The keys of a lesson window and what each does, for --help and the overlay's Keys tab. The same
+// table decides what a press does, so the help and the window cannot disagree.
 struct WindowKeyHelp {
     std::string key, action;
+    std::string token;  // the name --press takes ("space", "F2", "pagedown")
 };
 std::vector<WindowKeyHelp> windowKeysHelp();
+
+// The press of the key --press names by its token; nothing when no key has that token.
+std::optional<KeyPresses> keyPressNamed(std::string_view token);
 
 class WindowInput {
 public:
@@ -30,10 +43,11 @@ public:
     WindowInput(const WindowInput&) = delete;
     WindowInput& operator=(const WindowInput&) = delete;
 
-    // The presses since the last call (Esc closes the window directly).
+    // The presses since the last call.
     KeyPresses takeKeyPresses();
-    // The mouse in framebuffer pixels, bottom-left origin.
-    Pointer pointer(Size2D framebuffer, bool overUi) const;
+    // The mouse in the picture's pixels, bottom-left origin. `picture` is the picture's place in the
+    // framebuffer (x, y from the top-left, in framebuffer pixels); the pointer is present only over it.
+    Pointer pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture, bool overUi) const;
 
 private:
     GLFWwindow* window_;

@@ -136,4 +136,17 @@ Status checkProgramOutputs(GLuint program, GLuint framebuffer, std::string_view 
     return Status::success();
 }
 
+ColorDepthTarget ColorDepthTarget::create(int width, int height, std::string_view prefix,
+                                          std::string_view label) {
+    ColorDepthTarget t;
+    t.color = Texture::create2D(TextureFormat::RGBA8, width, height, 1, std::string(prefix) + ".color");
+    t.depth = Texture::create2D(TextureFormat::Depth24, width, height, 1, std::string(prefix) + ".depth");
+    t.framebuffer = Framebuffer(label);
+    t.framebuffer.attachColor(0, t.color);
+    t.framebuffer.attachDepth(t.depth);
+    t.framebuffer.setDrawBuffers(1);
+    if (auto status = t.framebuffer.checkComplete(); !status) log::error(status.error());
+    return t;
+}
+
 }  // namespace fx::gl

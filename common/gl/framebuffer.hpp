@@ -31,6 +31,16 @@ private:
     std::string label_;
 };
 
+// What a window's back buffer is: RGBA8 colour and 24-bit depth at one size, in one framebuffer. The
+// headless context presents into one; a window's picture beside the overlay's panels is drawn into
+// another (ui/picture_view.cpp).
+struct ColorDepthTarget {
+    Texture color, depth;
+    Framebuffer framebuffer;
+    // `label` names the framebuffer; the textures are "<prefix>.color" and "<prefix>.depth".
+    static ColorDepthTarget create(int width, int height, std::string_view prefix, std::string_view label);
+};
+
 std::string_view framebufferStatusName(GLenum status);
 // Complete by glCheckNamedFramebufferStatus, and every entry of its draw-buffer list names an
 // attachment that has an image: since GL 4.1 a list naming an empty attachment is "complete" and what

@@ -35,6 +35,11 @@ public:
     // Headless contexts resize their offscreen target on request; windows follow the user.
     virtual void resize(Size2D size) = 0;
     virtual GLFWwindow* window() const { return nullptr; }
+    // A window that is minimised or unmapped: nothing of it is seen. Headless: never.
+    virtual bool hidden() const { return false; }
+    // Sleeps until the window system has an event for the window, or `seconds` pass (a hidden window
+    // waits here instead of rendering frames nobody sees). Headless: returns at once.
+    virtual void waitEvents(double /*seconds*/) {}
 
     // "EGL surfaceless (Mesa)", "GLFW window" ...
     const std::string& kind() const { return kind_; }

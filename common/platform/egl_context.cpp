@@ -58,8 +58,6 @@ public:
     ~EglContext() override {
         // GL objects first, while the context is still current.
         target_ = {};
-        color_ = {};
-        depth_ = {};
         gl::setContextAlive(false);
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
@@ -74,7 +72,7 @@ public:
     }
 
     Size2D framebufferSize() const override { return size_; }
-    GLuint presentFramebuffer() const override { return target_.name(); }
+    GLuint presentFramebuffer() const override { return target_.framebuffer.name(); }
     void present() override { glFlush(); }
     void pollEvents() override {}
     bool shouldClose() const override { return false; }
@@ -82,13 +80,7 @@ public:
     void resize(Size2D size) override {
         size_ = {std::max(size.width, 0), std::max(size.height, 0)};
         if (size_.empty()) return;  // like a minimised window: nothing is drawn
-        color_ = gl::Texture::create2D(TextureFormat::RGBA8, size_.width, size_.height, 1, "present.color");
-        depth_ = gl::Texture::create2D(TextureFormat::Depth24, size_.width, size_.height, 1, "present.depth");
-        target_ = gl::Framebuffer("present (headless)");
-        target_.attachColor(0, color_);
-        target_.attachDepth(depth_);
-        target_.setDrawBuffers(1);
-        if (auto status = target_.checkComplete(); !status) log::error(status.error());
+        target_ = gl::ColorDepthTarget::create(size_.width, size_.height, "present", "present (headless)");
     }
 
 private:
@@ -96,8 +88,7 @@ private:
     EGLContext context_;
     EGLSurface surface_;
     Size2D size_;
-    gl::Texture color_, depth_;
-    gl::Framebuffer target_;
+    gl::ColorDepthTarget target_;
 };
 
 std::vector<Candidate> candidateDisplays(std::string& notes) {

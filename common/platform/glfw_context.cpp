@@ -62,6 +62,11 @@ public:
     bool headless() const override { return false; }
     void resize(Size2D size) override { glfwSetWindowSize(window_, size.width, size.height); }
     GLFWwindow* window() const override { return window_; }
+    bool hidden() const override {
+        return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0 ||
+               glfwGetWindowAttrib(window_, GLFW_VISIBLE) == 0;
+    }
+    void waitEvents(double seconds) override { glfwWaitEventsTimeout(seconds); }
 
     Status setup() { return finishSetup("GLFW window"); }
 

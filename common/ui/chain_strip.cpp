@@ -22,20 +22,40 @@ ChainStrip::Interaction ChainStrip::draw(const TextureDisplay& display, const Te
     while (surfaces_.size() < chain.members.size()) {
         surfaces_.emplace_back(cat("ui.chain strip tile ", surfaces_.size()));
     }
+    // Every member in view: the tiles shrink (to a third of their height at most) until the whole
+    // chain fits the width; a chain that still does not fit wraps onto another row.
+    const float available = ImGui::GetContentRegionAvail().x;
+    auto tileWidth = [&](std::size_t i, float first) {
+        const ChainMember& m = chain.members[i];
+        const double aspect = m.size.height > 0 ? double(m.size.width) / m.size.height : 1.0;
+        const int h = tileHeight(i, first);
+        return std::clamp(static_cast<int>(std::lround(h * aspect)), 8, 3 * h);
+    };
+    auto memberWidth = [&](std::size_t i, float first) {
+        const ChainMember& m = chain.members[i];
+        const std::string size = cat(m.size.width, "x", m.size.height);
+        return std::max({float(tileWidth(i, first)), ImGui::CalcTextSize(m.label.c_str()).x,
+                         ImGui::CalcTextSize(size.c_str()).x});
+    };
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        float total = 0.0f;
+        for (std::size_t i = 0; i < chain.members.size(); ++i) total += memberWidth(i, firstHeight) + 6.0f;
+        if (total <= available || firstHeight <= 24.0f) break;
+        firstHeight = std::max(24.0f, firstHeight * 0.85f);
+    }
     for (std::size_t i = 0; i < chain.members.size(); ++i) {
         const ChainMember& m = chain.members[i];
-        if (i > 0) ImGui::SameLine(0.0f, 6.0f);
+        if (i > 0) ui_style::continueRow(memberWidth(i, firstHeight), 6.0f);
         ImGui::BeginGroup();
         ImGui::PushID(int(i));
-        const double aspect = m.size.height > 0 ? double(m.size.width) / m.size.height : 1.0;
         const int h = tileHeight(i, firstHeight);
-        const int w = std::clamp(static_cast<int>(std::lround(h * aspect)), 8, 3 * h);
+        const int w = tileWidth(i, firstHeight);
         // Tiles stand on a common baseline.
         const float drop = firstHeight - float(h) - ImGui::GetStyle().ItemSpacing.y;
         if (drop > 0.0f) ImGui::Dummy(ImVec2(float(w), drop));
-        Tile tile{m.label, m.size, w, h, false};
-
         const ImVec2 p0 = ImGui::GetCursorScreenPos();
+        Tile tile{m.label, m.size, w, h, false, p0.x, p0.y};
+
         const ImVec2 p1(p0.x + float(w), p0.y + float(h));
         ImGui::InvisibleButton("tile", ImVec2(float(w), float(h)));
         ImDrawList* draw = ImGui::GetWindowDrawList();

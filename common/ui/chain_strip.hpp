@@ -37,9 +37,10 @@ public:
     // The tiles drawn by the last draw(): what a test checks.
     struct Tile {
         std::string label;
-        Size2D size{};              // of the member's level
-        int width = 0, height = 0;  // of the tile on screen
-        bool drawn = false;         // the member was alive and rendered
+        Size2D size{};                   // of the member's level
+        int width = 0, height = 0;       // of the tile on screen
+        bool drawn = false;              // the member was alive and rendered
+        float screenX = 0, screenY = 0;  // the tile's top-left corner on the screen
     };
     const std::vector<Tile>& tiles() const { return tiles_; }
 

@@ -59,4 +59,14 @@ GlStateScope::~GlStateScope() {
     setEnabled(GL_FRAMEBUFFER_SRGB, framebufferSrgb_);
 }
 
+void usePlainDrawState() {
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 }  // namespace fx

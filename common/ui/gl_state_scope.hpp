@@ -22,4 +22,8 @@ private:
     bool framebufferSrgb_ = false;
 };
 
+// The state the overlay's own full-screen draws want (inside a GlStateScope): no blending, depth,
+// culling, scissor, stencil or sRGB encoding, all colour channels written.
+void usePlainDrawState();
+
 }  // namespace fx

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 #include "base/log.hpp"
 #include "ui/texture_saver.hpp"
@@ -14,6 +15,11 @@ namespace {
 constexpr std::size_t kThumbnailsPerFrame = 2;  // textures kept alive in turn to refresh thumbnails
 constexpr float kListWidth = 250.0f;
 constexpr float kStripTileHeight = 64.0f;
+
+// The probe's lines: the texel and its values, and the chain's table (a header and up to 4 rows).
+float probeHeightFor(std::size_t chainRows, bool hasStrip, float line) {
+    return 2.0f * line + (hasStrip ? float(chainRows + 1) * line + 10.0f : 0.0f);
+}
 
 }  // namespace
 
@@ -101,28 +107,29 @@ void Inspector::refreshThumbnails(const InspectorFrame& frame) {
     thumbnails_.keepOnly(names);
 }
 
-void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) {
+ImVec2 Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) {
     graph_ = frame.graph;
-    ImGui::SetNextWindowPos(position, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(position, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     if (requestOpen_) {
         ImGui::SetNextWindowCollapsed(!*requestOpen_, ImGuiCond_Always);
         requestOpen_.reset();
     } else {
         ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     }
-    visible_ = ImGui::Begin("Inspector");
+    visible_ = ImGui::Begin("Inspector", nullptr, ImGuiWindowFlags_NoMove);
+    const ImVec2 shown = ImGui::GetWindowSize();
     if (!visible_) {
         ImGui::End();
         graph_ = nullptr;
-        return;
+        return shown;
     }
     ++frameIndex_;
     if (!frame.report) {
         ImGui::TextDisabled("no frame yet");
         ImGui::End();
         graph_ = nullptr;
-        return;
+        return shown;
     }
     refreshThumbnails(frame);
 
@@ -131,12 +138,12 @@ void Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size) 
     if (auto clicked = list_.draw(*frame.report, thumbnails_, selected_, frameIndex_)) select(*clicked);
     ImGui::EndChild();
     ImGui::SameLine();
-    ImGui::BeginChild("detail", ImVec2(0, 0), false,
-                      ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar);
+    ImGui::BeginChild("detail", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollWithMouse);
     drawDetail(frame);
     ImGui::EndChild();
     ImGui::End();
     graph_ = nullptr;
+    return shown;
 }
 
 Result<std::filesystem::path> Inspector::saveSelected(bool exactFloats) {
@@ -199,6 +206,13 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     }
     drawViewControls(s, source, analysis());
     ui_style::continueRow(170.0f, 16.0f);
+    if (ImGui::Button("find NaN/Inf")) findSpecialAsked_ = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "F4: the next texel with a NaN or an infinity; the probe is pinned there and the view\n"
+            "zooms onto it");
+    if (std::exchange(findSpecialAsked_, false)) findSpecial(source, s);
+    ImGui::SameLine();
     drawSaveButtons();
     if (const TextureAnalysis* a = analysis())
         drawHistogram(*a, s, ImVec2(ImGui::GetContentRegionAvail().x, 44.0f));
@@ -207,8 +221,16 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const bool hasStrip = chain_.kind != TextureChain::Kind::None;
     const std::size_t chainRows = hasStrip ? std::min<std::size_t>(chain_.members.size(), 4) : 0;
-    const float stripHeight = hasStrip ? kStripTileHeight + 3.0f * line + 18.0f : 0.0f;
-    const float probeHeight = 2.0f * line + (hasStrip ? float(chainRows + 1) * line + 10.0f : 0.0f);
+    // In a short inspector (the lower part of a 720-line window) the strip's tiles give up height
+    // before the view goes below its least: the whole chain stays on the screen, labels included.
+    const float stripText = 3.0f * line + 18.0f;
+    const float tileHeight =
+        hasStrip ? std::clamp(ImGui::GetContentRegionAvail().y - probeHeightFor(chainRows, hasStrip, line) -
+                                  64.0f - stripText,
+                              24.0f, kStripTileHeight)
+                 : 0.0f;
+    const float stripHeight = hasStrip ? tileHeight + stripText : 0.0f;
+    const float probeHeight = probeHeightFor(chainRows, hasStrip, line);
     ImVec2 avail = ImGui::GetContentRegionAvail();
     ImVec2 viewSize(avail.x, std::max(avail.y - stripHeight - probeHeight, 64.0f));
 
@@ -260,7 +282,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
         }
         ChainStrip::Interaction stripped = strip_.draw(
             display_, chain_, [this](const std::string& n) { return lookup(n); }, s, chainSamples_, current,
-            kStripTileHeight);
+            tileHeight);
         if (stripped.hovered) hovered_ = stripped.hovered;
         if (stripped.clicked) {
             const ChainMember& m = chain_.members[*stripped.clicked];
@@ -272,6 +294,31 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
         }
         ImGui::EndChild();
     }
+}
+
+void Inspector::findSpecial(const TextureSource& source, const ViewSettings& s) {
+    const int level = std::clamp(s.level, 0, source.levels() - 1);
+    // Searching from the pinned texel goes on to the next one each time.
+    int afterX = -1, afterY = -1;
+    if (auto pinned = probe_.target(std::nullopt);
+        pinned && pinned->texture.empty() && pinned->level == level) {
+        afterX = pinned->x;
+        afterY = pinned->y;
+    }
+    std::int64_t count = 0;
+    auto found = nextSpecialTexel(gl::readTexture(source.native, source.spec, level), afterX, afterY, &count);
+    if (!found) {
+        status_ = cat("no NaN or Inf in ", selected_, " mip ", level);
+        return;
+    }
+    probe_.pin({level, found->x, found->y, {}});
+    const Size2D size = source.levelSize(level);
+    // About 24 screen pixels per texel of this level, centred on it.
+    const double levelScale = double(source.levelSize(0).width) / std::max(size.width, 1);
+    view_.setZoom(24.0 / levelScale, (found->x + 0.5) / size.width, (found->y + 0.5) / size.height);
+    status_ = cat("NaN/Inf at texel (", found->x, ", ", found->y, ") of mip ", level, "; ", count,
+                  " such texel", count == 1 ? "" : "s", " (F4: the next)");
+    log::info("inspector: ", status_);
 }
 
 void Inspector::drawSaveButtons() {
@@ -301,7 +348,11 @@ void Inspector::drawChainProbe(float height) {
                                   ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
     if (!ImGui::BeginTable("chain probe", 6, flags, ImVec2(0, height))) return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("same place in", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    // The names in full ("bloom.down[3]", never "bloom.dow"): the first column is as wide as the longest.
+    float nameWidth = ImGui::CalcTextSize("same place in").x;
+    for (const ChainMember& m : chain_.members)
+        nameWidth = std::max(nameWidth, ImGui::CalcTextSize(m.label.c_str()).x);
+    ImGui::TableSetupColumn("same place in", ImGuiTableColumnFlags_WidthFixed, nameWidth);
     ImGui::TableSetupColumn("texel", ImGuiTableColumnFlags_WidthStretch, 0.9f);
     for (const char* c : {"R", "G", "B", "A"})
         ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthStretch, 1.0f);

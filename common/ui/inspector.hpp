@@ -40,8 +40,9 @@ class Inspector {
 public:
     Inspector();
 
-    // Draws the window; `position` and `size` apply the first time only (the user moves it after).
-    void draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size);
+    // Draws the window at `position` and `size` (the layout's place for it, open or collapsed);
+    // returns its size after the user's drag of an edge.
+    ImVec2 draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size);
 
     // The selected texture, the members of its named chain, and two more a frame in turn so that
     // every thumbnail stays fresh. Those two are only textures the last frame made without being
@@ -65,6 +66,11 @@ public:
     const std::vector<ProbeSample>& chainSamples() const { return chainSamples_; }
     const TextureDisplay& display() const { return display_; }
 
+    // Finds the next texel of the selected texture's shown level that holds a NaN or an infinity
+    // (after the pinned one, in reading order), pins the probe there and zooms the view onto it: at fit
+    // zoom one bad texel is one screen pixel or less. Runs at the next draw; the status says the result.
+    void findNextSpecial() { findSpecialAsked_ = true; }
+
     void setSaveFolder(std::filesystem::path folder) { saveFolder_ = std::move(folder); }
     const std::string& status() const { return status_; }
 
@@ -75,6 +81,7 @@ private:
     Result<std::filesystem::path> saveSelected(bool exactFloats);
     void drawDetail(const InspectorFrame& frame);
     void drawSaveButtons();
+    void findSpecial(const TextureSource& source, const ViewSettings& settings);
     void drawChainProbe(float height);
     void refreshThumbnails(const InspectorFrame& frame);
 
@@ -103,6 +110,7 @@ private:
     std::uint64_t frameIndex_ = 0;
     bool visible_ = false;
     std::optional<bool> requestOpen_;
+    bool findSpecialAsked_ = false;
     std::filesystem::path saveFolder_ = "out/inspector";
     std::string status_;
 };

@@ -107,6 +107,13 @@ void drawLessonWindowContents(const OverlayModel& m) {
                 if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
             }
         }
+        // While the clock stands still or the picture compares, the lesson window says so (wrapped).
+        for (const std::string* line : {&m.clock, &m.compare}) {
+            if (line->empty()) continue;
+            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
+            ImGui::TextWrapped("%s", line->c_str());
+            ImGui::PopStyleColor();
+        }
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
@@ -155,7 +162,6 @@ void drawLessonWindowContents(const OverlayModel& m) {
                            static_cast<long long>(m.glExpectedErrors));
     }
     if (!m.status.empty()) ImGui::TextDisabled("%s", m.status.c_str());
-    ImGui::TextDisabled("F1 overlay  F5 reload  F12 screenshot  arrows: steps");
 }
 
 }  // namespace fx

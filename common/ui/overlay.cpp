@@ -1,6 +1,7 @@
 #include "ui/overlay.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -17,35 +18,47 @@
 namespace fx {
 namespace {
 
-// Where the windows start (the user moves them after): the lesson top left, the frame under it,
-// the inspector on the right.
-struct Layout {
-    ImVec2 lessonPos, lessonSize, framePos, frameSize, inspectorPos, inspectorSize;
-};
+// The docked windows are placed by the layout every frame; the user changes the layout by dragging
+// their inner edges (followResize), never by moving them.
+constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
 
-Layout layoutFor(int width, int height) {
-    const float w = float(width), h = float(height), m = 8.0f;
-    Layout l;
-    l.lessonPos = {m, m};
-    l.lessonSize = {std::min(370.0f, w - 2 * m),
-                    std::clamp(h * 0.56f, std::min(200.0f, h - 2 * m), h - 2 * m)};
-    const float frameTop = l.lessonPos.y + l.lessonSize.y + m;
-    l.framePos = {m, frameTop};
-    l.frameSize = {std::clamp(w * 0.5f, std::min(360.0f, w - 2 * m), 640.0f),
-                   std::max(h - frameTop - m, 120.0f)};
-    // Right of the frame window when there is room; never over the lesson window.
-    const float lessonRight = l.lessonPos.x + l.lessonSize.x + m;
-    const float inspectorLeft = std::min(
-        std::max(lessonRight, std::min(l.framePos.x + l.frameSize.x + m, w - m - 600.0f)), w - m - 200.0f);
-    l.inspectorPos = {std::max(inspectorLeft, m), m};
-    l.inspectorSize = {std::min(w - l.inspectorPos.x - m, 1100.0f), h - 2 * m};
-    return l;
+void placeNext(const LayoutRect& r) {
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(r.width, r.height), ImGuiCond_Always);
+}
+
+// A title bar at a text scale: the font's height and the frame padding above and below it.
+float titleBarHeight(float scale) {
+    return std::ceil(13.0f * scale + 2.0f * 3.0f * scale);
+}
+
+void drawKeys(const OverlayModel& m) {
+    if (m.keys.empty()) {
+        ImGui::TextDisabled("no keys: this overlay is drawn without a runner");
+        return;
+    }
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("keys", 2, flags)) return;
+    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
+    for (const OverlayKey& k : m.keys) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored(ui_style::kHeading, "%s", k.key.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", k.action.c_str());
+    }
+    ImGui::EndTable();
+    ImGui::TextDisabled("also: %s --help", m.executable.empty() ? "<lesson>" : m.executable.c_str());
 }
 
 }  // namespace
 
 Overlay::Overlay(GLFWwindow* window) : window_(window), started_(startImGui(window)) {
-    if (started_.renderer) inspector_ = std::make_unique<Inspector>();
+    if (started_.renderer) {
+        inspector_ = std::make_unique<Inspector>();
+        baseStyle_ = ImGui::GetStyle();
+    }
 }
 
 Overlay::~Overlay() {
@@ -69,6 +82,18 @@ void Overlay::showFramePanel(bool open, bool costTab) {
     requestCostTab_ = costTab;
 }
 
+PanelLayout Overlay::layout(int width, int height) const {
+    const bool inspectorOpen = inspector_ && inspector_->open();
+    // The column is never narrower than about 300 pixels at scale 1: a step's text stays readable.
+    return computePanelLayout(width, height, shares_, inspectorOpen, titleBarHeight(textScale_),
+                              300.0f * textScale_);
+}
+
+void Overlay::resetLayout() {
+    shares_ = {};
+    if (inspector_) inspector_->setOpen(false);
+}
+
 void Overlay::prepareFonts(const OverlayModel& m) {
     // Between frames: the atlas holds the glyphs of every step's text (so stepping needs no reload).
     fontsForRevision_ = m.textRevision;
@@ -79,7 +104,7 @@ void Overlay::prepareFonts(const OverlayModel& m) {
         texts.push_back(s.note);
     }
     texts.push_back(m.textError);
-    if (Status loaded = fonts_.prepare(texts); !loaded) {
+    if (Status loaded = fonts_.prepare(texts, textScale_); !loaded) {
         log::error(loaded.error());
         fontError_ = loaded.error();
         if (m.language != "en" && m.setLanguage) {
@@ -91,6 +116,49 @@ void Overlay::prepareFonts(const OverlayModel& m) {
     }
 }
 
+void Overlay::applyTextScale() {
+    // The style's sizes (padding, spacing, scroll bars) grow with the text.
+    ImGui::GetStyle() = baseStyle_;
+    ImGui::GetStyle().ScaleAllSizes(textScale_);
+    appliedScale_ = textScale_;
+}
+
+void Overlay::followResize(const LayoutRect& placed, ImVec2 now, int width, int height, bool lessonWindow) {
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+    const float w = float(width), h = float(height);
+    if (std::abs(now.x - placed.width) >= 1.0f && w > 0) shares_.column = now.x / w;
+    if (lessonWindow && std::abs(now.y - placed.height) >= 1.0f && h > 0)
+        shares_.lesson = now.y / std::max(h - titleBarHeight(textScale_), 1.0f);
+    shares_ = clampShares(shares_);
+}
+
+void Overlay::drawFrameWindow(const OverlayModel& m, const PanelLayout& layout) {
+    placeNext(layout.frame);
+    if (ImGui::Begin("Frame: keys, passes and cost", nullptr, kDocked) && ImGui::BeginTabBar("frame tabs")) {
+        const bool selectCost = requestFrameOpen_ && requestCostTab_;
+        // The keys come first: a teacher finds every key in one place without looking for it.
+        if (ImGui::BeginTabItem("Keys")) {
+            drawKeys(m);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Passes", nullptr,
+                                requestFrameOpen_ && !requestCostTab_ ? ImGuiTabItemFlags_SetSelected : 0)) {
+            if (m.frame) {
+                drawPassTable(*m.frame);
+            } else {
+                ImGui::TextDisabled("no frame yet");
+            }
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Cost of quality", nullptr, selectCost ? ImGuiTabItemFlags_SetSelected : 0)) {
+            cost_.draw(m.measureKnobs);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    requestFrameOpen_.reset();
+}
+
 void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSeconds) {
     if (!ok() || width <= 0 || height <= 0) return;
     // A sweep renders frames of its own: it runs before this frame's ImGui frame starts, with the
@@ -99,7 +167,8 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         GlStateScope keep;
         cost_.runPending(m.measureKnobs);
     }
-    if (m.textRevision != fontsForRevision_) prepareFonts(m);
+    if (m.textRevision != fontsForRevision_ || textScale_ != appliedScale_) prepareFonts(m);
+    if (textScale_ != appliedScale_) applyTextScale();
     ImGuiIO& io = ImGui::GetIO();
     ImGui_ImplOpenGL3_NewFrame();
     if (!fontTextureLabelled_ && io.Fonts->TexID) {
@@ -115,43 +184,31 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;
     }
     ImGui::NewFrame();
-    const Layout layout = layoutFor(width, height);
+    const PanelLayout layout = this->layout(width, height);
     {
         // The inspector draws its pictures into its own targets while the windows are laid out.
         GlStateScope keep;
 
-        ImGui::SetNextWindowPos(layout.lessonPos, ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(layout.lessonSize, ImGuiCond_FirstUseEver);
-        ImGui::Begin(m.title.empty() ? "fxlab" : m.title.c_str());
+        placeNext(layout.lesson);
+        ImGui::Begin(m.title.empty() ? "fxlab" : m.title.c_str(), nullptr, kDocked);
+        followResize(layout.lesson, ImGui::GetWindowSize(), width, height, true);
         drawLessonWindowContents(m);
         if (!fontError_.empty()) ImGui::TextColored(ui_style::kWarning, "%s", fontError_.c_str());
         ImGui::End();
 
-        ImGui::SetNextWindowPos(layout.framePos, ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(layout.frameSize, ImGuiCond_FirstUseEver);
-        if (requestFrameOpen_) ImGui::SetNextWindowCollapsed(!*requestFrameOpen_, ImGuiCond_Always);
-        if (ImGui::Begin("Frame: passes and cost") && ImGui::BeginTabBar("frame tabs")) {
-            const bool selectCost = requestFrameOpen_ && requestCostTab_;
-            if (ImGui::BeginTabItem("Passes")) {
-                if (m.frame) {
-                    drawPassTable(*m.frame);
-                } else {
-                    ImGui::TextDisabled("no frame yet");
-                }
-                ImGui::EndTabItem();
-            }
-            if (ImGui::BeginTabItem("Cost of quality", nullptr,
-                                    selectCost ? ImGuiTabItemFlags_SetSelected : 0)) {
-                cost_.draw(m.measureKnobs);
-                ImGui::EndTabItem();
-            }
-            ImGui::EndTabBar();
-        }
-        requestFrameOpen_.reset();
+        drawFrameWindow(m, layout);
+        followResize(layout.frame, ImGui::GetWindowSize(), width, height, false);
         ImGui::End();
 
         InspectorFrame frame{m.graph, m.frame, m.cameraNear, m.cameraFar, deltaSeconds};
-        inspector_->draw(frame, layout.inspectorPos, layout.inspectorSize);
+        ImVec2 inspectorSize = inspector_->draw(frame, ImVec2(layout.inspector.x, layout.inspector.y),
+                                                ImVec2(layout.inspector.width, layout.inspector.height));
+        // Dragging the open inspector's top edge moves the line between it and the picture.
+        if (inspector_->open() && ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
+            std::abs(inspectorSize.y - layout.inspector.height) >= 1.0f) {
+            shares_.picture = 1.0f - inspectorSize.y / float(height);
+            shares_ = clampShares(shares_);
+        }
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -40,12 +40,12 @@ std::vector<char32_t> codePointsBeyondLatin1(const std::vector<std::string_view>
     return points;
 }
 
-Status OverlayFonts::prepare(const std::vector<std::string_view>& texts) {
+Status OverlayFonts::prepare(const std::vector<std::string_view>& texts, float scale) {
     std::vector<char32_t> wanted = codePointsBeyondLatin1(texts);
     // ImWchar is 16 bits in Debian's build: characters beyond the BMP cannot be loaded.
     wanted.erase(std::remove_if(wanted.begin(), wanted.end(), [](char32_t c) { return c > 0xFFFF; }),
                  wanted.end());
-    if (wanted == merged_) return Status::success();
+    if (wanted == merged_ && scale == scale_) return Status::success();
     const std::filesystem::path file = japaneseFontFile();
     std::error_code ec;
     if (!wanted.empty() && !std::filesystem::is_regular_file(file, ec)) {
@@ -57,7 +57,9 @@ Status OverlayFonts::prepare(const std::vector<std::string_view>& texts) {
     ImGuiIO& io = ImGui::GetIO();
     const bool textureMade = io.Fonts->TexID != ImTextureID{};
     io.Fonts->Clear();
-    io.Fonts->AddFontDefault();
+    ImFontConfig base;
+    base.SizePixels = 13.0f * scale;  // the built-in font's own size, scaled
+    io.Fonts->AddFontDefault(&base);
     ranges_.clear();
     if (!wanted.empty()) {
         ImFontGlyphRangesBuilder builder;
@@ -70,9 +72,9 @@ Status OverlayFonts::prepare(const std::vector<std::string_view>& texts) {
         config.PixelSnapH = true;
         config.GlyphOffset.y = 1.0f;
         config.OversampleH = 1;  // the atlas is sampled at whole pixels; no sub-pixel positions
-        if (!io.Fonts->AddFontFromFileTTF(file.c_str(), kMergedPixels, &config, ranges_.data())) {
+        if (!io.Fonts->AddFontFromFileTTF(file.c_str(), kMergedPixels * scale, &config, ranges_.data())) {
             io.Fonts->Clear();
-            io.Fonts->AddFontDefault();
+            io.Fonts->AddFontDefault(&base);
             ranges_.clear();
             wanted.clear();
             log::error("overlay: Dear ImGui could not read the font ", file.string());
@@ -91,6 +93,7 @@ Status OverlayFonts::prepare(const std::vector<std::string_view>& texts) {
     const ImFont* font = io.Fonts->Fonts.empty() ? nullptr : io.Fonts->Fonts[0];
     for (char32_t c : wanted) (font && font->FindGlyphNoFallback(ImWchar(c)) ? loaded_ : missing_)++;
     merged_ = std::move(wanted);
+    scale_ = scale;
     if (!merged_.empty()) {
         log::info("overlay font: ", loaded_, " glyphs of the lesson text merged from ", file.string(), " (",
                   missing_, " not in the font), atlas ", io.Fonts->TexWidth, "x", io.Fonts->TexHeight);

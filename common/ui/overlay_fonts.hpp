@@ -24,13 +24,16 @@ public:
     // Call between frames (before ImGui::NewFrame) with every string the overlay will show. Rebuilds
     // the atlas when the set of characters changed; an error (the font file is missing) leaves the
     // atlas as it was.
-    Status prepare(const std::vector<std::string_view>& texts);
+    // `scale` is the text scale (1 = Dear ImGui's 13-pixel font): the glyphs are rasterised at that
+    // size, so large text on a projector stays sharp.
+    Status prepare(const std::vector<std::string_view>& texts, float scale = 1.0f);
     // Of the code points asked for last: how many the atlas has and how many the font lacks.
     int loadedGlyphs() const { return loaded_; }
     int missingGlyphs() const { return missing_; }
 
 private:
     std::vector<char32_t> merged_;        // what the atlas was built for
+    float scale_ = 0.0f;                  // and at which text scale
     std::vector<unsigned short> ranges_;  // ImWchar pairs, alive while the atlas uses them
     int loaded_ = 0, missing_ = 0;
 };

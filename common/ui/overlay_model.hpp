@@ -14,6 +14,11 @@
 
 namespace fx {
 
+// One key of the window and what it does (from the runner's key table, app/window_input.cpp).
+struct OverlayKey {
+    std::string key, action;
+};
+
 struct OverlayModel {
     std::string title;
     std::vector<LessonStep> steps;  // title and markdown text of each, from lesson.md (or its translation)
@@ -41,6 +46,13 @@ struct OverlayModel {
     // Runs the quality-knob sweep in the app (as ./fxlab bench does) and returns its points; empty
     // when the lesson has no knobs.
     std::function<SweepResult()> measureKnobs;
+    // Every key of the window, for the Keys tab; empty headless. executable: for "--help".
+    std::vector<OverlayKey> keys;
+    std::string executable;
+    // Shown at the top of the lesson window while they hold: "paused at 2.35 s (space resumes ...)",
+    // "compare: split ...".
+    std::string clock;
+    std::string compare;
 };
 
 }  // namespace fx

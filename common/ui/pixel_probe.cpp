@@ -1,5 +1,6 @@
 #include "ui/pixel_probe.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -43,11 +44,15 @@ std::vector<ProbeSample> probeChain(const TextureChain& chain, const SourceLooku
 std::string exactFloatText(float value) {
     if (std::isnan(value)) return std::signbit(value) ? "-nan" : "nan";
     if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
-    char text[48];
-    for (int digits = 1; digits <= 9; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, double(value));
-        if (std::strtof(text, nullptr) == value) break;
-    }
+    // The shortest digits that read back as the same float, written out in full where a reader takes
+    // them in at a glance (300, 270.5, 0.001), in exponent form only far from 1 (1e-05, 6.5e+09).
+    char text[64];
+    const float magnitude = std::fabs(value);
+    const bool plain = magnitude == 0.0f || (magnitude >= 1e-4f && magnitude < 1e7f);
+    auto [end, ec] = std::to_chars(text, text + sizeof text - 1, value,
+                                   plain ? std::chars_format::fixed : std::chars_format::scientific);
+    if (ec != std::errc()) return "?";
+    *end = '\0';
     return text;
 }
 

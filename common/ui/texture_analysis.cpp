@@ -146,4 +146,32 @@ bool TextureAnalyser::update(const TextureSource& source, const ViewSettings& se
     return true;
 }
 
+std::optional<TexelPosition> nextSpecialTexel(const FloatImage& image, int afterX, int afterY,
+                                              std::int64_t* count) {
+    if (count) *count = 0;
+    if (image.empty()) return std::nullopt;
+    auto special = [&](std::size_t texel) {
+        for (int c = 0; c < image.channels; ++c) {
+            if (!std::isfinite(image.texels[texel * std::size_t(image.channels) + std::size_t(c)]))
+                return true;
+        }
+        return false;
+    };
+    const std::size_t n = image.texelCount();
+    // Where the search starts: just after the given texel (or at the first one).
+    std::size_t start = 0;
+    if (afterX >= 0 && afterY >= 0 && afterX < image.width && afterY < image.height)
+        start = (std::size_t(afterY) * std::size_t(image.width) + std::size_t(afterX) + 1) % n;
+    std::optional<std::size_t> found;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!special(i)) continue;
+        if (count) ++*count;
+        // The first at or after the start wins; before it, only the first one (for the wrap round).
+        if (i >= start && (!found || *found < start)) found = i;
+        if (!found) found = i;
+    }
+    if (!found) return std::nullopt;
+    return TexelPosition{int(*found % std::size_t(image.width)), int(*found / std::size_t(image.width))};
+}
+
 }  // namespace fx

@@ -6,6 +6,7 @@
 // at most (TextureAnalyser), not every frame.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,5 +78,14 @@ private:
     float near_ = 0.0f, far_ = 0.0f;
     TextureAnalysis analysis_;
 };
+
+// The next texel holding a NaN or an infinity in any channel, in reading order (rows bottom-up, as
+// GL stores them) after (afterX, afterY), wrapping round to the start; (-1, -1) starts at the first.
+// `count` receives how many such texels the image has. Nothing when it has none.
+struct TexelPosition {
+    int x = 0, y = 0;
+};
+std::optional<TexelPosition> nextSpecialTexel(const FloatImage& image, int afterX, int afterY,
+                                              std::int64_t* count);
 
 }  // namespace fx

@@ -99,13 +99,7 @@ void TextureDisplay::draw(DisplaySurface& surface, const TextureSource& source, 
 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, surface.framebuffer());
     glViewport(0, 0, surface.width(), surface.height());
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_FRAMEBUFFER_SRGB);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    usePlainDrawState();
     glUseProgram(p);
     glBindVertexArray(vertexArray_.name());
     glBindTextureUnit(0, source.native);

@@ -94,3 +94,34 @@ TEST_F(UiChain, NamedChainListsItsTexturesInIndexOrder) {
     EXPECT_EQ(chain.members[2].size, (Size2D{40, 22}));
     for (const auto& tile : h.overlay.inspector().strip().tiles()) EXPECT_TRUE(tile.drawn) << tile.label;
 }
+
+// At 1280x720 with the inspector open in the presentation layout, all six levels of a bloom-like
+// chain (labels as long as "bloom.down[5]") are on the screen: the tiles shrink, or wrap, to fit.
+TEST_F(UiChain, ASixLevelNamedChainFitsTheInspectorAt1280x720) {
+    UiHarness h(1280, 720);
+    auto build = [](FrameGraph& g) {
+        TextureHandle previous{};
+        for (int i = 0; i < 6; ++i) {
+            auto& p = g.addPass("down " + std::to_string(i), [](PassContext&) {});
+            previous = p.create("bloom.down[" + std::to_string(i) + "]",
+                                {TextureSize::outputFraction(1, 2 << i), TextureFormat::RGBA16F, 1},
+                                TextureUsage::ColorAttachment);
+            p.setState({.clearColor = ClearColor{0.1f * float(i), 0.4f, 0.8f, 1.0f}});
+        }
+        g.addPass("present", [](PassContext&) {})
+            .read(previous)
+            .writeColor(g.output())
+            .setState({.clearColor = ClearColor{0, 0, 0, 1}});
+    };
+    h.overlay.inspector().setOpen(true);
+    h.overlay.inspector().select("bloom.down[0]");
+    for (int i = 0; i < 3; ++i) h.frame(build);
+    const auto& tiles = h.overlay.inspector().strip().tiles();
+    ASSERT_EQ(tiles.size(), 6u);
+    for (const auto& tile : tiles) {
+        EXPECT_TRUE(tile.drawn) << tile.label;
+        EXPECT_GE(tile.screenX, 0.0f) << tile.label;
+        EXPECT_LE(tile.screenX + float(tile.width), 1280.0f) << tile.label << " is off the right edge";
+        EXPECT_LE(tile.screenY + float(tile.height), 720.0f) << tile.label << " is below the window";
+    }
+}

@@ -19,6 +19,7 @@ if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
 fi
 name="$(basename "$exe")"
 rm -rf "$work" && mkdir -p "$work"
+export FXLAB_CONFIG_DIR="$work/config"  # never the teacher's ui.json
 status=0
 for mode in with without; do
   flags=()

@@ -1,7 +1,7 @@
 // Checks the window test's two runs of a lesson (run_window_test.sh): both really ran in a GLFW
 // window with no GL error, and the screenshot with the overlay shows the overlay's dark lesson
-// window at the top left where the screenshot without it shows the scene, while the scene far from
-// the overlay is the same in both.
+// window at the top left where the screenshot without it shows the scene. (That the panels never
+// cover the picture is layout_check's job: with the overlay the picture has a place of its own.)
 //   fx_window_check <run with overlay> <run without> <difference.png>
 #include <cmath>
 #include <cstdio>
@@ -104,14 +104,10 @@ int main(int argc, char** argv) {
 
     // The lesson window starts at (8, 8) and is at least 360 pixels wide: its body is dark.
     const Rect overlay{14, 32, 340, 160};
-    // Far from every overlay window (the inspector starts collapsed at the top right).
-    const Rect scene{with->width - 180, with->height - 110, with->width - 10, with->height - 10};
     double changed = differingShare(*with, *without, overlay);
     double lumaWith = meanLuma(*with, overlay), lumaWithout = meanLuma(*without, overlay);
-    double sceneChanged = differingShare(*with, *without, scene);
     std::printf("overlay region: %.0f%% of pixels differ, mean luma %.0f with the overlay, %.0f without\n",
                 changed * 100.0, lumaWith, lumaWithout);
-    std::printf("scene region: %.1f%% of pixels differ\n", sceneChanged * 100.0);
     if (changed < 0.5) {
         std::cout << "FAIL: the overlay's window is not in the screenshot (only " << changed * 100.0
                   << "% of its region differs from the run without it)\n";
@@ -120,11 +116,6 @@ int main(int argc, char** argv) {
     if (lumaWith > 90.0) {
         std::cout << "FAIL: the overlay's region is bright (mean luma " << lumaWith
                   << "): its dark window is missing\n";
-        ok = false;
-    }
-    if (sceneChanged > 0.1) {
-        std::cout << "FAIL: the scene away from the overlay differs between the runs ("
-                  << sceneChanged * 100.0 << "% of pixels)\n";
         ok = false;
     }
     return ok ? 0 : 1;

@@ -142,7 +142,8 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
         std::size_t start = at + 3;
         std::string flag = help.substr(start, help.find_first_of(" ,", start) - start);
         inHelp.insert(flag);
-        auto o = parseRunOptions({flag});
+        // --all-steps goes with --capture DIR (AllStepsNeedsACaptureFolder).
+        auto o = flag == "--all-steps" ? parseRunOptions({flag, "--capture", "c"}) : parseRunOptions({flag});
         EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
             << flag << ": " << (o.ok() ? "" : o.error());
     }
@@ -153,7 +154,7 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
             "--param",       "--preset", "--capture",      "--capture-float", "--report",    "--graph",
             "--time-step",   "--seed",   "--timing",       "--inspect",       "--overlay",   "--no-overlay",
             "--bench",       "--knob",   "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
-            "--list-params", "--help"}));
+            "--list-params", "--help",   "--press",        "--all-steps",     "--resize"}));
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
@@ -237,4 +238,48 @@ TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto missing = parseRunOptions({"--graph", ""});
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("--graph: needs a path"), std::string::npos) << missing.error();
+}
+
+TEST(RunOptions, PressNamesAWindowKeyAndAFrame) {
+    auto o = parseRunOptions({"--press", "space@3", "--press", "F2"});
+    ASSERT_TRUE(o) << o.error();
+    ASSERT_EQ(o->presses.size(), 2u);
+    EXPECT_EQ(o->presses[0].frame, 3);
+    EXPECT_TRUE(o->presses[0].press.pause);
+    EXPECT_EQ(o->presses[1].frame, 0);
+    EXPECT_TRUE(o->presses[1].press.resetLayout);
+    auto typo = parseRunOptions({"--press", "spcae"});
+    ASSERT_FALSE(typo);
+    EXPECT_NE(typo.error().find("--press: no key named \"spcae\" (did you mean space?)"), std::string::npos)
+        << typo.error();
+    EXPECT_FALSE(parseRunOptions({"--press", "F2@x"}));
+}
+
+TEST(RunOptions, ResizeTakesASizeAndAFrame) {
+    auto o = parseRunOptions({"--resize", "400x300@2", "--resize", "1280x720@4"});
+    ASSERT_TRUE(o) << o.error();
+    ASSERT_EQ(o->resizes.size(), 2u);
+    EXPECT_EQ(o->resizes[0].width, 400);
+    EXPECT_EQ(o->resizes[1].frame, 4);
+    EXPECT_FALSE(parseRunOptions({"--resize", "400x300"}));
+}
+
+TEST(RunOptions, AllStepsNeedsACaptureFolder) {
+    auto alone = parseRunOptions({"--all-steps"});
+    ASSERT_FALSE(alone);
+    EXPECT_EQ(alone.error(), "--all-steps: needs --capture DIR (each step's captures go into DIR/step-K/)");
+    EXPECT_TRUE(parseRunOptions({"--all-steps", "--capture", "slides"})->allSteps);
+    EXPECT_FALSE(parseRunOptions({"--all-steps", "--capture", "slides", "--step", "2"}));
+}
+
+TEST(RunOptions, HelpListsEveryKeyOfTheWindow) {
+    const std::string help = fx::runOptionsHelp("fxlab-05-radial-blur");
+    for (const fx::WindowKeyHelp& k : fx::windowKeysHelp()) {
+        EXPECT_NE(help.find(k.action), std::string::npos) << k.key;
+        EXPECT_NE(help.find("[" + k.token + "]"), std::string::npos) << k.key;
+        // Every key a press can name.
+        EXPECT_TRUE(fx::keyPressNamed(k.token)) << k.token;
+    }
+    for (const char* key : {"space", "Page Down", "F3", "F4", "+", "F2", "F12"})
+        EXPECT_NE(help.find(std::string("\n  ") + key), std::string::npos) << key;
 }

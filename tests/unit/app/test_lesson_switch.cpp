@@ -1,0 +1,47 @@
+// Page Down / Page Up start the neighbouring lesson's executable with the flags that mean the same to
+// every lesson; --all-steps runs one step per child with its own capture folder.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "app/lesson_switch.hpp"
+
+namespace fs = std::filesystem;
+using Args = std::vector<std::string>;
+
+TEST(LessonSwitch, TheNeighboursAreTheLessonExecutablesInNumberOrder) {
+    const fs::path dir = fs::temp_directory_path() / "fxlab-lesson-switch-test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const char* name : {"fxlab-02-b", "fxlab-01-a", "fxlab-10-c", "fxlab-notes.txt", "fxlab-03-d.log"}) {
+        std::ofstream(dir / name) << "x";
+        fs::permissions(dir / name, fs::perms::owner_all);
+    }
+    fs::permissions(dir / "fxlab-03-d.log", fs::perms::owner_read);  // not executable
+    auto found = fx::lessonExecutables(dir);
+    ASSERT_EQ(found.size(), 3u);
+    EXPECT_EQ(found[0].filename(), "fxlab-01-a");
+    EXPECT_EQ(found[2].filename(), "fxlab-10-c");
+    EXPECT_EQ(fx::neighbourIn(found, "fxlab-01-a", 1)->filename(), "fxlab-02-b");
+    EXPECT_EQ(fx::neighbourIn(found, "fxlab-02-b", -1)->filename(), "fxlab-01-a");
+    EXPECT_FALSE(fx::neighbourIn(found, "fxlab-10-c", 1));
+    EXPECT_FALSE(fx::neighbourIn(found, "fxlab-01-a", -1));
+    EXPECT_FALSE(fx::neighbourIn(found, "fxlab-99-unknown", 1));
+    fs::remove_all(dir);
+}
+
+TEST(LessonSwitch, TheNextLessonKeepsTheCommonFlagsAndTheWindowSize) {
+    Args args = {"--step",     "3",        "--scene", "s.json",       "--param",   "a=1",           "--lang",
+                 "ja",         "--size",   "800x600", "--no-overlay", "--inspect", "bloom.down[0]", "--press",
+                 "pagedown@2", "--frames", "9"};
+    EXPECT_EQ(fx::neighbourArguments(args, {1024, 768}),
+              (Args{"--lang", "ja", "--no-overlay", "--frames", "9", "--size", "1024x768"}));
+}
+
+TEST(LessonSwitch, EachStepOfAllStepsHasItsOwnFolder) {
+    Args args = {"--all-steps", "--capture", "slides", "--size", "640x360", "--report", "r.json"};
+    EXPECT_EQ(fx::stepCaptureArguments(args, "slides", 2),
+              (Args{"--headless", "--size", "640x360", "--step", "2", "--capture", "slides/step-2",
+                    "--report", "slides/step-2/report.json"}));
+}

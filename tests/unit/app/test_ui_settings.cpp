@@ -1,0 +1,54 @@
+// The settings a teacher finds again at the next start: text scale, window size, layout shares.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/ui_settings.hpp"
+#include "base/file_io.hpp"
+
+namespace fs = std::filesystem;
+
+TEST(UiSettings, RoundTripThroughTheFile) {
+    const fs::path dir = fs::temp_directory_path() / "fxlab-ui-settings-test";
+    fs::remove_all(dir);
+    fx::UiSettings s;
+    s.textScale = 1.75f;
+    s.windowSize = fx::Size2D{1920, 1080};
+    s.shares = {0.35f, 0.5f, 0.6f};
+    ASSERT_TRUE(fx::saveUiSettings(dir / "ui.json", s));
+    EXPECT_EQ(fx::loadUiSettings(dir / "ui.json"), s);
+    fs::remove_all(dir);
+}
+
+TEST(UiSettings, AMissingOrDamagedFileGivesTheDefaults) {
+    EXPECT_EQ(fx::loadUiSettings("/nonexistent/fxlab/ui.json"), fx::UiSettings{});
+    auto bad = fx::parseUiSettings(R"({"textScale": "big"})", "ui.json");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error(), "ui.json: textScale: expected a number, got \"big\"");
+    auto window = fx::parseUiSettings(R"({"window": [1280]})", "ui.json");
+    ASSERT_FALSE(window);
+    EXPECT_NE(window.error().find("ui.json: window: expected [width, height]"), std::string::npos);
+    EXPECT_FALSE(fx::parseUiSettings("[", "ui.json"));
+}
+
+TEST(UiSettings, TextScaleStaysOnItsSteps) {
+    EXPECT_EQ(fx::clampTextScale(1.3f), 1.25f);
+    EXPECT_EQ(fx::clampTextScale(100.0f), fx::kMaxTextScale);
+    EXPECT_EQ(fx::clampTextScale(0.0f), fx::kMinTextScale);
+    EXPECT_EQ(fx::clampTextScale(std::numeric_limits<float>::infinity()), 1.0f);
+    // A window of a few pixels is not restored.
+    auto tiny = fx::parseUiSettings(R"({"window": [1, 1], "textScale": 9})", "ui.json");
+    ASSERT_TRUE(tiny);
+    EXPECT_FALSE(tiny->windowSize);
+    EXPECT_EQ(tiny->textScale, fx::kMaxTextScale);
+}
+
+TEST(UiSettings, TheFileIsUnderTheConfigFolder) {
+    setenv("FXLAB_CONFIG_DIR", "/tmp/a", 1);
+    EXPECT_EQ(fx::uiSettingsPath(), fs::path("/tmp/a/ui.json"));
+    unsetenv("FXLAB_CONFIG_DIR");
+    setenv("XDG_CONFIG_HOME", "/tmp/b", 1);
+    EXPECT_EQ(fx::uiSettingsPath(), fs::path("/tmp/b/fxlab/ui.json"));
+    unsetenv("XDG_CONFIG_HOME");
+}
