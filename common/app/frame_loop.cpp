@@ -83,12 +83,9 @@ void FrameLoop::run() {
         }
         request.readTextures = lastFrame;
         request.readFinal = lastFrame || screenshot;
-        // A sweep asked for by the cost panel runs here, between frames, never inside one.
-        if (drawOverlay && overlay_->costPanel().measurePending()) {
-            overlay_->costPanel().runPending([&] {
-                return sweepKnobs(*s_.lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
-            });
-        }
+        // A sweep asked for by the cost panel measures one setting here, between frames, never inside one.
+        if (drawOverlay && overlay_->costPanel().measurePending())
+            overlay_->costPanel().runPending(knobSweepStarter());
         RenderedFrame rendered = renderer_.render(*s_.lesson, frame, request,
                                                   [&](const FrameGraph& graph, const FrameReport& report) {
                                                       if (drawOverlay)
@@ -111,6 +108,13 @@ void FrameLoop::run() {
     record_.lastFrame.previousFrame = &record_.lastReport;
 }
 
+std::function<std::unique_ptr<SweepRun>()> FrameLoop::knobSweepStarter() {
+    return [this]() -> std::unique_ptr<SweepRun> {
+        return std::make_unique<KnobSweep>(*s_.lesson, s_.params, renderer_, context_, SweepOptions{}, s_.exe,
+                                           s_.step);
+    };
+}
+
 void FrameLoop::takeKeys(Clock::time_point now) {
     int stepCount = int(s_.lesson->steps().size());
     KeyPresses keys = input_.takeKeyPresses();
@@ -118,6 +122,11 @@ void FrameLoop::takeKeys(Clock::time_point now) {
     if (keys.next && keysForUs) s_.step = std::min(s_.step + 1, stepCount - 1);
     if (keys.previous && keysForUs) s_.step = std::max(s_.step - 1, 0);
     if (keys.toggleOverlay) overlayVisible_ = !overlayVisible_;
+    if (overlay_) {
+        // Esc stops the cost panel's sweep rather than the app while one runs.
+        if (keys.cancel) overlay_->costPanel().cancel();
+        input_.setEscapeCancels(overlay_->costPanel().measurePending());
+    }
     screenshotAsked_ = keys.screenshot;
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
         lastReloadCheck_ = now;
@@ -187,9 +196,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
         Status loaded = text ? s_.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
         s_.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
     };
-    model.measureKnobs = [&] {
-        return sweepKnobs(lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
-    };
+    model.measureKnobs = knobSweepStarter();
     overlay_->draw(model, frame.size.width, frame.size.height, delta);
 }
 

@@ -2,6 +2,8 @@
 // The frames of a run: input, reload, the lesson's update and frame, the overlay on top, screenshots,
 // and what the last frame leaves for the captures and the report.
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,6 +38,8 @@ public:
     RunRecord& record() { return record_; }
 
 private:
+    // Starts the cost panel's sweep of the lesson's knobs (5 measured frames per setting, as the bench).
+    std::function<std::unique_ptr<SweepRun>()> knobSweepStarter();
     using Clock = std::chrono::steady_clock;
 
     void takeKeys(Clock::time_point now);

@@ -25,6 +25,7 @@ constexpr WindowKey kWindowKeys[] = {
 // GLFW callbacks are plain functions: the presses of the one lesson window go here.
 KeyPresses* pending = nullptr;
 KeyPresses presses;
+bool escapeCancels = false;
 
 void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (action != GLFW_PRESS || !pending) return;
@@ -32,6 +33,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
         if (k.key != key) continue;
         if (k.press)
             pending->*k.press = true;
+        else if (escapeCancels)
+            pending->cancel = true;
         else
             glfwSetWindowShouldClose(window, GLFW_TRUE);
     }
@@ -60,6 +63,10 @@ KeyPresses WindowInput::takeKeyPresses() {
     KeyPresses taken = presses;
     presses = {};
     return window_ ? taken : KeyPresses{};
+}
+
+void WindowInput::setEscapeCancels(bool on) {
+    escapeCancels = on;
 }
 
 Pointer WindowInput::pointer(Size2D framebuffer, bool overUi) const {

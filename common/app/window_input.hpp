@@ -13,6 +13,7 @@ namespace fx {
 
 struct KeyPresses {
     bool next = false, previous = false, toggleOverlay = false, reload = false, screenshot = false;
+    bool cancel = false;  // Esc while something long is under way (setEscapeCancels)
 };
 
 // The keys of a lesson window and what each does, for --help. The same table decides what a press
@@ -30,8 +31,10 @@ public:
     WindowInput(const WindowInput&) = delete;
     WindowInput& operator=(const WindowInput&) = delete;
 
-    // The presses since the last call (Esc closes the window directly).
+    // The presses since the last call (Esc closes the window directly, unless it cancels).
     KeyPresses takeKeyPresses();
+    // While on, Esc cancels what is under way (the cost panel's sweep) instead of quitting.
+    void setEscapeCancels(bool on);
     // The mouse in framebuffer pixels, bottom-left origin.
     Pointer pointer(Size2D framebuffer, bool overUi) const;
 
