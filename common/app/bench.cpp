@@ -233,8 +233,8 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
             values.push_back(knob->knob->reference);
         }
         for (double value : values)
-            s.rows.push_back(
-                {knob, value, knob->valueText(value), !separateReference && value == knob->knob->reference, false});
+            s.rows.push_back({knob, value, knob->valueText(value),
+                              !separateReference && value == knob->knob->reference, false});
         if (separateReference) s.rows.push_back({knob, knob->knob->reference, referenceName, true, true});
     }
     if (s.rows.empty()) s.referenceDone = true;  // no knobs: nothing to compare with either
@@ -256,8 +256,9 @@ SweepProgress KnobSweep::progress() const {
     p.done = (s.referenceDone ? 1 : 0) + int(s.nextRow);
     if (s.rows.empty()) p.total = p.done = 0;
     if (!s.referenceDone) {
-        p.next = s.lesson.benchReferenceName().empty() ? "the reference image"
-                                                       : "the reference image (" + s.lesson.benchReferenceName() + ")";
+        p.next = s.lesson.benchReferenceName().empty()
+                     ? "the reference image"
+                     : "the reference image (" + s.lesson.benchReferenceName() + ")";
     } else if (s.nextRow < s.rows.size()) {
         const Row& r = s.rows[s.nextRow];
         p.next = cat(r.knob->name, " = ", r.text);
@@ -273,7 +274,8 @@ void KnobSweep::next() {
     if (!s.referenceDone) {
         // A separate reference algorithm is rendered with every knob at its reference value too.
         s.lesson.setBenchReference(!s.lesson.benchReferenceName().empty());
-        s.reference = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames, s.effect);
+        s.reference = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
+                              s.effect);
         s.lesson.setBenchReference(false);
         s.referenceDone = true;
     } else {
@@ -283,7 +285,8 @@ void KnobSweep::next() {
         const Row& row = s.rows[s.nextRow++];
         if (!row.referenceAlgorithm) row.knob->set(row.value);
         s.lesson.setBenchReference(row.referenceAlgorithm);
-        Measured m = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames, s.effect);
+        Measured m = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
+                             s.effect);
         s.lesson.setBenchReference(false);
         SweepPoint point;
         point.knob = row.knob->name;
@@ -350,8 +353,8 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         csv << r.lesson << "," << r.width << "," << r.height << "," << r.timingMethod << "," << p.knob
             << ",\"" << p.value << "\"," << p.reference << "," << p.current << "," << number(p.medianMs)
             << "," << number(p.copyMs) << "," << number(p.copyMultiple) << "," << number(p.minMultiple) << ","
-            << number(p.maxMultiple) << "," << r.frames << "," << number(p.rmse) << ","
-            << number(p.psnr) << "," << number(p.maxAbs) << ",";
+            << number(p.maxMultiple) << "," << r.frames << "," << number(p.rmse) << "," << number(p.psnr)
+            << "," << number(p.maxAbs) << ",";
         if (p.hasEffectError) {
             csv << r.effectTexture << "," << number(p.effectRmse) << "," << number(p.effectPsnr) << ","
                 << number(p.effectMaxAbs);
@@ -423,8 +426,8 @@ std::string describeSweep(const SweepResult& r) {
     for (auto& p : r.points) {
         out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
             << std::setw(12) << shortNumber(p.medianMs) << std::setw(10) << shortNumber(p.copyMultiple)
-            << std::setw(16) << cat(shortNumber(p.minMultiple), "-", shortNumber(p.maxMultiple)) << std::setw(12)
-            << number(p.rmse) << number(p.psnr) << "\n";
+            << std::setw(16) << cat(shortNumber(p.minMultiple), "-", shortNumber(p.maxMultiple))
+            << std::setw(12) << number(p.rmse) << number(p.psnr) << "\n";
     }
     out << "(* = reference)\n";
     // Where the time goes, for the setting in use (the first row when none is).

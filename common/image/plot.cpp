@@ -279,7 +279,8 @@ private:
             if (text.empty()) continue;
             const TextSize size = measureText(text, kTextScale);
             labelled.push_back(i);
-            requests.push_back({pixels_[i][0], pixels_[i][1], markerRadius(point(i)), size.width, size.height});
+            requests.push_back(
+                {pixels_[i][0], pixels_[i][1], markerRadius(point(i)), size.width, size.height});
         }
         const Box plotArea{layout_.left + 2.0, layout_.top + 2.0, layout_.right - 2.0, layout_.bottom - 2.0};
         const auto boxes =

@@ -62,8 +62,8 @@ std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points) {
     };
     std::vector<std::size_t> front;
     for (std::size_t i : order) {
-        const bool beaten =
-            std::any_of(order.begin(), order.end(), [&](std::size_t j) { return j != i && beats(points[j], points[i]); });
+        const bool beaten = std::any_of(order.begin(), order.end(),
+                                        [&](std::size_t j) { return j != i && beats(points[j], points[i]); });
         const bool duplicate = std::any_of(front.begin(), front.end(), [&](std::size_t j) {
             return points[j].x == points[i].x && points[j].y == points[i].y;
         });
@@ -105,7 +105,8 @@ std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>&
             for (const PlotBox& c : candidates) {
                 if (c.x0 < area.x0 || c.x1 > area.x1 || c.y0 < area.y0 || c.y1 > area.y1) continue;
                 const PlotBox padded = c.grownBy(1.0);
-                if (std::any_of(taken.begin(), taken.end(), [&](const PlotBox& t) { return padded.overlap(t) > 0; }))
+                if (std::any_of(taken.begin(), taken.end(),
+                                [&](const PlotBox& t) { return padded.overlap(t) > 0; }))
                     continue;
                 const double k = cost ? cost(c) : 0.0;
                 if (!best || k < bestCost) best = c, bestCost = k;

@@ -14,11 +14,11 @@ struct PassCost {
 };
 
 struct SweepPoint {
-    std::string knob;                       // parameter name
-    std::string value;                      // the setting, as --param takes it
-    bool reference = false;                 // the setting the error is measured against
-    bool current = false;                   // the setting in use when the sweep started
-    double medianMs = 0;                    // whole frame (passes), median over the measured frames
+    std::string knob;        // parameter name
+    std::string value;       // the setting, as --param takes it
+    bool reference = false;  // the setting the error is measured against
+    bool current = false;    // the setting in use when the sweep started
+    double medianMs = 0;     // whole frame (passes), median over the measured frames
     // The frame in full-screen copies: each measured frame is divided by a copy timed just before it
     // (copy, setting, copy, setting...), so a machine that slows down slows both; the median of those
     // ratios (minMultiple and maxMultiple below give their spread).
@@ -29,7 +29,7 @@ struct SweepPoint {
     double effectRmse = 0, effectPsnr = 0, effectMaxAbs = 0;
     // The smallest and largest of the per-frame ratios: the spread a reader should allow for.
     double minMultiple = 0, maxMultiple = 0;
-    double copyMs = 0;             // the median of the copies interleaved with this setting
+    double copyMs = 0;               // the median of the copies interleaved with this setting
     std::vector<PassCost> passes{};  // every timed pass, in execution order
 };
 

@@ -41,7 +41,8 @@ std::vector<std::string> sweptKnobs(const SweepResult& result) {
 ScatterPlot sweepPlot(const SweepResult& result, const std::string& knob) {
     ScatterPlot plot;
     const bool byCopy = result.copyMs > 0;
-    plot.xLabel = byCopy ? cat("full-screen copies (median, min-max of ", result.frames, ")") : "frame time (ms)";
+    plot.xLabel =
+        byCopy ? cat("full-screen copies (median, min-max of ", result.frames, ")") : "frame time (ms)";
     plot.yLabel = "RMSE vs reference";
     for (const SweepPoint& p : result.points) {
         if (p.knob != knob) continue;
@@ -237,9 +238,10 @@ void CostPanel::draw(const Measure& measure) {
         return;
     }
     ImGui::SameLine();
-    ImGui::TextWrapped("%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a "
-                       "copy timed just before it)",
-                       r.width, r.height, r.timingMethod.c_str(), r.copyMs);
+    ImGui::TextWrapped(
+        "%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a "
+        "copy timed just before it)",
+        r.width, r.height, r.timingMethod.c_str(), r.copyMs);
     auto knobs = sweptKnobs(r);
     if (knobs.size() > 1) {
         ImGui::SetNextItemWidth(180);
