@@ -15,6 +15,8 @@ float normalisedCompositeScale(float intensity, int levels) {
 BloomComposite BloomComposite::create() {
     BloomComposite c;
     c.pass_ = FullscreenPass("effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines());
+    c.presented_ = FullscreenPass("effects/bloom/composite_present.frag",
+                                  "bloom composite + output transform", bloomShaderDefines());
     c.sampler_ = BloomSampler::create();
     return c;
 }
@@ -30,6 +32,7 @@ DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, Tex
         glProgramUniform1i(p, bloom_uniform::filters, filters);
         glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
         glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
+        glProgramUniform1i(p, bloom_uniform::wide, 0);
         sampler->bind();
         pass->draw({ctx.native(scene), ctx.native(glow)});
         BloomSampler::unbind();
@@ -39,6 +42,29 @@ DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, Tex
     composite.read(scene).read(glow).setState(FullscreenPass::state());
     if (!pass_.usable()) composite.disable("the bloom composite program did not build: " + pass_.error());
     return {composite, result};
+}
+
+Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
+                                       const BloomCompositeSettings& settings, ToneCurve curve,
+                                       float exposure) const {
+    const FullscreenPass* pass = &presented_;
+    const BloomSampler* sampler = &sampler_;
+    int filters = settings.filters ? static_cast<int>(*settings.filters) : 2;
+    Pass& declared = graph.addPass("bloom composite + output transform", [=](PassContext& ctx) {
+        GLuint p = pass->program();
+        glProgramUniform1i(p, bloom_uniform::filters, filters);
+        glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
+        glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
+        glProgramUniform1i(p, bloom_uniform::curve, static_cast<int>(curve));
+        glProgramUniform1f(p, bloom_uniform::exposure, exposure);
+        sampler->bind();
+        pass->draw({ctx.native(scene), ctx.native(glow)});
+        BloomSampler::unbind();
+    });
+    declared.read(scene).read(glow).writeColor(graph.output()).setState(FullscreenPass::state());
+    if (!presented_.usable())
+        declared.disable("the fused bloom composite program did not build: " + presented_.error());
+    return declared;
 }
 
 }  // namespace fx
