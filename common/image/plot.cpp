@@ -285,10 +285,49 @@ private:
         const Box plotArea{layout_.left + 2.0, layout_.top + 2.0, layout_.right - 2.0, layout_.bottom - 2.0};
         const auto boxes =
             placeLabels(requests, obstacles_, plotArea, [&](const Box& box) { return crowding(box); });
+        // Points left without a label are named in one line, left to right, where it hides nothing.
+        std::vector<std::size_t> unlabelled;
+        for (std::size_t k = 0; k < labelled.size(); ++k)
+            if (!boxes[k]) unlabelled.push_back(labelled[k]);
+        std::sort(unlabelled.begin(), unlabelled.end(),
+                  [&](std::size_t a, std::size_t b) { return pixels_[a][0] < pixels_[b][0]; });
+        if (!unlabelled.empty()) {
+            std::string line = "left to right:";
+            for (std::size_t n = 0; n < unlabelled.size(); ++n)
+                line += (n ? ", " : " ") + displayLabel(point(unlabelled[n]));
+            const TextSize size = measureText(line, kTextScale);
+            std::vector<Box> taken = obstacles_;
+            for (const auto& b : boxes)
+                if (b) taken.push_back(*b);
+            // Rows down the left and right of the plot area: the free one that crosses the fewest lines.
+            const double inset = 8.0;
+            std::optional<Box> best;
+            double bestCost = 0.0;
+            for (double y = layout_.bottom - inset - size.height; y >= layout_.top + inset;
+                 y -= size.height / 2.0) {
+                for (double x : {layout_.left + inset, layout_.right - inset - size.width}) {
+                    const Box spot{x, y, x + size.width, y + size.height};
+                    if (spot.x0 < layout_.left || std::any_of(taken.begin(), taken.end(), [&](const Box& t) {
+                            return spot.grownBy(2.0).overlap(t) > 0;
+                        }))
+                        continue;
+                    const double cost = crowding(spot);
+                    if (!best || cost < bestCost) best = spot, bestCost = cost;
+                }
+            }
+            if (best) {
+                drawText(canvas_, best->x0, best->y0 + 1.0, line, kTextScale, kNote);
+                labelBoxes_.push_back(*best);
+            }
+        }
         for (std::size_t k = 0; k < labelled.size(); ++k) {
             if (!boxes[k]) continue;
             const std::size_t i = labelled[k];
-            drawText(canvas_, boxes[k]->x0, boxes[k]->y0 + 1.0, displayLabel(point(i)), kTextScale,
+            // A label that had to move away from its marker gets a thin line back to it.
+            const Box& b = *boxes[k];
+            if (auto leader = labelLeader(requests[k], b))
+                canvas_.drawLine(leader->x0, leader->y0, leader->x1, leader->y1, 1.0, kNote);
+            drawText(canvas_, b.x0, b.y0 + 1.0, displayLabel(point(i)), kTextScale,
                      point(i).isCurrent ? kCurrent : kInk);
             labelBoxes_.push_back(*boxes[k]);
         }

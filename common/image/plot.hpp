@@ -102,9 +102,13 @@ struct LabelRequest {
 };
 
 // Places labels in order (put the important ones first): each takes, of eight spots around its
-// marker and the same eight farther out, one inside `area` that overlaps no marker box and no label
-// placed before it, the one with the lowest `cost` (optional: what else it would hide). A label with
-// no such spot gets none. The bench's picture and the overlay's cost panel both place labels so.
+// marker, then the same eight farther out (three more rings), one inside `area` that overlaps no marker box
+// and no label placed before it, the one with the lowest `cost` (optional: what else it would hide). A label
+// with no such spot gets none. The bench's picture and the overlay's cost panel both place labels so.
+// The leader line from a marker to its label, for a label placed away from its marker (nothing when
+// it sits next to it): x0, y0 just outside the marker, x1, y1 on the label's nearest edge.
+std::optional<PlotBox> labelLeader(const LabelRequest& label, const PlotBox& box);
+
 std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>& labels,
                                                 const std::vector<PlotBox>& markers, const PlotBox& area,
                                                 const std::function<double(const PlotBox&)>& cost = {});

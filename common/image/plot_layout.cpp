@@ -81,6 +81,15 @@ double PlotBox::overlap(const PlotBox& o) const {
     return w > 0 && h > 0 ? w * h : 0.0;
 }
 
+std::optional<PlotBox> labelLeader(const LabelRequest& l, const PlotBox& box) {
+    const double nx = std::clamp(l.x, box.x0, box.x1), ny = std::clamp(l.y, box.y0, box.y1);
+    const double d = std::hypot(nx - l.x, ny - l.y);
+    if (d <= l.radius + 12.0) return std::nullopt;
+    // From just outside the marker (its own box is no obstacle) to the label's nearest edge.
+    const double start = (l.radius + 2.0) / d;
+    return PlotBox{l.x + (nx - l.x) * start, l.y + (ny - l.y) * start, nx, ny};
+}
+
 std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>& labels,
                                                 const std::vector<PlotBox>& markers, const PlotBox& area,
                                                 const std::function<double(const PlotBox&)>& cost) {
@@ -89,7 +98,7 @@ std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>&
     for (const LabelRequest& l : labels) {
         std::optional<PlotBox> best;
         double bestCost = 0.0;
-        for (double reach : {1.0, 2.2}) {
+        for (double reach : {1.0, 2.2, 3.4, 4.6}) {
             const double px = l.x, py = l.y, r = (l.radius + 4.0) * reach, w = l.width, h = l.height;
             const double d = r * 0.6;
             const PlotBox candidates[] = {
@@ -108,6 +117,18 @@ std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>&
                 if (std::any_of(taken.begin(), taken.end(),
                                 [&](const PlotBox& t) { return padded.overlap(t) > 0; }))
                     continue;
+                // Away from its marker a label gets a leader line: it must cross no marker and no label.
+                if (auto leader = labelLeader(l, c)) {
+                    bool crosses = false;
+                    for (int i = 0; i <= 16 && !crosses; ++i) {
+                        const double x = leader->x0 + (leader->x1 - leader->x0) * i / 16.0;
+                        const double y = leader->y0 + (leader->y1 - leader->y0) * i / 16.0;
+                        const PlotBox dot{x - 0.5, y - 0.5, x + 0.5, y + 0.5};
+                        crosses = std::any_of(taken.begin(), taken.end(),
+                                              [&](const PlotBox& t) { return dot.overlap(t) > 0; });
+                    }
+                    if (crosses) continue;
+                }
                 const double k = cost ? cost(c) : 0.0;
                 if (!best || k < bestCost) best = c, bestCost = k;
             }

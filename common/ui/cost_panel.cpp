@@ -140,6 +140,10 @@ void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
     for (std::size_t k = 0; k < order.size(); ++k) {
         if (!placed[k]) continue;
         const PlotPoint& p = *labelled[order[k]];
+        if (auto leader = labelLeader(ordered[k], *placed[k]))
+            draw->AddLine(ImVec2(float(leader->x0), float(leader->y0)),
+                          ImVec2(float(leader->x1), float(leader->y1)), kGrid + IM_COL32(60, 60, 60, 0),
+                          1.0f);
         draw->AddText(ImVec2(float(placed[k]->x0), float(placed[k]->y0)), p.isCurrent ? kCurrent : kInk,
                       p.label.c_str());
     }
