@@ -81,11 +81,12 @@ struct PlotLayout {
 
 PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height);
 
-// Indices of the drawable points on the Pareto front, ordered by increasing x. A point is on the
-// front when no other point beats it: has a lower y at a cost not clearly higher (its spread starts
-// at or below the end of this one's), or the same y at a lower x. Two neighbours on the front
-// therefore always differ in cost by more than their spreads; without spreads this is the usual
-// front. Of several identical points only one is listed.
+// Indices of the drawable points on the Pareto front, ordered by increasing x. Built from the most
+// accurate point (lowest y; the cheaper of equals) down: a point joins when its whole x spread is
+// below the spread of the last point that joined, i.e. when it is clearly cheaper for its larger
+// error. Neighbours on the front therefore always differ in cost by more than their spreads, and a
+// point whose cost cannot be told from a more accurate one's is off it. Without spreads this is the
+// usual front. Of several identical points only one is listed.
 std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points);
 
 // A box in pixels, y growing downwards.

@@ -51,24 +51,17 @@ std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points) {
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < points.size(); ++i)
         if (std::isfinite(points[i].x) && std::isfinite(points[i].y)) order.push_back(i);
+    // The most accurate first (the cheaper of equals); then each point joins when it is clearly
+    // cheaper than the last one that joined: its whole spread below that one's.
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        if (points[a].x != points[b].x) return points[a].x < points[b].x;
-        return points[a].y < points[b].y;
+        if (points[a].y != points[b].y) return points[a].y < points[b].y;
+        return points[a].x < points[b].x;
     });
-    // b beats a: lower error at a cost not clearly higher, or the same error for less.
-    const auto beats = [&](const PlotPoint& b, const PlotPoint& a) {
-        if (b.y < a.y) return b.lowX() <= a.highX();
-        return b.y == a.y && b.x < a.x;
-    };
     std::vector<std::size_t> front;
     for (std::size_t i : order) {
-        const bool beaten = std::any_of(order.begin(), order.end(),
-                                        [&](std::size_t j) { return j != i && beats(points[j], points[i]); });
-        const bool duplicate = std::any_of(front.begin(), front.end(), [&](std::size_t j) {
-            return points[j].x == points[i].x && points[j].y == points[i].y;
-        });
-        if (!beaten && !duplicate) front.push_back(i);
+        if (front.empty() || points[i].highX() < points[front.back()].lowX()) front.push_back(i);
     }
+    std::reverse(front.begin(), front.end());  // by increasing x
     return front;
 }
 

@@ -82,6 +82,19 @@ TEST(Plot, ParetoFrontJoinsOnlyPointsWhoseSpreadsDoNotOverlap) {
     EXPECT_EQ(paretoFront({a, b, c}), (std::vector<std::size_t>{0, 1, 2}));
 }
 
+// Lesson 01's mesh detail as measured: each cheaper setting's spread overlaps the next one's, so
+// the front steps from the most accurate down only to settings clearly cheaper than the last.
+TEST(Plot, ParetoFrontStepsOnlyToClearlyCheaperSettings) {
+    std::vector<PlotPoint> p = {{"16", 1.51, 0.0196},
+                                {"32", 1.94, 0.0098},
+                                {"64", 2.4, 0.0046},
+                                {"128", 5.11, 0.0020},
+                                {"256", 17.3, 0.0, true}};
+    const double spread[][2] = {{1.04, 1.7}, {1.12, 2.32}, {2.25, 4.59}, {3.33, 7.11}, {14.0, 21.5}};
+    for (std::size_t i = 0; i < p.size(); ++i) p[i].xLow = spread[i][0], p[i].xHigh = spread[i][1];
+    EXPECT_EQ(paretoFront(p), (std::vector<std::size_t>{1, 3, 4}));
+}
+
 // The bloom bench: settings near 10 copies and a reference near 550 on one axis.
 TEST(Plot, WideXRangeGetsALogAxisAndSettingsStayApart) {
     EXPECT_TRUE(wantsLogAxis(10.0, 550.0));
