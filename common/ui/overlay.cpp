@@ -134,7 +134,11 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
             const bool selectCost = requestFrameOpen_ && requestCostTab_;
             if (ImGui::BeginTabItem("Passes")) {
                 if (m.frame) {
-                    drawPassTable(*m.frame);
+                    // In copies too, once the cost panel has measured a copy at this size.
+                    const auto& sweep = cost_.result();
+                    const bool sameSize = sweep && sweep->width == m.frame->outputSize.width &&
+                                          sweep->height == m.frame->outputSize.height;
+                    drawPassTable(*m.frame, sameSize ? sweep->copyMs : 0.0);
                 } else {
                     ImGui::TextDisabled("no frame yet");
                 }
