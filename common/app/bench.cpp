@@ -448,8 +448,7 @@ std::string describeSweep(const SweepResult& r) {
 
 std::string noKnobsMessage(const std::string& lessonName) {
     return cat(lessonName,
-               " has no quality knobs: nothing to sweep (lessons 01, 02, 05 and 06 have some; "
-               "./fxlab bench lists each lesson's in docs/bench.md)");
+               " has no quality knobs: nothing to sweep (docs/bench.md lists the lessons that have some)");
 }
 
 }  // namespace fx
