@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -58,31 +59,54 @@ private:
 };
 
 struct Measured {
-    double medianMs = 0;
+    double medianMs = 0, copyMs = 0;
+    double multiple = 0, minMultiple = 0, maxMultiple = 0;  // frame / the copy just before it
+    std::vector<PassCost> passes;
     FloatImage image;
     std::vector<CapturedTexture> effect;
 };
 
-Measured measure(Lesson& lesson, FrameRenderer& renderer, const FrameInfo& frame, int frames,
-                 const std::string& pass, const std::vector<std::string>& effectTextures) {
+// The time a frame's report gives one pass (0 when it has none), or the whole frame.
+double frameMs(const RenderedFrame& rendered, const std::string& pass) {
+    if (pass.empty()) return rendered.passMs;
+    const PassRecord* p = rendered.report.findPass(pass);
+    return p && p->timeMs ? *p->timeMs : 0.0;
+}
+
+// Renders `lesson` `frames` times after a warm-up, each frame after one full-screen copy: copy,
+// setting, copy, setting... A machine whose speed drifts (shared cores, clocks) moves both halves of
+// a pair together, so the per-pair ratio is steadier than either time; the medians keep the same
+// number of samples on both sides.
+Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const FrameInfo& frame, int frames,
+                 const std::vector<std::string>& effectTextures) {
     // GPU timer results arrive a few frames late: warm up long enough that they belong to this setting.
-    int warmUp = renderer.timer().method() == TimingMethod::GpuTimestamps ? 6 : 2;
+    const bool gpu = renderer.timer().method() == TimingMethod::GpuTimestamps;
+    const int warmUp = gpu ? 6 : 2;
+    frames = std::max(frames, 1);
     Measured m;
-    std::vector<double> times;
+    std::vector<double> times, copies, ratios;
+    std::vector<std::string> passOrder;
+    std::map<std::string, std::vector<double>> passTimes;
     for (int i = 0; i < warmUp + frames; ++i) {
-        bool last = i + 1 == warmUp + frames;
+        const bool last = i + 1 == warmUp + frames;
+        if (gpu) glFinish();
+        const double copyMs = copy ? frameMs(renderer.render(*copy, frame, {}), "copy") : 0.0;
         FrameRequest request;
         request.readFinal = last;
         if (last) request.readNamed = effectTextures;
-        if (renderer.timer().method() == TimingMethod::GpuTimestamps) glFinish();
+        if (gpu) glFinish();
         RenderedFrame rendered = renderer.render(lesson, frame, request);
         if (i >= warmUp) {
-            double ms = rendered.passMs;
-            if (!pass.empty()) {
-                const PassRecord* p = rendered.report.findPass(pass);
-                ms = p && p->timeMs ? *p->timeMs : 0.0;
-            }
+            const double ms = rendered.passMs;
             times.push_back(ms);
+            copies.push_back(copyMs);
+            if (copyMs > 0) ratios.push_back(ms / copyMs);  // a copy too fast to time has no ratio
+            for (const PassRecord& p : rendered.report.passes) {
+                if (!p.timeMs) continue;
+                auto [it, fresh] = passTimes.try_emplace(p.name);
+                if (fresh) passOrder.push_back(p.name);
+                it->second.push_back(*p.timeMs);
+            }
         }
         if (last) {
             m.image = toFloatImage(rendered.finalImage);
@@ -90,14 +114,28 @@ Measured measure(Lesson& lesson, FrameRenderer& renderer, const FrameInfo& frame
         }
     }
     m.medianMs = median(times);
+    m.copyMs = median(copies);
+    if (!ratios.empty()) {
+        m.multiple = median(ratios);
+        m.minMultiple = *std::min_element(ratios.begin(), ratios.end());
+        m.maxMultiple = *std::max_element(ratios.begin(), ratios.end());
+    }
+    for (const std::string& name : passOrder) {
+        const double ms = median(passTimes[name]);
+        m.passes.push_back({name, ms, m.copyMs > 0 ? ms / m.copyMs : 0.0});
+    }
     return m;
 }
 
 // A setting's time, its cost in copies, and its error against the reference: the final image, and
 // the lesson's effect texture when both frames captured it.
-void fillMeasurement(SweepPoint& point, const Measured& m, const Measured& reference, double copyMs) {
+void fillMeasurement(SweepPoint& point, Measured& m, const Measured& reference) {
     point.medianMs = m.medianMs;
-    point.copyMultiple = copyMs > 0 ? m.medianMs / copyMs : 0;
+    point.copyMs = m.copyMs;
+    point.copyMultiple = m.multiple;
+    point.minMultiple = m.minMultiple;
+    point.maxMultiple = m.maxMultiple;
+    point.passes = std::move(m.passes);
     if (auto d = compare(m.image, reference.image); d) {
         point.rmse = d->rmse;
         point.psnr = d->psnr;
@@ -119,85 +157,159 @@ void setKnobsToReference(const ParamSet& params) {
 
 }  // namespace
 
-SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
-                       const SweepOptions& options, const std::string& lessonName, int step) {
-    SweepResult result;
-    result.lesson = lessonName;
+// One row of the sweep: a knob at one value (or the lesson's reference algorithm).
+struct KnobSweep::Row {
+    const Param* knob = nullptr;
+    double value = 0;
+    std::string text;
+    bool isReference = false;
+    bool referenceAlgorithm = false;
+};
+
+struct KnobSweep::Impl {
+    Lesson& lesson;
+    ParamSet& params;
+    FrameRenderer& renderer;
+    SweepOptions options;
+    FrameInfo frame;
+    std::vector<ParamSet::Saved> saved;  // values and where they came from, put back after every row
+    nlohmann::json current;              // the values in use when the sweep started
+    CopyFrame copy;
+    bool copyUsable = false;
+    std::vector<std::string> effect;
+    std::vector<Row> rows;
+    std::size_t nextRow = 0;
+    bool referenceDone = false;
+    Measured reference;
+
+    Impl(Lesson& l, ParamSet& p, FrameRenderer& r, SweepOptions o)
+        : lesson(l), params(p), renderer(r), options(std::move(o)) {}
+
+    void report(const SweepProgress& progress) const {
+        if (options.progress) options.progress(progress);
+    }
+};
+
+KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
+                     SweepOptions options, std::string lessonName, int step)
+    : impl_(std::make_unique<Impl>(lesson, params, renderer, std::move(options))) {
+    Impl& s = *impl_;
+    result_.lesson = std::move(lessonName);
     Size2D size = context.framebufferSize();
-    result.width = size.width;
-    result.height = size.height;
-    result.timingMethod = std::string(toString(renderer.timer().method()));
-    if (size.empty()) return result;
+    result_.width = size.width;
+    result_.height = size.height;
+    result_.timingMethod = std::string(toString(renderer.timer().method()));
+    result_.frames = std::max(s.options.frames, 1);
+    result_.effectTexture = lesson.benchTexture();
+    if (!result_.effectTexture.empty()) s.effect.push_back(result_.effectTexture);
 
     // A fixed frame: same time, same seed, every setting.
-    FrameInfo frame;
-    frame.index = 1;
-    frame.seconds = 1.0;
-    frame.deltaSeconds = 1.0 / 60.0;
-    frame.size = {size.width, size.height};
-    frame.step = step;
-    frame.seed = 1;
-    frame.headless = true;
-    frame.benchmark = true;
-    std::string savedParams = params.toJson();
-    const std::vector<ParamSet::Saved> saved = params.save();  // values and where they came from
-
-    {
-        CopyFrame copy;  // its GL objects go at the end of this block
-        if (copy.init({}))
-            result.copyMs = measure(copy, renderer, frame, options.frames, "copy", {}).medianMs;
+    s.frame.index = 1;
+    s.frame.seconds = 1.0;
+    s.frame.deltaSeconds = 1.0 / 60.0;
+    s.frame.size = {size.width, size.height};
+    s.frame.step = step;
+    s.frame.seed = 1;
+    s.frame.headless = true;
+    s.frame.benchmark = true;
+    s.saved = params.save();
+    s.current = nlohmann::json::parse(params.toJson());
+    s.copyUsable = bool(s.copy.init({}));
+    if (size.empty()) {
+        s.referenceDone = true;  // nothing to render: no rows
+        return;
     }
 
-    result.effectTexture = lesson.benchTexture();
-    std::vector<std::string> effect;
-    if (!result.effectTexture.empty()) effect.push_back(result.effectTexture);
-    setKnobsToReference(params);
-    // A separate reference algorithm is rendered with every knob at its reference value too.
     const std::string referenceName = lesson.benchReferenceName();
     const bool separateReference = !referenceName.empty();
-    lesson.setBenchReference(separateReference);
-    Measured reference = measure(lesson, renderer, frame, options.frames, "", effect);
-    lesson.setBenchReference(false);
-
-    auto current = nlohmann::json::parse(savedParams);
     for (const Param* knob : params.knobs()) {
-        if (!options.knob.empty() && knob->name != options.knob) continue;
+        if (!s.options.knob.empty() && knob->name != s.options.knob) continue;
         std::vector<double> values = knob->knob->values;
         // Cut first, then make sure of the reference row: a sweep cut to its first values still has one.
-        if (options.maxValues > 0 && int(values.size()) > options.maxValues)
-            values.resize(std::size_t(options.maxValues));
+        if (s.options.maxValues > 0 && int(values.size()) > s.options.maxValues)
+            values.resize(std::size_t(s.options.maxValues));
         if (!separateReference &&
             std::find(values.begin(), values.end(), knob->knob->reference) == values.end()) {
             values.push_back(knob->knob->reference);
         }
-        // Every row, the reference row included, is rendered and timed afresh and compared with the
-        // reference image taken above: the reference row's zero error is a measurement (the frame is
-        // reproducible), not a copy of the reference's own numbers.
-        auto measureRow = [&](std::string value, bool isReference, bool referenceAlgorithm) {
-            lesson.setBenchReference(referenceAlgorithm);
-            Measured m = measure(lesson, renderer, frame, options.frames, "", effect);
-            lesson.setBenchReference(false);
-            SweepPoint point;
-            point.knob = knob->name;
-            point.value = std::move(value);
-            point.reference = isReference;
-            point.current =
-                !referenceAlgorithm && current.contains(knob->name) && current[knob->name] == point.value;
-            fillMeasurement(point, m, reference, result.copyMs);
-            result.points.push_back(point);
-        };
-        for (double value : values) {
-            setKnobsToReference(params);
-            knob->set(value);
-            measureRow(knob->valueText(value), !separateReference && value == knob->knob->reference, false);
-        }
-        if (separateReference) {
-            setKnobsToReference(params);
-            measureRow(referenceName, true, true);
-        }
+        for (double value : values)
+            s.rows.push_back({knob, value, knob->valueText(value),
+                              !separateReference && value == knob->knob->reference, false});
+        if (separateReference) s.rows.push_back({knob, knob->knob->reference, referenceName, true, true});
     }
-    params.restore(saved);
-    return result;
+    if (s.rows.empty()) s.referenceDone = true;  // no knobs: nothing to compare with either
+}
+
+KnobSweep::~KnobSweep() {
+    impl_->params.restore(impl_->saved);
+    impl_->lesson.setBenchReference(false);
+}
+
+bool KnobSweep::done() const {
+    return impl_->referenceDone && impl_->nextRow >= impl_->rows.size();
+}
+
+SweepProgress KnobSweep::progress() const {
+    const Impl& s = *impl_;
+    SweepProgress p;
+    p.total = int(s.rows.size()) + 1;
+    p.done = (s.referenceDone ? 1 : 0) + int(s.nextRow);
+    if (s.rows.empty()) p.total = p.done = 0;
+    if (!s.referenceDone) {
+        p.next = s.lesson.benchReferenceName().empty()
+                     ? "the reference image"
+                     : "the reference image (" + s.lesson.benchReferenceName() + ")";
+    } else if (s.nextRow < s.rows.size()) {
+        const Row& r = s.rows[s.nextRow];
+        p.next = cat(r.knob->name, " = ", r.text);
+    }
+    return p;
+}
+
+void KnobSweep::next() {
+    Impl& s = *impl_;
+    if (done()) return;
+    s.report(progress());
+    setKnobsToReference(s.params);
+    if (!s.referenceDone) {
+        // A separate reference algorithm is rendered with every knob at its reference value too.
+        s.lesson.setBenchReference(!s.lesson.benchReferenceName().empty());
+        s.reference = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
+                              s.effect);
+        s.lesson.setBenchReference(false);
+        s.referenceDone = true;
+    } else {
+        // Every row, the reference row included, is rendered and timed afresh and compared with the
+        // reference image taken first: the reference row's zero error is a measurement (the frame is
+        // reproducible), not a copy of the reference's own numbers.
+        const Row& row = s.rows[s.nextRow++];
+        if (!row.referenceAlgorithm) row.knob->set(row.value);
+        s.lesson.setBenchReference(row.referenceAlgorithm);
+        Measured m = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
+                             s.effect);
+        s.lesson.setBenchReference(false);
+        SweepPoint point;
+        point.knob = row.knob->name;
+        point.value = row.text;
+        point.reference = row.isReference;
+        point.current = !row.referenceAlgorithm && s.current.contains(row.knob->name) &&
+                        s.current[row.knob->name] == point.value;
+        fillMeasurement(point, m, s.reference);
+        result_.points.push_back(std::move(point));
+        // The unit of the whole run: the median of every row's copies.
+        std::vector<double> copies;
+        for (const SweepPoint& p : result_.points) copies.push_back(p.copyMs);
+        result_.copyMs = median(copies);
+    }
+    s.params.restore(s.saved);
+    if (done()) s.report(progress());
+}
+
+SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
+                       const SweepOptions& options, const std::string& lessonName, int step) {
+    KnobSweep sweep(lesson, params, renderer, context, options, lessonName, step);
+    while (!sweep.done()) sweep.next();
+    return sweep.result();
 }
 
 namespace {
@@ -224,20 +336,25 @@ nlohmann::ordered_json jsonNumber(double v) {
 
 Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir) {
     std::ostringstream csv;
-    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,rmse,"
-           "psnr_db,max_abs,"
+    csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,"
+           "min_multiple,max_multiple,frames,rmse,psnr_db,max_abs,"
            "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs\n";
+    // Where the time goes: every pass of every row, in milliseconds and in copies.
+    std::ostringstream passes;
+    passes << "knob,value,pass,median_ms,copies\n";
     nlohmann::ordered_json json;
     json["lesson"] = r.lesson;
     json["size"] = {r.width, r.height};
     json["timingMethod"] = r.timingMethod;
     json["copyMs"] = r.copyMs;
+    json["frames"] = r.frames;
     json["points"] = nlohmann::ordered_json::array();
     for (const SweepPoint& p : r.points) {
         csv << r.lesson << "," << r.width << "," << r.height << "," << r.timingMethod << "," << p.knob
             << ",\"" << p.value << "\"," << p.reference << "," << p.current << "," << number(p.medianMs)
-            << "," << number(r.copyMs) << "," << number(p.copyMultiple) << "," << number(p.rmse) << ","
-            << number(p.psnr) << "," << number(p.maxAbs) << ",";
+            << "," << number(p.copyMs) << "," << number(p.copyMultiple) << "," << number(p.minMultiple) << ","
+            << number(p.maxMultiple) << "," << r.frames << "," << number(p.rmse) << "," << number(p.psnr)
+            << "," << number(p.maxAbs) << ",";
         if (p.hasEffectError) {
             csv << r.effectTexture << "," << number(p.effectRmse) << "," << number(p.effectPsnr) << ","
                 << number(p.effectMaxAbs);
@@ -250,7 +367,10 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
                                   {"reference", p.reference},
                                   {"current", p.current},
                                   {"medianMs", p.medianMs},
+                                  {"copyMs", p.copyMs},
                                   {"copyMultiple", p.copyMultiple},
+                                  {"minMultiple", p.minMultiple},
+                                  {"maxMultiple", p.maxMultiple},
                                   {"rmse", jsonNumber(p.rmse)},
                                   {"psnrDb", jsonNumber(p.psnr)},
                                   {"maxAbs", jsonNumber(p.maxAbs)}});
@@ -260,9 +380,16 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
                                                {"psnrDb", jsonNumber(p.effectPsnr)},
                                                {"maxAbs", jsonNumber(p.effectMaxAbs)}};
         }
+        auto& passList = json["points"].back()["passes"] = nlohmann::ordered_json::array();
+        for (const PassCost& c : p.passes) {
+            passList.push_back({{"pass", c.pass}, {"medianMs", c.medianMs}, {"copies", c.copies}});
+            passes << p.knob << ",\"" << p.value << "\",\"" << c.pass << "\"," << number(c.medianMs) << ","
+                   << number(c.copies) << "\n";
+        }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
     if (auto s = writeFileAtomically(dir / "bench.json", json.dump(2) + "\n"); !s) return s;
+    if (auto s = writeFileAtomically(dir / "passes.csv", passes.str()); !s) return s;
 
     std::vector<std::string> knobs;
     for (auto& p : r.points) {
@@ -273,14 +400,15 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         // The title says what was measured and how; the lesson is the folder the plot sits in.
         plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
         bool byCopy = r.copyMs > 0;
-        plot.xLabel = byCopy
-                          ? cat("frame cost in full-screen copies (1 copy = ", shortNumber(r.copyMs), " ms)")
-                          : "frame time (ms)";
+        plot.xLabel = byCopy ? cat("frame cost in full-screen copies, median and min-max of ", r.frames,
+                                   " (1 copy = ", shortNumber(r.copyMs), " ms)")
+                             : "frame time (ms)";
         plot.yLabel = "RMSE of the final image against the reference";
         for (auto& p : r.points) {
             if (p.knob != knob) continue;
-            plot.points.push_back(
-                {p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current});
+            PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current};
+            if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
+            plot.points.push_back(point);
         }
         if (auto s = writePng(dir / cat("bench-", knob, ".png"), renderScatterPlot(plot)); !s) return s;
     }
@@ -290,17 +418,37 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
 std::string describeSweep(const SweepResult& r) {
     std::ostringstream out;
     out << r.lesson << " at " << r.width << "x" << r.height << ", timing: " << r.timingMethod
-        << ", one full-screen copy: " << number(r.copyMs) << " ms\n";
+        << ", one full-screen copy: " << number(r.copyMs) << " ms (median; each frame is divided by a copy"
+        << " timed just before it, " << r.frames << " pairs per row)\n";
     out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms"
-        << std::setw(10) << "x copy" << std::setw(12) << "rmse"
+        << std::setw(10) << "x copy" << std::setw(16) << "min-max" << std::setw(12) << "rmse"
         << "psnr dB\n";
     for (auto& p : r.points) {
         out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
-            << std::setw(12) << number(p.medianMs) << std::setw(10) << number(p.copyMultiple) << std::setw(12)
-            << number(p.rmse) << number(p.psnr) << "\n";
+            << std::setw(12) << shortNumber(p.medianMs) << std::setw(10) << shortNumber(p.copyMultiple)
+            << std::setw(16) << cat(shortNumber(p.minMultiple), "-", shortNumber(p.maxMultiple))
+            << std::setw(12) << number(p.rmse) << number(p.psnr) << "\n";
     }
     out << "(* = reference)\n";
+    // Where the time goes, for the setting in use (the first row when none is).
+    const SweepPoint* shown = nullptr;
+    for (const SweepPoint& p : r.points)
+        if (p.current && !shown) shown = &p;
+    if (!shown && !r.points.empty()) shown = &r.points.front();
+    if (shown && !shown->passes.empty()) {
+        out << "\npasses of " << shown->knob << " = " << shown->value << " (every row's: passes.csv)\n";
+        out << std::left << std::setw(30) << "pass" << std::setw(12) << "ms"
+            << "copies\n";
+        for (const PassCost& c : shown->passes)
+            out << std::left << std::setw(30) << c.pass << std::setw(12) << shortNumber(c.medianMs)
+                << shortNumber(c.copies) << "\n";
+    }
     return out.str();
+}
+
+std::string noKnobsMessage(const std::string& lessonName) {
+    return cat(lessonName,
+               " has no quality knobs: nothing to sweep (docs/bench.md lists the lessons that have some)");
 }
 
 }  // namespace fx

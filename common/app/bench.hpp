@@ -10,6 +10,8 @@
 // compared like every other row. Bench frames have FrameInfo::benchmark set: lessons leave out what
 // only helps a person looking (side-by-side views, diagnostics that read textures back).
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "app/frame_renderer.hpp"
@@ -19,17 +21,47 @@ namespace fx {
 
 struct SweepOptions {
     std::string knob;   // empty: every knob
-    int frames = 5;     // measured frames per setting (after warm-up)
+    int frames = 5;     // measured frames per setting (after warm-up), each with a copy before it
     int maxValues = 0;  // 0: every value; otherwise the first N values of each knob
+    std::function<void(const SweepProgress&)> progress;  // called before each row and at the end
 };
 
+// A sweep measured a row at a time, so an interactive app can draw a frame (and a progress bar)
+// between rows and stop early. The parameters are put back after every row: frames drawn between
+// rows show the settings the user chose.
+class KnobSweep final : public SweepRun {
+public:
+    KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
+              SweepOptions options, std::string lessonName, int step);
+    ~KnobSweep() override;
+    KnobSweep(const KnobSweep&) = delete;
+    KnobSweep& operator=(const KnobSweep&) = delete;
+
+    bool done() const override;
+    // Measures the next row (the first call measures the reference image).
+    void next() override;
+    SweepProgress progress() const override;
+    const SweepResult& result() const override { return result_; }
+
+private:
+    struct Row;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    SweepResult result_;
+};
+
+// The whole sweep at once (./fxlab bench, tests).
 SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
                        const SweepOptions& options, const std::string& lessonName, int step);
 
 // out/bench/<lesson>/: bench.csv, bench.json and bench-<knob>.png (error against cost).
 Status writeBenchOutputs(const SweepResult& result, const std::filesystem::path& dir);
 
-// A plain-text table of the sweep for the terminal.
+// A plain-text table of the sweep for the terminal, then where the time goes: every pass of the
+// setting in use (or the first row) in copies.
 std::string describeSweep(const SweepResult& result);
+
+// The line ./fxlab bench prints for a lesson with nothing to sweep.
+std::string noKnobsMessage(const std::string& lessonName);
 
 }  // namespace fx

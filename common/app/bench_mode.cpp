@@ -1,6 +1,9 @@
 #include "app/bench_mode.hpp"
 
+#include <cstdio>
 #include <iostream>
+
+#include <unistd.h>
 
 #include "app/bench.hpp"
 #include "app/lesson_listing.hpp"
@@ -23,9 +26,25 @@ int runBenchMode(RunSession& s, FrameRenderer& renderer, Context& context) {
     }
     fs::path dir =
         o.benchOut.empty() ? fs::path("out") / "bench" / lessonFolderName(lesson.info()) : o.benchOut;
+    if (s.params.knobs().empty()) {
+        // Nothing to sweep: say so instead of printing an empty table.
+        std::cout << noKnobsMessage(s.exe) << "\n";
+        return 0;
+    }
     int step = !o.step && lesson.benchStep() >= 0 ? lesson.benchStep() : s.step;
-    SweepResult result = sweepKnobs(lesson, s.params, renderer, context,
-                                    {o.benchKnob, o.benchFrames, o.benchValues}, s.exe, step);
+    SweepOptions options{o.benchKnob, o.benchFrames, o.benchValues, {}};
+    // On a terminal, one line that says which setting is being measured (a sweep takes minutes).
+    if (isatty(STDERR_FILENO)) {
+        options.progress = [](const SweepProgress& p) {
+            if (p.next.empty()) {
+                std::fprintf(stderr, "\r\033[Kmeasured %d settings\n", p.total);
+            } else {
+                std::fprintf(stderr, "\r\033[K[%d/%d] measuring %s", p.done + 1, p.total, p.next.c_str());
+            }
+            std::fflush(stderr);
+        };
+    }
+    SweepResult result = sweepKnobs(lesson, s.params, renderer, context, options, s.exe, step);
     std::cout << describeSweep(result);
     int exitCode = 0;
     if (auto written = writeBenchOutputs(result, dir); !written) {

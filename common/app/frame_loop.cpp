@@ -123,12 +123,9 @@ void FrameLoop::run() {
             renderedStep_ = s_.step;
             request.target = picture_->target(extent);
         }
-        // A sweep asked for by the cost panel runs here, between frames, never inside one.
-        if (drawOverlay && overlay_->costPanel().measurePending()) {
-            overlay_->costPanel().runPending([&] {
-                return sweepKnobs(*s_.lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
-            });
-        }
+        // A sweep asked for by the cost panel measures one setting here, between frames, never inside one.
+        if (drawOverlay && overlay_->costPanel().measurePending())
+            overlay_->costPanel().runPending(knobSweepStarter());
         RenderedFrame rendered = renderer_.render(
             *s_.lesson, frame, request, [&](const FrameGraph& graph, const FrameReport& report) {
                 if (picture_) present(place, window);
@@ -166,6 +163,13 @@ void FrameLoop::present(const LayoutRect& place, Size2D window) {
     picture_->present(target, window.height, place, compare_);
 }
 
+std::function<std::unique_ptr<SweepRun>()> FrameLoop::knobSweepStarter() {
+    return [this]() -> std::unique_ptr<SweepRun> {
+        return std::make_unique<KnobSweep>(*s_.lesson, s_.params, renderer_, context_, SweepOptions{}, s_.exe,
+                                           s_.step);
+    };
+}
+
 bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     int stepCount = int(s_.lesson->steps().size());
     KeyPresses keys = input_.takeKeyPresses();
@@ -201,6 +205,11 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     if (keys.findSpecial && overlay_) {
         overlay_->inspector().setOpen(true);
         overlay_->inspector().findNextSpecial();
+    }
+    if (overlay_) {
+        // Esc stops the cost panel's sweep rather than the app while one runs.
+        if (keys.cancel) overlay_->costPanel().cancel();
+        input_.setEscapeCancels(overlay_->costPanel().measurePending());
     }
     screenshotAsked_ = keys.screenshot;
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
@@ -302,9 +311,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
         Status loaded = text ? s_.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
         s_.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
     };
-    model.measureKnobs = [&] {
-        return sweepKnobs(lesson, s_.params, renderer_, context_, {{}, 3, 0}, s_.exe, s_.step);
-    };
+    model.measureKnobs = knobSweepStarter();
     // Headless too: --press takes the same keys, and an --overlay capture shows what a window would.
     for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
     model.executable = s_.exe;

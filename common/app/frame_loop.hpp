@@ -2,6 +2,7 @@
 // The frames of a run: input, reload, the lesson's update and frame, the overlay on top, screenshots,
 // and what the last frame leaves for the captures and the report.
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -44,6 +45,8 @@ public:
     RunRecord& record() { return record_; }
 
 private:
+    // Starts the cost panel's sweep of the lesson's knobs (5 measured frames per setting, as the bench).
+    std::function<std::unique_ptr<SweepRun>()> knobSweepStarter();
     using Clock = std::chrono::steady_clock;
 
     // False when the run should end (Esc, or another lesson asked for).

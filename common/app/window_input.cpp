@@ -43,6 +43,7 @@ constexpr WindowKey kWindowKeys[] = {
 // GLFW callbacks are plain functions: the presses of the one lesson window go here.
 KeyPresses* pending = nullptr;
 KeyPresses presses;
+bool escapeCancels = false;
 
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || !pending) return;
@@ -50,7 +51,12 @@ void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
     // Shift+= is "+" on most layouts; the key is the same.
     for (const WindowKey& k : kWindowKeys) {
-        if (k.key == key || (k.alternate != 0 && k.alternate == key)) pending->*k.press = true;
+        if (k.key != key && (k.alternate == 0 || k.alternate != key)) continue;
+        // While something long is under way (the cost panel's sweep), Esc cancels it instead of quitting.
+        if (k.press == &KeyPresses::quit && escapeCancels)
+            pending->cancel = true;
+        else
+            pending->*k.press = true;
     }
 }
 
@@ -58,6 +64,7 @@ void onKey(GLFWwindow*, int key, int, int action, int mods) {
 
 KeyPresses& KeyPresses::operator|=(const KeyPresses& o) {
     for (const WindowKey& k : kWindowKeys) this->*k.press = this->*k.press || o.*k.press;
+    cancel = cancel || o.cancel;  // no key of its own: Esc while a sweep runs
     return *this;
 }
 
@@ -92,6 +99,10 @@ KeyPresses WindowInput::takeKeyPresses() {
     KeyPresses taken = presses;
     presses = {};
     return window_ ? taken : KeyPresses{};
+}
+
+void WindowInput::setEscapeCancels(bool on) {
+    escapeCancels = on;
 }
 
 Pointer WindowInput::pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture,

@@ -20,6 +20,7 @@ struct KeyPresses {
     bool resetLayout = false, compare = false, findSpecial = false;
     bool nextLesson = false, previousLesson = false;
     bool quit = false;
+    bool cancel = false;  // Esc while something long is under way (setEscapeCancels)
 
     KeyPresses& operator|=(const KeyPresses& o);
 };
@@ -45,6 +46,8 @@ public:
 
     // The presses since the last call.
     KeyPresses takeKeyPresses();
+    // While on, Esc cancels what is under way (the cost panel's sweep) instead of quitting.
+    void setEscapeCancels(bool on);
     // The mouse in the picture's pixels, bottom-left origin. `picture` is the picture's place in the
     // framebuffer (x, y from the top-left, in framebuffer pixels); the pointer is present only over it.
     Pointer pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture, bool overUi) const;

@@ -22,17 +22,14 @@ constexpr double kFrontThickness = 3.0;
 
 using PixelPoint = std::array<double, 2>;
 
-struct Box {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+using Box = PlotBox;
 
-    double overlap(const Box& o) const {
-        const double w = std::min(x1, o.x1) - std::max(x0, o.x0), h = std::min(y1, o.y1) - std::max(y0, o.y0);
-        return w > 0 && h > 0 ? w * h : 0.0;
-    }
-    bool contains(const PixelPoint& p) const { return p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1; }
-    double area() const { return (x1 - x0) * (y1 - y0); }
-    Box grownBy(double d) const { return {x0 - d, y0 - d, x1 + d, y1 + d}; }
-};
+bool contains(const Box& b, const PixelPoint& p) {
+    return p[0] >= b.x0 && p[0] <= b.x1 && p[1] >= b.y0 && p[1] <= b.y1;
+}
+double area(const Box& b) {
+    return (b.x1 - b.x0) * (b.y1 - b.y0);
+}
 
 // How far from a marker's centre its drawing reaches (including the white halo).
 double markerRadius(const PlotPoint& point) {
@@ -168,6 +165,17 @@ private:
                 lineSamples_.push_back(sample);
         }
 
+        // A spread: a thin bar from the smallest to the largest measurement, with end caps, under the marker.
+        for (std::size_t i : drawable_) {
+            const PlotPoint& p = point(i);
+            if (!p.hasSpread()) continue;
+            const double x0 = layout_.pixelX(p.lowX()), x1 = layout_.pixelX(p.highX()), y = pixels_[i][1];
+            canvas_.fillRect(x0, y - 1.0, x1, y + 1.0, kSpread);
+            canvas_.fillRect(x0 - 1.0, y - 6.0, x0 + 1.0, y + 6.0, kSpread);
+            canvas_.fillRect(x1 - 1.0, y - 6.0, x1 + 1.0, y + 6.0, kSpread);
+            obstacles_.push_back({x0 - 1.0, y - 6.0, x1 + 1.0, y + 6.0});  // labels keep off the bar
+        }
+
         // Ordinary points first, then the current one, then the reference, so the special ones end on top.
         drawOrder_ = drawable_;
         const auto rank = [&](std::size_t i) {
@@ -189,9 +197,9 @@ private:
         double cost = 0.0;
         for (const Box& obstacle : obstacles_) cost += box.overlap(obstacle);
         for (const PixelPoint& sample : lineSamples_)
-            if (box.contains(sample)) cost += 16.0;
-        const Box area{layout_.left, layout_.top, layout_.right, layout_.bottom};
-        cost += (box.area() - box.overlap(area)) * 4.0;
+            if (contains(box, sample)) cost += 16.0;
+        const Box plotArea{layout_.left, layout_.top, layout_.right, layout_.bottom};
+        cost += (area(box) - box.overlap(plotArea)) * 4.0;
         return cost;
     }
 
@@ -256,36 +264,79 @@ private:
         obstacles_.push_back(box);
     }
 
-    // The special points choose first, then the front, then the rest; each label takes the spot
-    // around its marker that hides the least of what is already there.
+    // The special points choose first, then the front, then the rest; each label takes a free spot
+    // around its marker that crosses the fewest lines (placeLabels), or is left out.
     void drawPointLabels() {
         std::vector<std::size_t> order(drawOrder_.rbegin(), drawOrder_.rend());
         std::stable_partition(order.begin(), order.end(), [&](std::size_t i) {
             return point(i).isReference || point(i).isCurrent ||
                    std::find(front_.begin(), front_.end(), i) != front_.end();
         });
+        std::vector<std::size_t> labelled;
+        std::vector<LabelRequest> requests;
         for (std::size_t i : order) {
             const std::string text = displayLabel(point(i));
             if (text.empty()) continue;
             const TextSize size = measureText(text, kTextScale);
-            const double px = pixels_[i][0], py = pixels_[i][1], r = markerRadius(point(i)) + 5.0;
-            const double w = size.width, h = size.height, d = r * 0.6;
-            const std::array<Box, 8> candidates = {
-                Box{px + r, py - h / 2, px + r + w, py + h / 2},  // right
-                Box{px - r - w, py - h / 2, px - r, py + h / 2},  // left
-                Box{px + d, py - r - h, px + d + w, py - r},      // above right
-                Box{px + d, py + r, px + d + w, py + r + h},      // below right
-                Box{px - d - w, py - r - h, px - d, py - r},      // above left
-                Box{px - d - w, py + r, px - d, py + r + h},      // below left
-                Box{px - w / 2, py - r - h, px + w / 2, py - r},  // above
-                Box{px - w / 2, py + r, px + w / 2, py + r + h},  // below
-            };
-            const Box best = leastCrowded(candidates, 0.0);
-            drawText(canvas_, best.x0, best.y0 + 1.0, text, kTextScale, point(i).isCurrent ? kCurrent : kInk);
-            obstacles_.push_back(best);
+            labelled.push_back(i);
+            requests.push_back(
+                {pixels_[i][0], pixels_[i][1], markerRadius(point(i)), size.width, size.height});
+        }
+        const Box plotArea{layout_.left + 2.0, layout_.top + 2.0, layout_.right - 2.0, layout_.bottom - 2.0};
+        const auto boxes =
+            placeLabels(requests, obstacles_, plotArea, [&](const Box& box) { return crowding(box); });
+        // Points left without a label are named in one line, left to right, where it hides nothing.
+        std::vector<std::size_t> unlabelled;
+        for (std::size_t k = 0; k < labelled.size(); ++k)
+            if (!boxes[k]) unlabelled.push_back(labelled[k]);
+        std::sort(unlabelled.begin(), unlabelled.end(),
+                  [&](std::size_t a, std::size_t b) { return pixels_[a][0] < pixels_[b][0]; });
+        if (!unlabelled.empty()) {
+            std::string line = "left to right:";
+            for (std::size_t n = 0; n < unlabelled.size(); ++n)
+                line += (n ? ", " : " ") + displayLabel(point(unlabelled[n]));
+            const TextSize size = measureText(line, kTextScale);
+            std::vector<Box> taken = obstacles_;
+            for (const auto& b : boxes)
+                if (b) taken.push_back(*b);
+            // Rows down the left and right of the plot area: the free one that crosses the fewest lines.
+            const double inset = 8.0;
+            std::optional<Box> best;
+            double bestCost = 0.0;
+            for (double y = layout_.bottom - inset - size.height; y >= layout_.top + inset;
+                 y -= size.height / 2.0) {
+                for (double x : {layout_.left + inset, layout_.right - inset - size.width}) {
+                    const Box spot{x, y, x + size.width, y + size.height};
+                    if (spot.x0 < layout_.left || std::any_of(taken.begin(), taken.end(), [&](const Box& t) {
+                            return spot.grownBy(2.0).overlap(t) > 0;
+                        }))
+                        continue;
+                    const double cost = crowding(spot);
+                    if (!best || cost < bestCost) best = spot, bestCost = cost;
+                }
+            }
+            if (best) {
+                drawText(canvas_, best->x0, best->y0 + 1.0, line, kTextScale, kNote);
+                labelBoxes_.push_back(*best);
+            }
+        }
+        for (std::size_t k = 0; k < labelled.size(); ++k) {
+            if (!boxes[k]) continue;
+            const std::size_t i = labelled[k];
+            // A label that had to move away from its marker gets a thin line back to it.
+            const Box& b = *boxes[k];
+            if (auto leader = labelLeader(requests[k], b))
+                canvas_.drawLine(leader->x0, leader->y0, leader->x1, leader->y1, 1.0, kNote);
+            drawText(canvas_, b.x0, b.y0 + 1.0, displayLabel(point(i)), kTextScale,
+                     point(i).isCurrent ? kCurrent : kInk);
+            labelBoxes_.push_back(*boxes[k]);
         }
     }
 
+public:
+    const std::vector<Box>& labelBoxes() const { return labelBoxes_; }
+
+private:
     void drawNotes() {
         double y = layout_.notesTop;
         for (const std::string& note : layout_.notes) {
@@ -304,12 +355,16 @@ private:
     std::vector<std::size_t> front_;       // Pareto front, by increasing x
     std::vector<Box> obstacles_;           // what text should not cover
     std::vector<PixelPoint> lineSamples_;  // points along the lines text should not cross
+    std::vector<Box> labelBoxes_;          // the point labels drawn
 };
 
 }  // namespace
 
-ByteImage renderScatterPlot(const ScatterPlot& plot, int width, int height) {
-    return ScatterPlotPainter(plot, width, height).paint();
+ByteImage renderScatterPlot(const ScatterPlot& plot, int width, int height, std::vector<PlotBox>* labels) {
+    ScatterPlotPainter painter(plot, width, height);
+    ByteImage image = painter.paint();
+    if (labels) *labels = painter.labelBoxes();
+    return image;
 }
 
 }  // namespace fx

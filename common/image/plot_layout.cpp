@@ -51,20 +51,86 @@ std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points) {
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < points.size(); ++i)
         if (std::isfinite(points[i].x) && std::isfinite(points[i].y)) order.push_back(i);
+    // The most accurate first (the cheaper of equals); then each point joins when it is clearly
+    // cheaper than the last one that joined: its whole spread below that one's.
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        if (points[a].x != points[b].x) return points[a].x < points[b].x;
-        return points[a].y < points[b].y;
+        if (points[a].y != points[b].y) return points[a].y < points[b].y;
+        return points[a].x < points[b].x;
     });
-    // Sweeping by increasing x, a point is on the front when it improves on the lowest y so far.
     std::vector<std::size_t> front;
-    double lowestY = std::numeric_limits<double>::infinity();
     for (std::size_t i : order) {
-        if (points[i].y < lowestY) {
-            front.push_back(i);
-            lowestY = points[i].y;
-        }
+        if (front.empty() || points[i].highX() < points[front.back()].lowX()) front.push_back(i);
     }
+    std::reverse(front.begin(), front.end());  // by increasing x
     return front;
+}
+
+bool wantsLogAxis(double low, double high) {
+    return low > 0.0 && std::isfinite(high) && high >= 20.0 * low;
+}
+
+double PlotBox::overlap(const PlotBox& o) const {
+    const double w = std::min(x1, o.x1) - std::max(x0, o.x0), h = std::min(y1, o.y1) - std::max(y0, o.y0);
+    return w > 0 && h > 0 ? w * h : 0.0;
+}
+
+std::optional<PlotBox> labelLeader(const LabelRequest& l, const PlotBox& box) {
+    const double nx = std::clamp(l.x, box.x0, box.x1), ny = std::clamp(l.y, box.y0, box.y1);
+    const double d = std::hypot(nx - l.x, ny - l.y);
+    if (d <= l.radius + 12.0) return std::nullopt;
+    // From just outside the marker (its own box is no obstacle) to the label's nearest edge.
+    const double start = (l.radius + 2.0) / d;
+    return PlotBox{l.x + (nx - l.x) * start, l.y + (ny - l.y) * start, nx, ny};
+}
+
+std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>& labels,
+                                                const std::vector<PlotBox>& markers, const PlotBox& area,
+                                                const std::function<double(const PlotBox&)>& cost) {
+    std::vector<std::optional<PlotBox>> placed;
+    std::vector<PlotBox> taken = markers;
+    for (const LabelRequest& l : labels) {
+        std::optional<PlotBox> best;
+        double bestCost = 0.0;
+        for (double reach : {1.0, 2.2, 3.4, 4.6}) {
+            const double px = l.x, py = l.y, r = (l.radius + 4.0) * reach, w = l.width, h = l.height;
+            const double d = r * 0.6;
+            const PlotBox candidates[] = {
+                {px + r, py - h / 2, px + r + w, py + h / 2},  // right
+                {px - r - w, py - h / 2, px - r, py + h / 2},  // left
+                {px + d, py - r - h, px + d + w, py - r},      // above right
+                {px + d, py + r, px + d + w, py + r + h},      // below right
+                {px - d - w, py - r - h, px - d, py - r},      // above left
+                {px - d - w, py + r, px - d, py + r + h},      // below left
+                {px - w / 2, py - r - h, px + w / 2, py - r},  // above
+                {px - w / 2, py + r, px + w / 2, py + r + h},  // below
+            };
+            for (const PlotBox& c : candidates) {
+                if (c.x0 < area.x0 || c.x1 > area.x1 || c.y0 < area.y0 || c.y1 > area.y1) continue;
+                const PlotBox padded = c.grownBy(1.0);
+                if (std::any_of(taken.begin(), taken.end(),
+                                [&](const PlotBox& t) { return padded.overlap(t) > 0; }))
+                    continue;
+                // Away from its marker a label gets a leader line: it must cross no marker and no label.
+                if (auto leader = labelLeader(l, c)) {
+                    bool crosses = false;
+                    for (int i = 0; i <= 16 && !crosses; ++i) {
+                        const double x = leader->x0 + (leader->x1 - leader->x0) * i / 16.0;
+                        const double y = leader->y0 + (leader->y1 - leader->y0) * i / 16.0;
+                        const PlotBox dot{x - 0.5, y - 0.5, x + 0.5, y + 0.5};
+                        crosses = std::any_of(taken.begin(), taken.end(),
+                                              [&](const PlotBox& t) { return dot.overlap(t) > 0; });
+                    }
+                    if (crosses) continue;
+                }
+                const double k = cost ? cost(c) : 0.0;
+                if (!best || k < bestCost) best = c, bestCost = k;
+            }
+            if (best) break;  // the near ring had a free spot
+        }
+        if (best) taken.push_back(*best);
+        placed.push_back(best);
+    }
+    return placed;
 }
 
 PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
@@ -79,7 +145,7 @@ PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
             skipped.push_back(point.label);
             continue;
         }
-        minX = std::min(minX, point.x), maxX = std::max(maxX, point.x);
+        minX = std::min(minX, point.lowX()), maxX = std::max(maxX, point.highX());
         minY = std::min(minY, point.y), maxY = std::max(maxY, point.y);
         if (point.y > 0.0) minPositiveY = std::min(minPositiveY, point.y);
         if (point.y <= 0.0) floored.push_back(displayLabel(point));
@@ -97,6 +163,10 @@ PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
         logY = false;
         layout.notes.push_back("no y above 0, which a log scale needs: linear scale used");
     }
+
+    const bool logX = hasData && minX > 0.0 && plot.logX.value_or(wantsLogAxis(minX, maxX));
+    if (hasData && plot.logX.value_or(false) && !logX)
+        layout.notes.push_back("x <= 0, which a log scale cannot show: linear scale used");
 
     // Vertical extent first: it decides how many y ticks fit, and their labels decide the left margin.
     // Below the frame, top to bottom: tick marks, tick labels, the x-axis label, the notes.
@@ -128,7 +198,7 @@ PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
                   kTickLength;
     layout.right = std::max(layout.left + 1.0, width - kMargin - 20.0);  // room for half a tick label
     const int xTicks = std::clamp(static_cast<int>((layout.right - layout.left) / 120.0), 2, 10);
-    layout.xAxis = makeLinearAxis(minX, maxX, xTicks);
+    layout.xAxis = logX ? makeLogAxis(minX, maxX) : makeLinearAxis(minX, maxX, xTicks);
     return layout;
 }
 

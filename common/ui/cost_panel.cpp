@@ -17,6 +17,7 @@ const ImU32 kInk = IM_COL32(205, 205, 205, 255);
 const ImU32 kPoint = IM_COL32(96, 150, 230, 255);
 const ImU32 kCurrent = IM_COL32(235, 64, 64, 255);
 const ImU32 kFront = IM_COL32(245, 121, 0, 255);
+const ImU32 kSpread = IM_COL32(120, 135, 165, 255);
 
 void diamond(ImDrawList* draw, ImVec2 c, float r, ImU32 colour, bool filled) {
     ImVec2 p[4] = {{c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}};
@@ -39,10 +40,15 @@ std::vector<std::string> sweptKnobs(const SweepResult& result) {
 
 ScatterPlot sweepPlot(const SweepResult& result, const std::string& knob) {
     ScatterPlot plot;
-    plot.xLabel = "frame time (ms)";
+    const bool byCopy = result.copyMs > 0;
+    plot.xLabel =
+        byCopy ? cat("full-screen copies (median, min-max of ", result.frames, ")") : "frame time (ms)";
     plot.yLabel = "RMSE vs reference";
     for (const SweepPoint& p : result.points) {
-        if (p.knob == knob) plot.points.push_back({p.value, p.medianMs, p.rmse, p.reference, p.current});
+        if (p.knob != knob) continue;
+        PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current};
+        if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
+        plot.points.push_back(point);
     }
     return plot;
 }
@@ -85,7 +91,16 @@ void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
     draw->AddText(ImVec2((left + right - xw) / 2, bottom + 6 + textHeight), kInk, plot.xLabel.c_str());
     draw->AddText(ImVec2(left, top - textHeight - 3), kInk, plot.yLabel.c_str());
 
-    // The front, then the points on top of it.
+    // Spreads, the front, then the points on top of them.
+    std::vector<PlotBox> spreads;
+    for (const PlotPoint& p : plot.points) {
+        if (!layout.isDrawable(p) || !p.hasSpread()) continue;
+        ImVec2 a = at(p.lowX(), p.y), b = at(p.highX(), p.y);
+        draw->AddLine(a, b, kSpread, 1.5f);
+        draw->AddLine(ImVec2(a.x, a.y - 4), ImVec2(a.x, a.y + 4), kSpread, 1.5f);
+        draw->AddLine(ImVec2(b.x, b.y - 4), ImVec2(b.x, b.y + 4), kSpread, 1.5f);
+        spreads.push_back({a.x - 1, a.y - 4, b.x + 1, b.y + 4});  // labels keep off the bar too
+    }
     std::vector<std::size_t> front = paretoFront(plot.points);
     for (std::size_t i = 1; i < front.size(); ++i) {
         const PlotPoint& a = plot.points[front[i - 1]];
@@ -94,6 +109,9 @@ void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
     }
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const PlotPoint* hovered = nullptr;
+    std::vector<PlotBox> markers = spreads;
+    std::vector<LabelRequest> labels;
+    std::vector<const PlotPoint*> labelled;
     for (const PlotPoint& p : plot.points) {
         if (!layout.isDrawable(p)) continue;
         ImVec2 c = at(p.x, p.y);
@@ -103,8 +121,31 @@ void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
             draw->AddCircleFilled(c, 4.5f, p.isCurrent ? kCurrent : kPoint);
         }
         if (p.isCurrent) draw->AddCircle(c, 9.0f, kCurrent, 20, 2.0f);
-        draw->AddText(ImVec2(c.x + 8, c.y - textHeight - 1), p.isCurrent ? kCurrent : kInk, p.label.c_str());
+        const float r = p.isCurrent ? 10.0f : 7.0f;
+        markers.push_back({c.x - r, c.y - r, c.x + r, c.y + r});
+        ImVec2 text = ImGui::CalcTextSize(p.label.c_str());
+        labels.push_back({c.x, c.y, r, text.x, text.y});
+        labelled.push_back(&p);
         if (std::abs(mouse.x - c.x) < 7 && std::abs(mouse.y - c.y) < 7) hovered = &p;
+    }
+    // The reference and the current setting choose their spots first; a label with no free spot is
+    // left out (hovering shows it, and the table lists every row).
+    std::vector<std::size_t> order(labels.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t i) { return labelled[i]->isReference || labelled[i]->isCurrent; });
+    std::vector<LabelRequest> ordered;
+    for (std::size_t i : order) ordered.push_back(labels[i]);
+    const auto placed = placeLabels(ordered, markers, {left, top, right, bottom});
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        if (!placed[k]) continue;
+        const PlotPoint& p = *labelled[order[k]];
+        if (auto leader = labelLeader(ordered[k], *placed[k]))
+            draw->AddLine(ImVec2(float(leader->x0), float(leader->y0)),
+                          ImVec2(float(leader->x1), float(leader->y1)), kGrid + IM_COL32(60, 60, 60, 0),
+                          1.0f);
+        draw->AddText(ImVec2(float(placed[k]->x0), float(placed[k]->y0)), p.isCurrent ? kCurrent : kInk,
+                      p.label.c_str());
     }
     float noteY = bottom + 2.0f * textHeight + 12.0f;
     for (const std::string& note : layout.notes) {
@@ -113,9 +154,10 @@ void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
     }
     ImGui::Dummy(ImVec2(size.x, used));
     if (hovered) {
-        ImGui::SetTooltip("%s%s%s\n%s ms, RMSE %s", hovered->label.c_str(),
+        ImGui::SetTooltip("%s%s%s\n%s (%s to %s), RMSE %s", hovered->label.c_str(),
                           hovered->isReference ? " (reference)" : "", hovered->isCurrent ? " (in use)" : "",
-                          formatValue(hovered->x).c_str(), formatValue(hovered->y).c_str());
+                          formatValue(hovered->x).c_str(), formatValue(hovered->lowX()).c_str(),
+                          formatValue(hovered->highX()).c_str(), formatValue(hovered->y).c_str());
     }
 }
 
@@ -127,9 +169,34 @@ void CostPanel::setResult(SweepResult result) {
 }
 
 void CostPanel::runPending(const Measure& measure) {
-    if (!pending_) return;
+    if (pending_) {
+        pending_ = false;
+        cancelled_.clear();
+        running_ = measure ? measure() : nullptr;
+        if (!running_) return;
+    }
+    if (!running_) return;
+    // One row per frame: the app keeps drawing, the bar moves, and Esc is read between rows.
+    if (!running_->done()) running_->next();
+    if (running_->done()) {
+        setResult(running_->result());
+        running_.reset();
+    }
+}
+
+void CostPanel::cancel() {
+    if (!running_ && !pending_) return;
+    if (running_) {
+        SweepProgress p = running_->progress();
+        cancelled_ = cat("cancelled after ", p.done, " of ", p.total, " settings");
+    }
+    running_.reset();  // puts the parameters back
     pending_ = false;
-    if (measure) setResult(measure());
+}
+
+std::optional<SweepProgress> CostPanel::progress() const {
+    if (!running_) return std::nullopt;
+    return running_->progress();
 }
 
 void CostPanel::draw(const Measure& measure) {
@@ -141,14 +208,27 @@ void CostPanel::draw(const Measure& measure) {
             "command line)");
         ImGui::PopTextWrapPos();
         if (!result_) return;
+    } else if (measurePending()) {
+        // The sweep under way: a bar, what comes next, and a way out.
+        SweepProgress p = progress().value_or(SweepProgress{});
+        float fraction = p.total > 0 ? float(p.done) / float(p.total) : 0.0f;
+        std::string overlayText = cat(p.done, " / ", p.total);
+        ImGui::ProgressBar(fraction, ImVec2(220, 0), overlayText.c_str());
+        ImGui::SameLine();
+        if (ImGui::Button("cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape, false)) cancel();
+        ImGui::SameLine();
+        ImGui::TextDisabled("measuring %s (Esc cancels)", p.next.c_str());
     } else {
-        ImGui::BeginDisabled(pending_);
-        if (ImGui::Button(pending_ ? "measuring..." : "measure")) pending_ = true;
-        ImGui::EndDisabled();
-        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        if (ImGui::Button("measure")) pending_ = true;
+        if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip(
                 "render the lesson at every setting of each quality knob (the others at their\n"
-                "references), time it, and compare its picture with the reference setting's");
+                "references), one setting per frame, time it against a full-screen copy, and\n"
+                "compare its picture with the reference setting's");
+        }
+        if (!cancelled_.empty()) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("%s", cancelled_.c_str());
         }
     }
     if (!result_) {
@@ -162,8 +242,10 @@ void CostPanel::draw(const Measure& measure) {
         return;
     }
     ImGui::SameLine();
-    ImGui::TextWrapped("%dx%d, timed by %s; one full-screen copy takes %.3f ms", r.width, r.height,
-                       r.timingMethod.c_str(), r.copyMs);
+    ImGui::TextWrapped(
+        "%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a "
+        "copy timed just before it)",
+        r.width, r.height, r.timingMethod.c_str(), r.copyMs);
     auto knobs = sweptKnobs(r);
     if (knobs.size() > 1) {
         ImGui::SetNextItemWidth(180);
@@ -181,10 +263,11 @@ void CostPanel::draw(const Measure& measure) {
 
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame;
-    if (ImGui::BeginTable("points", 5, flags)) {
+    if (ImGui::BeginTable("points", 6, flags)) {
         ImGui::TableSetupColumn("setting");
         ImGui::TableSetupColumn("frame ms");
         ImGui::TableSetupColumn("x copy");
+        ImGui::TableSetupColumn("min-max");
         ImGui::TableSetupColumn("RMSE");
         ImGui::TableSetupColumn("PSNR dB");
         ImGui::TableHeadersRow();
@@ -203,6 +286,8 @@ void CostPanel::draw(const Measure& measure) {
             ImGui::Text("%.3f", p.medianMs);
             ImGui::TableNextColumn();
             ImGui::Text("%.2f", p.copyMultiple);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f-%.2f", p.minMultiple, p.maxMultiple);
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(formatValue(p.rmse).c_str());
             ImGui::TableNextColumn();

@@ -1,8 +1,10 @@
 #pragma once
 // The cost of the lesson's quality knobs: "measure" sweeps every knob in the running app (as
-// ./fxlab bench does) and the panel draws frame time against error for each setting, with the
-// reference and the setting in use marked and the settings nothing beats joined (the Pareto front).
+// ./fxlab bench does), one setting per frame with a progress bar (Esc or "cancel" stops it), and the
+// panel draws cost in full-screen copies against error for each setting, with each setting's spread,
+// the reference and the setting in use marked and the settings nothing beats joined (the Pareto front).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,21 +16,27 @@
 
 namespace fx {
 
-// The plot of one knob's points: x = frame time in ms, y = RMSE against the reference's image.
+// The plot of one knob's points: x = cost in full-screen copies (median, min-max spread; frame time in
+// ms when the sweep has no copy), y = RMSE against the reference's image.
 ScatterPlot sweepPlot(const SweepResult& result, const std::string& knob);
 // The knobs a sweep measured, in the order they first appear.
 std::vector<std::string> sweptKnobs(const SweepResult& result);
 
 class CostPanel {
 public:
-    using Measure = std::function<SweepResult()>;
+    using Measure = std::function<std::unique_ptr<SweepRun>()>;
 
-    // The "measure" button asks; the sweep itself runs in runPending, which the overlay calls before
-    // it starts its next ImGui frame (a sweep renders frames of its own).
+    // The "measure" button asks; runPending, which the overlay calls before it starts each ImGui
+    // frame (a sweep renders frames of its own), starts the sweep and then measures one row per call.
     void draw(const Measure& measure);
-    bool measurePending() const { return pending_; }
+    // True while a sweep is asked for or under way.
+    bool measurePending() const { return pending_ || running_ != nullptr; }
     void requestMeasure() { pending_ = true; }
     void runPending(const Measure& measure);
+    // Stops a sweep under way; the rows measured so far are dropped and the parameters put back.
+    void cancel();
+    // The progress of the sweep under way (nothing when none is).
+    std::optional<SweepProgress> progress() const;
 
     void setResult(SweepResult result);
     const std::optional<SweepResult>& result() const { return result_; }
@@ -37,6 +45,8 @@ private:
     std::optional<SweepResult> result_;
     std::string knob_;
     bool pending_ = false;
+    std::unique_ptr<SweepRun> running_;
+    std::string cancelled_;  // what the last cancelled sweep had reached, for the panel to say
 };
 
 // Draws a scatter plot with ImGui's primitives at the cursor (size in pixels), laid out by

@@ -94,11 +94,14 @@ void Inspector::refreshThumbnails(const InspectorFrame& frame) {
         s.cameraNear = frame.cameraNear;
         s.cameraFar = frame.cameraFar;
         // Depth needs its range before a thumbnail says anything; one texture a frame is read back
-        // for that (once per texture: the fitted range is kept).
+        // for that, once per texture: the fitted range is kept, and a texture with nothing to fit
+        // (all one value, all NaN) keeps the default range instead of being read back every frame
+        // (which cost a 1920x1080 frame several times its passes: docs/bench.md).
         if (s.autoFitPending && !fittedOne && t.name != selected_) {
             TextureAnalysis a = analyseImage(gl::readTexture(source.native, source.spec, 0),
                                              showsLinearDepth(s, source.spec), s.cameraNear, s.cameraFar, 8);
-            if (autoFitRange(s, a)) s.autoFitPending = false;
+            autoFitRange(s, a);
+            s.autoFitPending = false;
             fittedOne = true;
         }
         thumbnails_.refresh(display_, source, s, TextureList::kThumbnailWidth, TextureList::kThumbnailHeight,

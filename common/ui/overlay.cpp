@@ -144,7 +144,11 @@ void Overlay::drawFrameWindow(const OverlayModel& m, const PanelLayout& layout) 
         if (ImGui::BeginTabItem("Passes", nullptr,
                                 requestFrameOpen_ && !requestCostTab_ ? ImGuiTabItemFlags_SetSelected : 0)) {
             if (m.frame) {
-                drawPassTable(*m.frame);
+                // In copies too, once the cost panel has measured a copy at this size.
+                const auto& sweep = cost_.result();
+                const bool sameSize = sweep && sweep->width == m.frame->outputSize.width &&
+                                      sweep->height == m.frame->outputSize.height;
+                drawPassTable(*m.frame, sameSize ? sweep->copyMs : 0.0);
             } else {
                 ImGui::TextDisabled("no frame yet");
             }

@@ -3,6 +3,7 @@
 // graph and report, the camera's planes, and the actions only the runner can perform.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,9 +44,9 @@ struct OverlayModel {
     std::function<void()> onSavePreset, onLoadPreset;
     // The camera's planes, for showing depth textures linearised.
     float cameraNear = 0.1f, cameraFar = 100.0f;
-    // Runs the quality-knob sweep in the app (as ./fxlab bench does) and returns its points; empty
-    // when the lesson has no knobs.
-    std::function<SweepResult()> measureKnobs;
+    // Starts the quality-knob sweep in the app (as ./fxlab bench does); the cost panel measures a
+    // row of it before each frame. Its result has no points when the lesson has no knobs.
+    std::function<std::unique_ptr<SweepRun>()> measureKnobs;
     // Every key of the window, for the Keys tab; empty headless. executable: for "--help".
     std::vector<OverlayKey> keys;
     std::string executable;

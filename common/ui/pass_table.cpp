@@ -17,7 +17,7 @@ double totalPassMs(const FrameReport& frame) {
     return total;
 }
 
-void drawPassTable(const FrameReport& frame) {
+void drawPassTable(const FrameReport& frame, double copyMs) {
     const double total = totalPassMs(frame);
     int ran = 0;
     for (const PassRecord& p : frame.passes) ran += p.executed ? 1 : 0;
@@ -57,7 +57,8 @@ void drawPassTable(const FrameReport& frame) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 18.0f);
     ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 52.0f);
+    ImGui::TableSetupColumn(copyMs > 0.0 ? "ms (copies)" : "ms", ImGuiTableColumnFlags_WidthFixed,
+                            copyMs > 0.0 ? 104.0f : 52.0f);
     ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthFixed, 64.0f);
     if (!oneMethod) ImGui::TableSetupColumn("timed by", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("ran / why not", ImGuiTableColumnFlags_WidthStretch, 1.8f);
@@ -80,7 +81,9 @@ void drawPassTable(const FrameReport& frame) {
         ImGui::TextUnformatted(p.name.c_str());
         ImGui::PopTextWrapPos();
         ImGui::TableNextColumn();
-        if (p.timeMs) {
+        if (p.timeMs && copyMs > 0.0) {
+            ImGui::Text("%.3f (%.2f)", *p.timeMs, *p.timeMs / copyMs);
+        } else if (p.timeMs) {
             ImGui::Text("%.3f", *p.timeMs);
         }
         ImGui::TableNextColumn();

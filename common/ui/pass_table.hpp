@@ -10,6 +10,8 @@ namespace fx {
 // The sum of the times of the passes that ran (what the shares are shares of).
 double totalPassMs(const FrameReport& frame);
 
-void drawPassTable(const FrameReport& frame);
+// copyMs > 0: one full-screen copy at this frame's size (the cost panel's last sweep measured it), so
+// each pass's time also reads in copies, the bench's unit.
+void drawPassTable(const FrameReport& frame, double copyMs = 0.0);
 
 }  // namespace fx

@@ -1,12 +1,15 @@
 #pragma once
-// What is in one level of a texture, read back exactly (gl::readTexture) and counted on the CPU
-// with image_stats: the range the auto-fit uses, the histogram under the view, and the numbers of
-// NaN, infinite and negative texels the highlight marks. Reading a large float texture back stalls
-// the GPU, so the inspector does it when the selection or level changes and a few times a second
-// at most (TextureAnalyser), not every frame.
+// What is in one level of a texture: the range the auto-fit uses, the histogram under the view, and
+// the numbers of NaN, infinite and negative texels the highlight marks. The inspector counts them on
+// the GPU (ui/gpu_texture_stats.hpp: a compute reduction, a few hundred bytes read back); the CPU
+// version here (the texture read back exactly, counted with image_stats) is what the GPU's numbers
+// are tested against, and what formats the compute pass cannot read (sRGB) use. Either way the
+// inspector refreshes it when the selection or level changes and a few times a second at most
+// (TextureAnalyser), not every frame.
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,20 +59,34 @@ struct TextureAnalysis {
 TextureAnalysis analyseImage(const FloatImage& image, bool linearDepth, float cameraNear, float cameraFar,
                              int bins = 128);
 
+// The histogram's range for these statistics (its counts empty): [min, max] of the finite values of
+// every channel, logarithmic from a floor 5 decades below the top when the light has a long bright
+// tail. analyseImage and the GPU's statistics (ui/gpu_texture_stats.hpp) both choose it here.
+ValueHistogram histogramRange(const std::vector<ChannelStats>& stats, float smallestPositive,
+                              bool linearDepth, int channels);
+
 // The same linearisation the view shader does (shaders/ui/view_common.glsl).
 float linearizeDepth(float depth, float cameraNear, float cameraFar);
 
 // Keeps the analysis of the texture the inspector shows and refreshes it when what is shown changes,
 // or when it is older than `interval` seconds.
+class GpuTextureStats;
+
 class TextureAnalyser {
 public:
-    explicit TextureAnalyser(double interval = 0.5) : interval_(interval) {}
+    // forceGpu: count on the GPU even on a software renderer (tests).
+    explicit TextureAnalyser(double interval = 0.5, bool forceGpu = false);
+    ~TextureAnalyser();
+    TextureAnalyser(const TextureAnalyser&) = delete;
+    TextureAnalyser& operator=(const TextureAnalyser&) = delete;
 
     // Returns true when it read the texture back this call.
     bool update(const TextureSource& source, const ViewSettings& settings, double deltaSeconds);
     void invalidate() { valid_ = false; }
     bool valid() const { return valid_; }
     const TextureAnalysis& analysis() const { return analysis_; }
+    // Whether it counts on the GPU (a compute reduction) rather than reading the texture back.
+    bool countsOnGpu() const;
 
 private:
     double interval_;
@@ -77,6 +94,9 @@ private:
     bool valid_ = false;
     float near_ = 0.0f, far_ = 0.0f;
     TextureAnalysis analysis_;
+    bool forceGpu_ = false;
+    bool softwareChecked_ = false;
+    std::unique_ptr<GpuTextureStats> gpu_;  // made on first use, in the GL context, on a GPU
 };
 
 // The next texel holding a NaN or an infinity in any channel, in reading order (rows bottom-up, as

@@ -25,6 +25,16 @@ std::vector<std::string> chainFormatNames() {
     return names;
 }
 
+// Step 5's ways to end the chain (the `finish` parameter), cheapest last: where the composite's blur
+// happens, and whether the composite and the output transform are one pass.
+const char* const kFinishNames[] = {"full-taps", "half-wide", "full-taps-fused", "half-wide-fused"};
+bool wideTop(int finish) {
+    return finish == 1 || finish == 3;
+}
+bool fused(int finish) {
+    return finish >= 2;
+}
+
 std::string sizesText(const std::vector<BloomLevel>& levels) {
     std::string text;
     for (const BloomLevel& l : levels)
@@ -95,8 +105,16 @@ void BloomLesson::declareParams(ParamSet& params) {
     Param& format =
         params.addChoice("format", &format_, chainFormatNames(),
                          "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
-    format.knob = Knob{{0, 1, 2, 3}, 2, "format"};
+    // The other sweeps hold the format at the one step 5 uses (RGBA16F): the error of every row is
+    // measured against the Gaussian reference, not against another format.
+    format.knob = Knob{{0, 1, 2, 3}, 0, "format"};
     params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)");
+    Param& finish = params.addChoice(
+        "finish", &finish_, std::vector<std::string>(std::begin(kFinishNames), std::end(kFinishNames)),
+        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at "
+        "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
+        "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
+    finish.knob = Knob{{0, 1, 2, 3}, 2, "way"};
     params
         .addChoice(
             "tone_map", &toneCurve_, enumNameList<ToneCurve>(),
@@ -149,6 +167,7 @@ BloomChainSettings BloomLesson::chainFor(int step) const {
     if (step == Beyond) {
         s.knee = knee_;
         s.karisAverage = karis_;
+        s.wideTop = wideTop(finish_);
     }
     return s;
 }
@@ -198,6 +217,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const bool calledFor = !lacks(graph, SceneFeature::bloom);
     const bool runs = calledFor && step >= Chapter000;
     const std::string off = cat("disabled in step ", step + 1, ": no bloom yet");
+    bool presented = false;  // the fused composite wrote the output
     {
         PassGroup::Scope in(graph, bloomGroup_);
 
@@ -219,13 +239,23 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
             if (!d.empty()) {
                 int n = int(d.levels.size());
-                BloomCompositeSettings c{settings.filters, settings.upOffset, compositeScale(chainStep, n)};
-                DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
+                // With the blur done at half size (a chain of two levels or more) one bilinear tap
+                // enlarges the glow.
+                std::optional<BloomFilters> enlarge = settings.filters;
+                if (settings.wideTop && n > 1) enlarge.reset();
+                BloomCompositeSettings c{enlarge, settings.upOffset, compositeScale(chainStep, n)};
                 if (!runs) {
+                    DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
                     for (Pass* p : d.passes) p->disable(off);  // a scene without bloom has said why already
                     result.pass.disable(off);
+                } else if (step == Beyond && fused(finish_)) {
+                    // The composite and the output transform in one pass: present_ has nothing left to do.
+                    composite_.declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
+                    presented = true;
                 } else {
-                    shown = result.output;
+                    shown = composite_.declare(graph, hdr.color, d.glow(), c).output;
+                }
+                if (runs) {
                     // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
                     // Another step or Karis setting is a change of chain, not flicker: start over. A
                     // diagnostic (it reads the glow back every frame): bench frames leave it out.
@@ -241,7 +271,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             }
         }
     }  // the present pass is no part of the bloom group
-    present_.declare(graph, shown, std::nullopt, curve, exposure);
+    if (!presented) present_.declare(graph, shown, std::nullopt, curve, exposure);
 }
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {
@@ -285,6 +315,7 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (step == Beyond) {
         out.add("toneCurve", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))), "tone curve");
         out.add("reference", showsReference(step), "showing the reference Gaussian");
+        out.add("finish", kFinishNames[std::clamp(finish_, 0, 3)], "how the chain ends");
     }
     const BloomFlicker::Stats& f = flicker_.stats();
     if (f.measured && !showsReference(step) && step != WholeFrameStep) {

@@ -61,7 +61,7 @@ TEST_F(BenchSweep, CutSweepKeepsAMeasuredReferenceRowAndShowsErrors) {
     lesson.declareParams(params);
     ASSERT_TRUE(params.assign("level=2").ok());
     FrameRenderer renderer(context(), TimingMode::Fenced, true);
-    SweepResult r = sweepKnobs(lesson, params, renderer, context(), {{}, 2, 1}, "grey", 0);
+    SweepResult r = sweepKnobs(lesson, params, renderer, context(), {{}, 2, 1, {}}, "grey", 0);
 
     ASSERT_EQ(r.points.size(), 2u);  // the first value, and the reference added after the cut
     const SweepPoint* first = row(r, "0");
@@ -87,7 +87,7 @@ TEST_F(BenchSweep, ReferenceAlgorithmRowIsMeasuredNotCopied) {
     ParamSet params;
     lesson.declareParams(params);
     FrameRenderer renderer(context(), TimingMode::Fenced, true);
-    SweepResult r = sweepKnobs(lesson, params, renderer, context(), {{}, 2, 0}, "grey", 0);
+    SweepResult r = sweepKnobs(lesson, params, renderer, context(), {{}, 2, 0, {}}, "grey", 0);
 
     ASSERT_EQ(r.points.size(), 4u);  // 0, 1, 2 with the lesson's algorithm, and the reference algorithm
     for (const char* value : {"0", "1", "2"}) {
@@ -104,6 +104,84 @@ TEST_F(BenchSweep, ReferenceAlgorithmRowIsMeasuredNotCopied) {
     // The reference algorithm ran for the reference image and again for its row, as often as a value.
     EXPECT_EQ(lesson.framesBuilt(3, true), 2 * lesson.framesBuilt(0, false));
     EXPECT_EQ(lesson.framesBuilt(3, false), 0);  // the knob's reference value is not a row of its own here
+}
+
+// The unit: every row carries the copies timed between its frames, the spread of the per-frame ratios
+// around their median, and every pass's time in copies.
+TEST_F(BenchSweep, RowsCarryTheirCopyTheSpreadAndEveryPass) {
+    GreyLesson lesson;
+    ParamSet params;
+    lesson.declareParams(params);
+    FrameRenderer renderer(context(), TimingMode::Fenced, true);
+    std::vector<SweepProgress> seen;
+    SweepOptions options{{}, 3, 0, [&](const SweepProgress& p) { seen.push_back(p); }};
+    SweepResult r = sweepKnobs(lesson, params, renderer, context(), options, "grey", 0);
+
+    ASSERT_EQ(r.points.size(), 4u);  // 0, 1, 2 and the reference value 3
+    EXPECT_EQ(r.frames, 3);
+    EXPECT_GT(r.copyMs, 0.0);
+    for (const SweepPoint& p : r.points) {
+        EXPECT_GT(p.copyMs, 0.0) << p.value;
+        EXPECT_GT(p.copyMultiple, 0.0) << p.value;
+        EXPECT_LE(p.minMultiple, p.copyMultiple) << p.value;
+        EXPECT_GE(p.maxMultiple, p.copyMultiple) << p.value;
+        ASSERT_EQ(p.passes.size(), 1u) << p.value;
+        EXPECT_EQ(p.passes[0].pass, "fill");
+        EXPECT_NEAR(p.passes[0].copies, p.passes[0].medianMs / p.copyMs, 1e-9);
+    }
+    // Progress before each of the 5 rows (the reference image first), then once at the end.
+    ASSERT_EQ(seen.size(), 6u);
+    EXPECT_EQ(seen.front().done, 0);
+    EXPECT_EQ(seen.front().total, 5);
+    EXPECT_EQ(seen[1].next, "level = 0");
+    EXPECT_EQ(seen.back().done, 5);
+    EXPECT_TRUE(seen.back().next.empty());
+}
+
+// The overlay measures a row per frame: between rows the parameters are the user's again, and a
+// sweep dropped half-way leaves them as they were.
+TEST_F(BenchSweep, RowAtATimePutsTheParametersBackBetweenRows) {
+    GreyLesson lesson;
+    ParamSet params;
+    lesson.declareParams(params);
+    ASSERT_TRUE(params.assign("level=2").ok());
+    FrameRenderer renderer(context(), TimingMode::Fenced, true);
+    {
+        KnobSweep sweep(lesson, params, renderer, context(), {{}, 1, 0, {}}, "grey", 0);
+        EXPECT_EQ(sweep.progress().total, 5);
+        sweep.next();  // the reference image, at level 3
+        EXPECT_EQ(params.find("level")->text(), "2");
+        sweep.next();  // level 0
+        EXPECT_EQ(params.find("level")->text(), "2");
+        EXPECT_EQ(sweep.progress().done, 2);
+        EXPECT_FALSE(sweep.done());
+        EXPECT_EQ(sweep.result().points.size(), 1u);
+    }
+    EXPECT_EQ(params.find("level")->text(), "2");
+    EXPECT_EQ(params.find("level")->source(), ParamSource::commandLine);
+}
+
+// A lesson without knobs has nothing to sweep: no rows, and nothing rendered.
+TEST_F(BenchSweep, LessonWithoutKnobsHasNoRows) {
+    class NoKnobs final : public Lesson {
+    public:
+        LessonInfo info() const override { return {0, "plain", "no knobs", ""}; }
+        std::vector<std::string> steps() const override { return {"plain"}; }
+        Status init(const Scene&) override { return Status::success(); }
+        void buildFrame(FrameGraph& graph, const FrameInfo&) override {
+            ++built;
+            graph.addPass("fill", {}).writeColor(graph.output());
+        }
+        int built = 0;
+    } lesson;
+    ParamSet params;
+    FrameRenderer renderer(context(), TimingMode::Fenced, true);
+    KnobSweep sweep(lesson, params, renderer, context(), {{}, 2, 0, {}}, "plain", 0);
+    EXPECT_TRUE(sweep.done());
+    EXPECT_EQ(sweep.progress().total, 0);
+    EXPECT_TRUE(sweep.result().points.empty());
+    EXPECT_EQ(lesson.built, 0);
+    EXPECT_NE(noKnobsMessage("fxlab-04-x").find("no quality knobs"), std::string::npos);
 }
 
 }  // namespace

@@ -151,3 +151,51 @@ TEST_F(BloomOnGl, NormalisedGlowEnergyDoesNotGrowWithTheLevelCount) {
     EXPECT_NEAR(normalised[0], 1.0, 0.2);
     EXPECT_NEAR(normalised[1], 1.0, 0.2);
 }
+
+// Lesson 06's cheaper finish: "bloom up 0" does the composite's blur at half size (wideTop) and the
+// composite takes one bilinear tap. A uniform area keeps the chapters' gain, and a point's glow keeps
+// its energy and its fall-off within a few percent of the eight-tap composite at full size.
+TEST_F(BloomOnGl, BlurAtHalfSizeMatchesTheFullSizeComposite) {
+    BloomChainSettings wide = beyondChapters(4);
+    wide.wideTop = true;
+    {
+        EffectRunner runner(128, 64);
+        FloatImage out = runner.run(
+            uniformGrey(128, 64, 3.0f), TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle in) {
+                BloomChain::Declared d = effects.chain.declare(g, in, wide);
+                return effects.composite
+                    .declare(g, in, d.glow(),
+                             {std::nullopt, wide.upOffset, normalisedCompositeScale(0.5f, 4)})
+                    .output;
+            });
+        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        EXPECT_LE(worstRelative(out, 3.0f + 0.5f * 2.0f), kUniformTolerance);
+    }
+    EffectRunner runner(256, 128);
+    FloatImage input = spot(256, 128, 128, 64, 2, 101.0f);
+    FloatImage full = runBloom(runner, effects, input, TextureFormat::RGBA32F, beyondChapters(4), 1.0f);
+    FloatImage half = runner.run(input, TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
+        BloomChain::Declared d = effects.chain.declare(g, in, wide);
+        return effects.composite.declare(g, in, d.glow(), {std::nullopt, wide.upOffset, 1.0f}).output;
+    });
+    ASSERT_FALSE(full.empty() || half.empty()) << runner.lastErrors;
+    const double fullEnergy = energy(full, runner.storedInput), halfEnergy = energy(half, runner.storedInput);
+    EXPECT_NEAR(halfEnergy / fullEnergy, 1.0, 0.02);
+    // The glow on the spot (its own 101 taken off) and away from it (black there): the half-size blur
+    // rounds the core a little (bilinear enlargement of a blurred grid: measured 17 % lower peak, 32 %
+    // more at 4 px) and leaves the tail as it was.
+    const float fullPeak = full.texel(128, 64, 0) - 101.0f, halfPeak = half.texel(128, 64, 0) - 101.0f;
+    EXPECT_NEAR(halfPeak / fullPeak, 1.0, 0.25);
+    for (int distance : {8, 16, 32}) {
+        const double a = full.texel(128 + distance, 64, 0), b = half.texel(128 + distance, 64, 0);
+        EXPECT_NEAR(b / a, 1.0, 0.1) << distance << " px: " << a << " " << b;
+    }
+    // Without the half-size blur the single tap is visibly narrower: the comparison above can fail.
+    BloomChainSettings narrow = beyondChapters(4);
+    FloatImage oneTap = runner.run(input, TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
+        BloomChain::Declared d = effects.chain.declare(g, in, narrow);
+        return effects.composite.declare(g, in, d.glow(), {std::nullopt, narrow.upOffset, 1.0f}).output;
+    });
+    const float oneTapPeak = oneTap.texel(128, 64, 0) - 101.0f;
+    EXPECT_GT(oneTapPeak / halfPeak, 1.05) << "the half-size blur should lower the peak as the 8 taps do";
+}

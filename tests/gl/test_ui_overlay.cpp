@@ -4,6 +4,7 @@
 // it into docs/images/).
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include <imgui.h>
 
@@ -155,43 +156,96 @@ TEST_F(UiOverlay, KeepsAliveOnlyWhatTheOpenInspectorShows) {
     EXPECT_TRUE(h.lastReport.findPass("debug view")->executed) << "selecting it brings the pass back";
 }
 
-TEST_F(UiOverlay, MeasureRunsTheSweepBeforeTheNextFrame) {
+// A sweep whose rows are known: one point per next().
+class FakeSweep final : public SweepRun {
+public:
+    FakeSweep(std::vector<SweepPoint> rows, int* alive) : rows_(std::move(rows)), alive_(alive) {
+        ++*alive_;
+        r_.lesson = "test";
+        r_.width = 960;
+        r_.height = 540;
+        r_.timingMethod = "glFinish + wall clock";
+        r_.copyMs = 1.5;
+        r_.frames = 5;
+    }
+    ~FakeSweep() override { --*alive_; }
+    bool done() const override { return r_.points.size() == rows_.size(); }
+    void next() override { r_.points.push_back(rows_[r_.points.size()]); }
+    SweepProgress progress() const override {
+        return {int(r_.points.size()), int(rows_.size()), done() ? "" : rows_[r_.points.size()].value};
+    }
+    const SweepResult& result() const override { return r_; }
+
+private:
+    std::vector<SweepPoint> rows_;
+    int* alive_;
+    SweepResult r_;
+};
+
+std::vector<SweepPoint> fakeRows() {
+    std::vector<SweepPoint> rows = {{"taps", "4", false, false, 2.0, 1.3, 0.031, 30.2, 0.2},
+                                    {"taps", "8", false, true, 3.1, 2.1, 0.012, 38.4, 0.08},
+                                    {"taps", "16", false, false, 5.9, 3.9, 0.004, 47.9, 0.02},
+                                    {"taps", "12", false, false, 6.5, 4.3, 0.009, 41.0, 0.05},
+                                    {"taps", "32", true, false, 11.2, 75, 0.0, 100.0, 0.0},
+                                    {"levels", "4", false, true, 3.0, 2.0, 0.02, 34.0, 0.1},
+                                    {"levels", "6", true, false, 4.0, 2.7, 0.0, 100.0, 0.0}};
+    for (SweepPoint& p : rows) {
+        p.minMultiple = p.copyMultiple * 0.9;
+        p.maxMultiple = p.copyMultiple * 1.15;
+    }
+    return rows;
+}
+
+TEST_F(UiOverlay, MeasureRunsTheSweepOneSettingPerFrame) {
     UiHarness h(960, 540);
     TestScene scene;
     int step = 0;
-    int calls = 0;
+    int calls = 0, alive = 0;
     OverlayModel m = lessonLikeModel(&step);
-    m.measureKnobs = [&] {
+    m.measureKnobs = [&]() -> std::unique_ptr<SweepRun> {
         ++calls;
-        SweepResult r;
-        r.lesson = "test";
-        r.width = 960;
-        r.height = 540;
-        r.timingMethod = "glFinish + wall clock";
-        r.copyMs = 1.5;
-        r.points = {{"taps", "4", false, false, 2.0, 1.3, 0.031, 30.2, 0.2},
-                    {"taps", "8", false, true, 3.1, 2.1, 0.012, 38.4, 0.08},
-                    {"taps", "16", false, false, 5.9, 3.9, 0.004, 47.9, 0.02},
-                    {"taps", "12", false, false, 6.5, 4.3, 0.009, 41.0, 0.05},
-                    {"taps", "32", true, false, 11.2, 7.5, 0.0, 100.0, 0.0},
-                    {"levels", "4", false, true, 3.0, 2.0, 0.02, 34.0, 0.1},
-                    {"levels", "6", true, false, 4.0, 2.7, 0.0, 100.0, 0.0}};
-        return r;
+        return std::make_unique<FakeSweep>(fakeRows(), &alive);
     };
+    auto build = [&](FrameGraph& g) { scene.declare(g); };
     h.overlay.showFramePanel(true, true);
-    h.frame([&](FrameGraph& g) { scene.declare(g); }, m);
+    h.frame(build, m);
     EXPECT_EQ(calls, 0) << "nothing is measured until asked";
     h.overlay.costPanel().requestMeasure();
-    ByteImage shot = h.frame([&](FrameGraph& g) { scene.declare(g); }, m);
+    h.frame(build, m);
     EXPECT_EQ(calls, 1);
+    // One setting per frame: the app keeps drawing, and the panel says how far the sweep is.
+    ASSERT_TRUE(h.overlay.costPanel().progress().has_value());
+    EXPECT_EQ(h.overlay.costPanel().progress()->done, 1);
+    EXPECT_EQ(h.overlay.costPanel().progress()->total, 7);
+    EXPECT_TRUE(h.overlay.costPanel().measurePending());
+    EXPECT_FALSE(h.overlay.costPanel().result().has_value());
+    h.frame(build, m);
+    EXPECT_EQ(h.overlay.costPanel().progress()->done, 2);
+    // Cancelled: the sweep is dropped (its destructor puts the parameters back), no result appears.
+    h.overlay.costPanel().cancel();
+    EXPECT_EQ(alive, 0);
+    EXPECT_FALSE(h.overlay.costPanel().measurePending());
+    h.frame(build, m);
+    EXPECT_FALSE(h.overlay.costPanel().result().has_value());
+
+    // Measured to the end: 7 rows, 7 frames.
+    h.overlay.costPanel().requestMeasure();
+    ByteImage shot;
+    for (int i = 0; i < 7; ++i) shot = h.frame(build, m);
+    EXPECT_EQ(calls, 2);
     ASSERT_TRUE(h.overlay.costPanel().result().has_value());
     EXPECT_EQ(h.overlay.costPanel().result()->points.size(), 7u);
     EXPECT_FALSE(h.overlay.costPanel().measurePending());
+    EXPECT_EQ(alive, 0);
     EXPECT_EQ(sweptKnobs(*h.overlay.costPanel().result()), (std::vector<std::string>{"taps", "levels"}));
     ScatterPlot plot = sweepPlot(*h.overlay.costPanel().result(), "taps");
     ASSERT_EQ(plot.points.size(), 5u);
     EXPECT_TRUE(plot.points[4].isReference);
     EXPECT_TRUE(plot.points[1].isCurrent);
+    // In copies, with the spread.
+    EXPECT_DOUBLE_EQ(plot.points[0].x, 1.3);
+    EXPECT_DOUBLE_EQ(plot.points[0].xLow, 1.3 * 0.9);
     EXPECT_TRUE(writePng(pictureFolder() / "cost-panel.png", shot).ok());
 }
 

@@ -103,10 +103,12 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         TextureHandle below = k + 2 < n ? d.up[k + 1] : d.down[k + 1];
         TextureHandle base = d.down[k];
         d.up[k] = level("up", d.levels[k]);
+        const bool wide = k == 0 && settings.wideTop;
         Pass& pass = graph.addPass(cat("bloom up ", k), [=](PassContext& ctx) {
             GLuint p = up->program();
             glProgramUniform1i(p, bloom_uniform::filters, filters);
             glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
+            glProgramUniform1i(p, bloom_uniform::wide, wide ? 1 : 0);
             glProgramUniform1f(p, bloom_uniform::upScale, 1.0f);  // the chapters add every level at weight 1
             sampler->bind();
             up->draw({ctx.native(base), ctx.native(below)});

@@ -5,9 +5,11 @@
 //   "bloom bright pass"     input          -> bloom.down[0]
 //   "bloom down k"          bloom.down[k-1] -> bloom.down[k]          k = 1 .. N-1
 //   "bloom up k"            bloom.down[k] + Up(bloom.up[k+1]) -> bloom.up[k]   k = N-2 .. 0
-// (the smallest level's accumulated value is bloom.down[N-1] itself). The chapters add the enlarged
-// level onto the level in place with additive blending; keeping the sum in a texture of its own gives
-// the same numbers and lets the inspector's chain strip show every level before (bloom.down[*]) and
+// (the smallest level's accumulated value is bloom.down[N-1] itself). With settings.wideTop, "bloom up 0"
+// also blurs its own level and widens its upsample, so bloom.up[0] is the glow the composite used to
+// blur at full size with eight taps per pixel: the composite then takes one bilinear tap of it. The chapters
+// add the enlarged level onto the level in place with additive blending; keeping the sum in a texture of its
+// own gives the same numbers and lets the inspector's chain strip show every level before (bloom.down[*]) and
 // after (bloom.up[*]) accumulation. The graph tracks whole textures, so every level is a texture.
 //
 // Sizes follow the output every frame (render/bloom_levels.hpp); a level below one texel is not made,
@@ -28,7 +30,8 @@ namespace fx {
 
 // Uniform locations shared by shaders/effects/bloom/*.frag.
 namespace bloom_uniform {
-inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset = 4, karis = 5, upScale = 6;
+inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset = 4, karis = 5, upScale = 6,
+                       wide = 7, curve = 8, exposure = 9;
 }
 
 // What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.

@@ -1,6 +1,7 @@
 #include "effects/bloom/bloom_composite.hpp"
 
 #include <algorithm>
+#include <functional>
 
 namespace fx {
 
@@ -15,30 +16,60 @@ float normalisedCompositeScale(float intensity, int levels) {
 BloomComposite BloomComposite::create() {
     BloomComposite c;
     c.pass_ = FullscreenPass("effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines());
+    c.presented_ = FullscreenPass("effects/bloom/composite_present.frag",
+                                  "bloom composite + output transform", bloomShaderDefines());
     c.sampler_ = BloomSampler::create();
     return c;
 }
 
-DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
-                                     const BloomCompositeSettings& settings) const {
-    const FullscreenPass* pass = &pass_;
-    const BloomSampler* sampler = &sampler_;
-    // Filter 2 in shaders/effects/bloom/upsample.frag: one tap, the glow already full size.
+namespace {
+
+// The composite's draw, fused or not: the glow's filter, offset and scale, then scene and glow on units 0
+// and 1 with the chain's sampler. `more` sets the uniforms only one of the two programs has.
+Pass::Body compositeBody(const FullscreenPass* pass, const BloomSampler* sampler, TextureHandle scene,
+                         TextureHandle glow, const BloomCompositeSettings& settings,
+                         std::function<void(GLuint)> more) {
+    // Filter 2 in shaders/effects/bloom/bloom_common.glsl: one bilinear tap of a glow blurred already.
     int filters = settings.filters ? static_cast<int>(*settings.filters) : 2;
-    Pass& composite = graph.addPass("bloom composite", [=](PassContext& ctx) {
+    return [=](PassContext& ctx) {
         GLuint p = pass->program();
         glProgramUniform1i(p, bloom_uniform::filters, filters);
         glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
         glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
+        more(p);
         sampler->bind();
         pass->draw({ctx.native(scene), ctx.native(glow)});
         BloomSampler::unbind();
-    });
+    };
+}
+
+}  // namespace
+
+DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
+                                     const BloomCompositeSettings& settings) const {
+    Pass& composite = graph.addPass(
+        "bloom composite", compositeBody(&pass_, &sampler_, scene, glow, settings,
+                                         [](GLuint p) { glProgramUniform1i(p, bloom_uniform::wide, 0); }));
     TextureHandle result = composite.create(
         "bloom.result", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     composite.read(scene).read(glow).setState(FullscreenPass::state());
     if (!pass_.usable()) composite.disable("the bloom composite program did not build: " + pass_.error());
     return {composite, result};
+}
+
+Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
+                                       const BloomCompositeSettings& settings, ToneCurve curve,
+                                       float exposure) const {
+    Pass& declared =
+        graph.addPass("bloom composite + output transform",
+                      compositeBody(&presented_, &sampler_, scene, glow, settings, [=](GLuint p) {
+                          glProgramUniform1i(p, bloom_uniform::curve, static_cast<int>(curve));
+                          glProgramUniform1f(p, bloom_uniform::exposure, exposure);
+                      }));
+    declared.read(scene).read(glow).writeColor(graph.output()).setState(FullscreenPass::state());
+    if (!presented_.usable())
+        declared.disable("the fused bloom composite program did not build: " + presented_.error());
+    return declared;
 }
 
 }  // namespace fx

@@ -12,6 +12,8 @@
 //   0.5f, 2.0f});
 #include <optional>
 
+#include "scene/scene_post.hpp"
+
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/post/fullscreen_pass.hpp"
@@ -42,8 +44,16 @@ public:
     DeclaredPass declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
                          const BloomCompositeSettings& settings) const;
 
+    // "bloom composite + output transform": the same sum, through the output transform
+    // (effects/post/output_transform_pass.hpp: tone curve, exposure, sRGB encoding) straight into the
+    // graph's output, with no bloom.result in between. One pass instead of two: bloom.result is
+    // neither written nor read back at full size.
+    Pass& declarePresented(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
+                           const BloomCompositeSettings& settings, ToneCurve curve, float exposure) const;
+
 private:
     FullscreenPass pass_;
+    FullscreenPass presented_;
     BloomSampler sampler_;
 };
 

@@ -39,6 +39,10 @@ struct BloomChainSettings {
     float downOffset = 0.75f;   // tap offsets in source texels (Shader effects: 1 and 1)
     float upOffset = 0.5f;
     bool karisAverage = false;  // weight the bright pass's taps by 1 / (1 + luma): fewer fireflies
+    // The composite's blur done at half size: "bloom up 0" filters its own level too and widens its
+    // upsample, and the composite reads the glow with one bilinear tap (BloomCompositeSettings::filters
+    // empty) instead of eight taps at every full-size pixel.
+    bool wideTop = false;
     TextureFormat format = TextureFormat::RGBA16F;  // of every level
 };
 

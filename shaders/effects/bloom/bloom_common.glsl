@@ -33,3 +33,25 @@ float luma(vec3 c) {
 vec2 texelSize(sampler2D s) {
     return 1.0 / vec2(max(textureSize(s, 0), ivec2(1)));
 }
+
+// The upsample filters (effects/bloom/bloom_settings.hpp), `offset` in texels of `source`:
+//   filters 0 (Shader effects): centre x3, 4 diagonals at +-offset x2, 4 axial at 2 offset x1, / 15;
+//   filters 1 (Bloom chapter): 4 axial taps at 2 offset x1, 4 diagonal at offset x2, / 12;
+//   filters 2: one bilinear tap.
+// `source` must be sampled with GL_LINEAR (the chain's sampler): each tap then averages four texels.
+vec3 upsampleFilter(sampler2D source, vec2 uv, int filters, float offset) {
+    if (filters == 2) return texture(source, uv).rgb;
+    vec2 o = offset * texelSize(source);
+    vec3 diagonals = texture(source, uv + vec2(-o.x, o.y)).rgb + texture(source, uv + vec2(o.x, o.y)).rgb +
+                     texture(source, uv + vec2(-o.x, -o.y)).rgb + texture(source, uv + vec2(o.x, -o.y)).rgb;
+    vec3 axial = texture(source, uv + vec2(-2.0 * o.x, 0.0)).rgb + texture(source, uv + vec2(2.0 * o.x, 0.0)).rgb +
+                 texture(source, uv + vec2(0.0, -2.0 * o.y)).rgb + texture(source, uv + vec2(0.0, 2.0 * o.y)).rgb;
+    return filters == 0 ? (3.0 * texture(source, uv).rgb + 2.0 * diagonals + axial) / 15.0
+                        : (2.0 * diagonals + axial) / 12.0;
+}
+
+// The widening of the upsample for the top level when it also does the composite's blur (`wide` in
+// upsample.frag): the composite's filter at this level's texels convolved with the upsample of the level
+// below, whose texels are twice as large. Variances add: s^2 (here) + (2 s)^2 (below, in these texels) =
+// 5 s^2, which is the same filter at sqrt(5) / 2 = 1.118 times its offset in the lower level's texels.
+const float kWideUpsampleScale = 1.118034;

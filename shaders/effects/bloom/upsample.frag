@@ -6,7 +6,10 @@
 // before, so the inspector can show both chains.
 //   filters 0 (Shader effects): centre x3, 4 diagonals at +-offset (1) texels x2, 4 axial at 2 offset x1, / 15;
 //   filters 1 (Bloom chapter): 4 axial taps at 2 offset (2 x 0.5) x1, 4 diagonal at offset x2, / 12;
-//   filters 2 (reference): one tap, source and target the same size.
+//   filters 2 (reference, or a glow already blurred at its own size): one bilinear tap.
+// `wide` (the top level, when the composite takes a single tap): the level itself is blurred with the
+// same filter and the level below is enlarged with a filter widened to match (kWideUpsampleScale), so
+// the blur the composite did at full size is done here at half size (effects/bloom/bloom_chain.hpp).
 // Every sum is clamped below BLOOM_MAX_VALUE: levels that are finite alone cannot overflow a half
 // float once they are added up (Bloom chapter, hard case 2).
 #include "bloom_common.glsl"
@@ -16,29 +19,17 @@ layout(binding = 1) uniform sampler2D source;
 layout(location = 0) uniform int filters;
 layout(location = 4) uniform float offset;
 layout(location = 6) uniform float scale;
+layout(location = 7) uniform bool wide;
 
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 color;
 
-vec3 tap(vec2 at) {
-    return texture(source, at).rgb;
-}
-
 void main() {
-    vec3 up;
-    if (filters == 2) {
-        up = tap(uv);
-    } else {
-        vec2 o = offset * texelSize(source);
-        vec3 diagonals = tap(uv + vec2(-o.x, o.y)) + tap(uv + vec2(o.x, o.y)) + tap(uv + vec2(-o.x, -o.y)) +
-                         tap(uv + vec2(o.x, -o.y));
-        vec3 axial = tap(uv + vec2(-2.0 * o.x, 0.0)) + tap(uv + vec2(2.0 * o.x, 0.0)) +
-                     tap(uv + vec2(0.0, -2.0 * o.y)) + tap(uv + vec2(0.0, 2.0 * o.y));
-        up = filters == 0 ? (3.0 * tap(uv) + 2.0 * diagonals + axial) / 15.0 : (2.0 * diagonals + axial) / 12.0;
-    }
+    vec3 up = upsampleFilter(source, uv, filters, wide ? offset * kWideUpsampleScale : offset);
     // The scene under the glow keeps its sign (a negative texel stays as the scene made it); the glow
     // itself is never negative.
-    vec3 under = finiteClamp(texelFetch(base, ivec2(gl_FragCoord.xy), 0).rgb, -BLOOM_MAX_VALUE, BLOOM_MAX_VALUE);
+    vec3 own = wide ? upsampleFilter(base, uv, filters, offset) : texelFetch(base, ivec2(gl_FragCoord.xy), 0).rgb;
+    vec3 under = finiteClamp(own, -BLOOM_MAX_VALUE, BLOOM_MAX_VALUE);
     vec3 glow = finiteClamp(up, 0.0, BLOOM_MAX_VALUE);
     color = vec4(finiteClamp(under + scale * glow, -BLOOM_MAX_VALUE, BLOOM_MAX_VALUE), 1.0);
 }

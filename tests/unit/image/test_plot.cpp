@@ -67,6 +67,70 @@ TEST(Plot, ParetoFrontSkipsNanAndDuplicates) {
     EXPECT_TRUE(paretoFront({}).empty());
 }
 
+// Times measured with a spread: a point that is cheaper only within the noise is no trade-off.
+TEST(Plot, ParetoFrontJoinsOnlyPointsWhoseSpreadsDoNotOverlap) {
+    PlotPoint a{"a", 10.0, 0.02}, b{"b", 10.5, 0.01}, c{"c", 30.0, 0.001};
+    // Without spreads all three are a trade-off.
+    EXPECT_EQ(paretoFront({a, b, c}), (std::vector<std::size_t>{0, 1, 2}));
+    // a's time overlaps b's: b is as cheap as far as anyone can tell, and more accurate.
+    a.xLow = 9.0, a.xHigh = 11.0;
+    b.xLow = 9.5, b.xHigh = 11.5;
+    c.xLow = 28.0, c.xHigh = 33.0;
+    EXPECT_EQ(paretoFront({a, b, c}), (std::vector<std::size_t>{1, 2}));
+    // Spreads that stay apart keep both.
+    a.x = 9.2, a.xLow = 9.0, a.xHigh = 9.4;
+    EXPECT_EQ(paretoFront({a, b, c}), (std::vector<std::size_t>{0, 1, 2}));
+}
+
+// Lesson 01's mesh detail as measured: each cheaper setting's spread overlaps the next one's, so
+// the front steps from the most accurate down only to settings clearly cheaper than the last.
+TEST(Plot, ParetoFrontStepsOnlyToClearlyCheaperSettings) {
+    std::vector<PlotPoint> p = {{"16", 1.51, 0.0196},
+                                {"32", 1.94, 0.0098},
+                                {"64", 2.4, 0.0046},
+                                {"128", 5.11, 0.0020},
+                                {"256", 17.3, 0.0, true}};
+    const double spread[][2] = {{1.04, 1.7}, {1.12, 2.32}, {2.25, 4.59}, {3.33, 7.11}, {14.0, 21.5}};
+    for (std::size_t i = 0; i < p.size(); ++i) p[i].xLow = spread[i][0], p[i].xHigh = spread[i][1];
+    EXPECT_EQ(paretoFront(p), (std::vector<std::size_t>{1, 3, 4}));
+}
+
+// The bloom bench: settings near 10 copies and a reference near 550 on one axis.
+TEST(Plot, WideXRangeGetsALogAxisAndSettingsStayApart) {
+    EXPECT_TRUE(wantsLogAxis(10.0, 550.0));
+    EXPECT_FALSE(wantsLogAxis(10.0, 150.0));
+    EXPECT_FALSE(wantsLogAxis(0.0, 550.0));
+    ScatterPlot plot;
+    for (int i = 0; i < 6; ++i)
+        plot.points.push_back({std::to_string(i + 2), 10.0 + i * 0.5, 0.01 * (6 - i)});
+    plot.points.push_back({"Gaussian", 550.0, 0.0, true});
+    PlotLayout layout = layoutScatterPlot(plot, 960, 600);
+    EXPECT_TRUE(layout.xAxis.logarithmic);
+    // On a linear axis 0.5 copies would be under 1 pixel apart; on the log axis they are several.
+    EXPECT_GT(layout.pixelX(10.5) - layout.pixelX(10.0), 4.0);
+    plot.logX = false;
+    EXPECT_FALSE(layoutScatterPlot(plot, 960, 600).xAxis.logarithmic);
+}
+
+// Crowded points: every label drawn overlaps no other label and no marker.
+TEST(Plot, LabelsNeverOverlap) {
+    ScatterPlot plot;
+    for (int i = 0; i < 14; ++i)
+        plot.points.push_back({"setting " + std::to_string(i), 10.0 + i * 0.05, 0.02 + 0.0005 * (i % 3)});
+    plot.points.push_back({"ref", 11.0, 0.0, true});
+    std::vector<PlotBox> labels;
+    renderScatterPlot(plot, 640, 400, &labels);
+    ASSERT_FALSE(labels.empty());
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+            EXPECT_EQ(labels[i].overlap(labels[j]), 0.0) << i << " and " << j;
+    // Spread out, every point gets its label.
+    ScatterPlot sparse;
+    for (int i = 0; i < 5; ++i) sparse.points.push_back({"s" + std::to_string(i), 1.0 + i, 0.1 * (5 - i)});
+    renderScatterPlot(sparse, 960, 600, &labels);
+    EXPECT_EQ(labels.size(), 5u);
+}
+
 TEST(Plot, SampleSweepDrawsFrontMarkersAndText) {
     const ScatterPlot plot = bloomSweep();
     const ByteImage image = renderScatterPlot(plot, 960, 600);
