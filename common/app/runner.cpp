@@ -15,9 +15,9 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "effects/scene/scene_work.hpp"
-#include "scene/scene_cloud_settings.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_post.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace fx {
 namespace {
@@ -89,16 +89,12 @@ std::optional<int> loadLessonScene(RunSession& s) {
         return 1;
     }
     s.scene = std::move(*scene);
-    std::vector<SettingText> sceneSettings = postEffectSettings(s.scene.postEffects);
-    std::vector<std::string> knownSettings = postEffectSettingPaths();
-    for (SettingText& setting : cloudLayerSettings(s.scene.clouds))
-        sceneSettings.push_back(std::move(setting));
-    for (std::string& path : cloudLayerSettingPaths()) knownSettings.push_back(std::move(path));
-    if (auto applied = s.params.applyScene(sceneSettings, knownSettings, sceneFile.string()); !applied) {
+    const std::vector<SettingText> settings = sceneSettings(s.scene);
+    if (auto applied = s.params.applyScene(settings, sceneSettingPaths(), sceneFile.string()); !applied) {
         std::cerr << s.exe << ": " << applied.error() << "\n";
         return 2;
     }
-    if (auto unused = s.params.unusedSettings(sceneSettings); !unused.empty()) {
+    if (auto unused = s.params.unusedSettings(settings); !unused.empty()) {
         std::string list;
         for (const std::string& setting : unused) list += (list.empty() ? "" : ", ") + setting;
         log::info(sceneFile.filename().string(), ": no parameter of this lesson starts from ", list);

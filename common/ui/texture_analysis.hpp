@@ -8,8 +8,8 @@
 // (TextureAnalyser), not every frame.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 

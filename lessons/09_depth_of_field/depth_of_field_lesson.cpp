@@ -24,11 +24,6 @@ float aspectOf(Size2D size) {
     return size.width > 0 && size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
 }
 
-// The scene value unless the command line changed the parameter from the lesson's default.
-void fromLens(float& value, float lessonDefault, float sceneValue) {
-    if (value == lessonDefault) value = sceneValue;
-}
-
 }  // namespace
 
 LessonInfo DepthOfFieldLesson::info() const {
@@ -48,15 +43,21 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 }
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
-    params.addFloat(
-        "focal_length", &focalLengthMm_, 0.0f, 2000.0f,
-        "Steps 4 to 7: focal length (mm; the chapter: the image distance); starts from camera.lens");
-    params.addFloat("sensor_width", &sensorWidthMm_, 1.0f, 100.0f, "Steps 4 to 7: sensor width (mm)");
-    params.addFloat("f_number", &fNumber_, 0.0f, 32.0f,
-                    "Steps 4 to 7: f-number N; the aperture is F / N (below 0.5 counts as 0.5)");
-    params.addFloat("focus_distance", &focusM_, -1.0f, 300.0f,
-                    "Steps 4 to 7: focus distance (m); at or inside the focal length counts as 1.001 focal "
-                    "lengths");
+    params
+        .addFloat("focal_length", &focalLengthMm_, 0.0f, 2000.0f,
+                  "Steps 4 to 7: focal length (mm; the chapter: the image distance)")
+        .fromScene("camera.lens.focalLength");
+    params.addFloat("sensor_width", &sensorWidthMm_, 1.0f, 100.0f, "Steps 4 to 7: sensor width (mm)")
+        .fromScene("camera.lens.sensorWidth");
+    params
+        .addFloat("f_number", &fNumber_, 0.0f, 32.0f,
+                  "Steps 4 to 7: f-number N; the aperture is F / N (below 0.5 counts as 0.5)")
+        .fromScene("camera.lens.fNumber");
+    params
+        .addFloat("focus_distance", &focusM_, -1.0f, 300.0f,
+                  "Steps 4 to 7: focus distance (m); at or inside the focal length counts as 1.001 focal "
+                  "lengths")
+        .fromScene("camera.lens.focusDistance");
     params.addBool(
         "chapter_compatible", &chapterCompatible_,
         "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
@@ -95,13 +96,6 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
 Status DepthOfFieldLesson::init(const Scene& scene) {
     scene_ = &scene;
     view_ = scene;
-    if (scene.camera.lens) {
-        const Lens& lens = *scene.camera.lens;
-        fromLens(focalLengthMm_, 31.1769f, lens.focalLengthMm);
-        fromLens(sensorWidthMm_, 36.0f, lens.sensorWidthMm);
-        fromLens(fNumber_, 1.4f, lens.fNumber);
-        fromLens(focusM_, 15.264f, lens.focusDistanceM);
-    }
     meshes_ = SceneMeshes(scene);
     scenePass_ = HdrScenePass::create();
     dof_ = DepthOfField::create();

@@ -1,0 +1,47 @@
+#include "scene/scene_settings.hpp"
+
+#include "scene/scene_post.hpp"
+
+namespace fx {
+
+std::vector<SettingText> cameraLensSettings(const std::optional<Lens>& lens) {
+    if (!lens) return {};
+    return {
+        {"camera.lens.focalLength", settingNumberText(lens->focalLengthMm)},
+        {"camera.lens.sensorWidth", settingNumberText(lens->sensorWidthMm)},
+        {"camera.lens.fNumber", settingNumberText(lens->fNumber)},
+        {"camera.lens.focusDistance", settingNumberText(lens->focusDistanceM)},
+    };
+}
+
+std::vector<SettingText> cloudLayerSettings(const std::vector<CloudLayer>& clouds) {
+    if (clouds.empty()) return {};
+    const CloudLayer& c = clouds.front();
+    return {
+        {"clouds[0].bottom", settingNumberText(c.bottom)},
+        {"clouds[0].top", settingNumberText(c.top)},
+        {"clouds[0].noise[0].scale", settingNumberText(c.noise[0].scale)},
+        {"clouds[0].noise[1].scale", settingNumberText(c.noise[1].scale)},
+        {"clouds[0].threshold", settingNumberText(c.threshold)},
+        {"clouds[0].steps", std::to_string(c.steps)},
+    };
+}
+
+std::vector<SettingText> sceneSettings(const Scene& scene) {
+    std::vector<SettingText> settings = postEffectSettings(scene.postEffects);
+    for (SettingText& s : cameraLensSettings(scene.camera.lens)) settings.push_back(std::move(s));
+    for (SettingText& s : cloudLayerSettings(scene.clouds)) settings.push_back(std::move(s));
+    return settings;
+}
+
+std::vector<std::string> sceneSettingPaths() {
+    std::vector<std::string> paths = postEffectSettingPaths();
+    Scene everything;
+    everything.camera.lens = Lens{};
+    everything.clouds.push_back(CloudLayer{});
+    for (SettingText& s : cameraLensSettings(everything.camera.lens)) paths.push_back(std::move(s.setting));
+    for (SettingText& s : cloudLayerSettings(everything.clouds)) paths.push_back(std::move(s.setting));
+    return paths;
+}
+
+}  // namespace fx
