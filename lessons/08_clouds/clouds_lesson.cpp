@@ -232,7 +232,8 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         // Without a cloud layer the direct pass is declared (and not called for): no textures at all.
         const bool temporal = frame.step == Beyond && !lacks(graph, SceneFeature::clouds);
         // The ground darkened under the clouds before the clouds are laid over it (not the clouds).
-        if (temporal && cloudShadows_) {
+        // Declared without a cloud layer too: the group shows both passes as not called for.
+        if (frame.step == Beyond && cloudShadows_) {
             CloudShadowSettings shadow;
             shadow.toLight = cloudShadowToLight(sunDirection_);
             cloudShadow_.declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
