@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include <imgui.h>
+#include <glm/trigonometric.hpp>
 
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
@@ -294,6 +295,12 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
         out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
         out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
+        // The sun's height decides the shadow's path through the slab (thickness / sin, sin held at 0.1 or
+        // more).
+        const float sunDegrees =
+            glm::degrees(std::asin(std::clamp(cloudShadowToLight(sunDirection_).y, -1.0f, 1.0f)));
+        out.add("cloudShadow", cloudShadows_ ? cat("on, sun ", sunDegrees, " degrees up") : "off",
+                "cloud shadows on the ground");
     }
     glm::vec4 o = scroll_.offset();
     out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");

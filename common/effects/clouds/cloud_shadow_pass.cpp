@@ -5,16 +5,11 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/matrix.hpp>
 
 namespace fx {
 namespace {
 
-// cloud_shadow.frag (the locations it shares with clouds.frag mean the same)
-constexpr GLint kInverseProjection = 0;
-constexpr GLint kViewToWorldRotation = 1;
-constexpr GLint kCameraPosition = 2;
-constexpr GLint kOffsets = 3;
+// cloud_shadow.frag (0 to 3: the camera, set by setCloudCameraUniforms as for clouds.frag)
 constexpr GLint kRangeCountStep = 4;
 constexpr GLint kThresholdPair = 5;
 constexpr GLint kScales = 7;
@@ -28,13 +23,6 @@ constexpr GLint kSunShare = 0;
 // The clouds' Beer-Lambert extinction (clouds.frag): a vertical path through 1/8 of the slab takes the
 // chapter's 0.3 per unit of density, so the shadow is as dense as the cloud looks.
 constexpr float kDensityScale = 0.3f;
-
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
 
 }  // namespace
 
@@ -55,14 +43,7 @@ CloudShadowPass CloudShadowPass::create() {
 void CloudShadowPass::setMapUniforms(const CloudFrameSettings& s, const CloudShadowSettings& shadow,
                                      Size2D target) const {
     GLuint prog = map_.program();
-    glm::mat4 inverseProjection = glm::inverse(s.projection);
-    if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
-    glm::mat3 rotation = glm::transpose(glm::mat3(s.view));
-    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
-    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
-    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
-    glm::vec4 offsets = cloudShaderOffsets(s);
-    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+    setCloudCameraUniforms(prog, s);
     // No slab (cloud_march.hpp's guards): bottom == top, and the shader returns 1.
     glm::vec4 range =
         s.march.drawn ? s.march.rangeCountStep() : glm::vec4(s.march.bottom, s.march.bottom, 0, 0);
