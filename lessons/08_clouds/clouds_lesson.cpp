@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include <imgui.h>
+#include <glm/trigonometric.hpp>
 
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
@@ -55,7 +56,7 @@ std::vector<std::string> CloudsLesson::steps() const {
         "The eye inside the layer, and a 4x4 Bayer dither",
         "Object shadows on the clouds",
         "Threshold and height shaping",
-        "Beyond the chapter: moving jitter, Beer-Lambert steps, distance occlusion",
+        "Beyond the chapter: moving jitter, Beer-Lambert steps, distance occlusion, cloud shadows",
     };
 }
 
@@ -110,16 +111,23 @@ void CloudsLesson::declareParams(ParamSet& params) {
                    "Step 9: opacity from each step's length (the same picture at any sample count)");
     params.addBool("distance_occlusion", &distanceOcclusion_,
                    "Step 9: stop each ray at the surface's distance instead of comparing heights");
+    params.addBool(
+        "cloud_shadow", &cloudShadows_,
+        "Step 9: the clouds' shadows on the ground, marched toward the sun through the same density");
 }
 
 Status CloudsLesson::init(const Scene& scene) {
     scene_ = &scene;
     viewScene_ = scene;
-    if (const Light* light = shadowCastingLight(scene)) sceneShadow_ = light->shadow;
+    if (const Light* light = shadowCastingLight(scene)) {
+        sceneShadow_ = light->shadow;
+        sunDirection_ = light->direction;
+    }
     meshes_ = SceneMeshes(scene);
     shadows_ = ShadowMap::create();
     lit_ = ShadowLitPass::create();
     clouds_ = CloudPass::create();
+    cloudShadow_ = CloudShadowPass::create();
     temporal_ = CloudTemporal::create();
     present_ = OutputTransformPass::create();
     if (!scene.clouds.empty()) {
@@ -224,6 +232,13 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         // Step 9 always marches into a layer of its own ("clouds.result", what the bench compares).
         // Without a cloud layer the direct pass is declared (and not called for): no textures at all.
         const bool temporal = frame.step == Beyond && !lacks(graph, SceneFeature::clouds);
+        // The ground darkened under the clouds before the clouds are laid over it (not the clouds).
+        // Declared without a cloud layer too: the group shows both passes as not called for.
+        if (frame.step == Beyond && cloudShadows_) {
+            CloudShadowSettings shadow;
+            shadow.toLight = cloudShadowToLight(sunDirection_);
+            cloudShadow_.declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
+        }
         if (temporal) {
             CloudTemporalOptions options{q.accumulate, q.halfResolution};
             temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
@@ -280,6 +295,12 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
         out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
         out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
+        // The sun's height decides the shadow's path through the slab (thickness / sin, sin held at 0.1 or
+        // more).
+        const float sunDegrees =
+            glm::degrees(std::asin(std::clamp(cloudShadowToLight(sunDirection_).y, -1.0f, 1.0f)));
+        out.add("cloudShadow", cloudShadows_ ? cat("on, sun ", sunDegrees, " degrees up") : "off",
+                "cloud shadows on the ground");
     }
     glm::vec4 o = scroll_.offset();
     out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");

@@ -7,6 +7,7 @@
 #include "app/lesson.hpp"
 #include "effects/clouds/cloud_march.hpp"
 #include "effects/clouds/cloud_pass.hpp"
+#include "effects/clouds/cloud_shadow_pass.hpp"
 #include "effects/clouds/cloud_temporal.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
@@ -69,8 +70,9 @@ private:
     int dither_ = int(fx::CloudDither::ign);
     bool beerLambert_ = true;
     bool distanceOcclusion_ = true;
-    int accumulate_ = 1;  // step 9: 0 off, 1 on
-    int resolution_ = 0;  // step 9: 0 full, 1 half
+    bool cloudShadows_ = true;  // step 9: the clouds' shadows on the ground
+    int accumulate_ = 1;        // step 9: 0 off, 1 on
+    int resolution_ = 0;        // step 9: 0 full, 1 half
 
     int quality_ = 0;  // step 9: 0 the knobs above, else one of kQualityPresets
 
@@ -84,7 +86,9 @@ private:
     fx::ShadowMap shadows_;
     fx::ShadowLitPass lit_;
     fx::CloudPass clouds_;
-    fx::CloudDensityTexture density_;  // loaded only when the scene has a cloud layer
+    fx::CloudShadowPass cloudShadow_;
+    glm::vec3 sunDirection_{0.0f, -1.0f, 0.0f};  // where the shadow-casting light travels
+    fx::CloudDensityTexture density_;            // loaded only when the scene has a cloud layer
     fx::OutputTransformPass present_;
     fx::CloudTemporal temporal_;
     int jitterFrame_ = 0;  // counts declared frames: moves IGN and R2 (the bench repeats one frame index)

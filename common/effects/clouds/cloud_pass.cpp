@@ -73,6 +73,17 @@ glm::vec4 cloudShaderOffsets(const CloudFrameSettings& s) {
     return out;
 }
 
+void setCloudCameraUniforms(GLuint prog, const CloudFrameSettings& s) {
+    glm::mat4 inverseProjection = glm::inverse(s.projection);
+    if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
+    glm::mat3 rotation = glm::transpose(glm::mat3(s.view));  // the inverse of a rotation
+    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
+    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
+    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
+    glm::vec4 offsets = cloudShaderOffsets(s);
+    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+}
+
 ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
     ShadowLookup l = sceneLookup;
     l.normalOffsetMetres = 0.0f;
@@ -120,14 +131,7 @@ PassState CloudPass::state() {
 
 void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
     GLuint prog = program();
-    glm::mat4 inverseProjection = glm::inverse(s.projection);
-    if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
-    glm::mat3 rotation = glm::transpose(glm::mat3(s.view));  // the inverse of a rotation
-    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
-    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
-    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
-    glm::vec4 offsets = cloudShaderOffsets(s);
-    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+    setCloudCameraUniforms(prog, s);
     glm::vec4 rcs = s.march.rangeCountStep();
     if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
     glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));

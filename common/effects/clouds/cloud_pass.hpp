@@ -69,6 +69,11 @@ struct CloudFrameSettings {
 // small however far the camera is from the origin.
 glm::vec4 cloudShaderOffsets(const CloudFrameSettings& settings);
 
+// Sets the camera's uniforms of a cloud shader (locations 0 to 3 of clouds.frag and cloud_shadow.frag:
+// inverse projection, view-to-world rotation, camera position, texture offsets), with the same
+// matrices that drew the scene; a projection without a finite inverse gets the identity.
+void setCloudCameraUniforms(GLuint program, const CloudFrameSettings& settings);
+
 // The shadow lookup the clouds use: the scene's, with fewer PCF taps (a lookup per sample) and no
 // normal offset (clouds have no normal; the sample moves back along the view ray instead).
 ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup);
