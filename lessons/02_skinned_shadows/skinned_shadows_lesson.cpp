@@ -30,6 +30,7 @@ std::vector<std::string> SkinnedShadowsLesson::steps() const {
         "A shadow program for skinned meshes",
         "T*(J*p) against (T*J)*p, with a crowd",
         "The GL error flood, and asking the program",
+        "Alpha-cutout shadows: one cutoff per program",
     };
 }
 
@@ -51,6 +52,9 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
     params.addChoice("material_upload", &materialUpload_, {"always", "ask_program"},
                      "Step 4: upload material uniforms to the skinned shadow program always (the chapter's "
                      "GL error flood) or only if the program has them (the fix)");
+    params.addChoice("cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
+                     "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: "
+                     "the skinned lattice mannequin casts a solid shadow) or on every shadow program");
 }
 
 Status SkinnedShadowsLesson::init(const Scene& scene) {
@@ -93,8 +97,11 @@ ShadowPassOptions SkinnedShadowsLesson::shadowOptionsForStep(int step, bool benc
             o.product = productOrder_ == 0 ? SkinningProduct::grouped : SkinningProduct::parenthesised;
             o.skinnedPlacements = crowdPlacements(crowd_);
             break;
-        default:  // ErrorFlood
+        case ErrorFlood:
             o.materialUpload = materialUpload_ == 0 ? MaterialUpload::always : MaterialUpload::askProgram;
+            break;
+        default:  // CutoutShadows
+            o.cutoff = cutoffUniform_ == 0 ? CutoffUniform::firstProgramOnly : CutoffUniform::everyProgram;
             break;
     }
     return o;
@@ -143,6 +150,13 @@ void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
             "Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, "
             "which the parentheses do not change.");
     }
+    if (frame.step == CutoutShadows) {
+        ImGui::TextWrapped("alpha cutoff %.1f set on: %s", double(kAlphaCutoff),
+                           cutoffUniform_ == 0
+                               ? "the static shadow program only (the skinned one keeps 0: "
+                                 "the mannequin's shadow is solid)"
+                               : "both shadow programs (the lattice's holes reach the ground)");
+    }
     if (frame.step == ErrorFlood) {
         ImGui::TextWrapped("material upload: %s",
                            materialUpload_ == 0
@@ -180,6 +194,9 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
     } else if (frame.previousFrame) {
         out.add("shadowMs", cat(shadowMs), "shadow pass (ms)");
     }
+    if (frame.step == CutoutShadows)
+        out.add("alphaCutoffOnSkinnedProgram", cutoffUniform_ == 0 ? "0 (never set)" : cat(kAlphaCutoff),
+                "alpha cutoff of the skinned shadow program");
     // Step 4 exists to show GL errors (counted as expected); the smoke test checks that it does.
     out.check("expectErrorsInStep", frame.step == ErrorFlood && materialUpload_ == 0);
 }

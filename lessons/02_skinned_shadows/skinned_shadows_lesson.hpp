@@ -24,7 +24,7 @@ public:
     int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
 
-    enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood };
+    enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood, CutoutShadows };
 
     // What the shadow pass does in a step (public so tests can build the same frame).
     fx::ShadowPassOptions shadowOptionsForStep(int step, bool benchmark) const;
@@ -39,6 +39,7 @@ private:
     int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
     int crowd_ = 16;
     int materialUpload_ = 0;  // 0: always (the chapter's flood), 1: ask the program
+    int cutoffUniform_ = 0;   // 0: first program only (the chapter's bug), 1: every program
 
     const fx::Scene* scene_ = nullptr;
     fx::ShadowSettings sceneShadow_;

@@ -38,6 +38,7 @@ std::vector<GeneratedFile> generateAssets() {
     addTexture(files, "fire_sprite", fireSprite());
     addTexture(files, "crate_planks", cratePlanks());
     addTexture(files, "suit_fabric", suitFabric());
+    addTexture(files, "cutout_lattice", cutoutLattice());
     return files;
 }
 

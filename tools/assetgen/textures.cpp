@@ -175,4 +175,23 @@ ByteImage suitFabric() {
     return image;
 }
 
+ByteImage cutoutLattice() {
+    constexpr int kSize = 128;
+    constexpr int kCell = 64;  // 2 cells across: holes big enough to see in a shadow on the ground
+    constexpr int kBar = 16;   // bar width; the hole is the rest of the cell
+    ByteImage image = makeByteImage(kSize, kSize, 4);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            // Bars sit on the cell borders (half a bar each side), so the pattern tiles.
+            int cx = (x + kBar / 2) % kCell, cy = (y + kBar / 2) % kCell;
+            bool bar = cx < kBar || cy < kBar;
+            image.texel(x, y, 0) = 214;
+            image.texel(x, y, 1) = 188;
+            image.texel(x, y, 2) = 140;
+            image.texel(x, y, 3) = bar ? 255 : 0;
+        }
+    }
+    return image;
+}
+
 }  // namespace fx::assetgen

@@ -33,4 +33,9 @@ ByteImage cratePlanks();
 // multiplies; tiles seamlessly.
 ByteImage suitFabric();
 
+// res/textures/cutout_lattice.png: 128x128 RGBA lattice for an alpha-tested (cut-out) material: 2x2
+// square holes of alpha 0 (48 texels across) between opaque bars 16 texels wide, RGB a pale wicker
+// colour. No partly transparent texels, so any cutoff in (0, 1] cuts the same holes (Shader effects §2).
+ByteImage cutoutLattice();
+
 }  // namespace fx::assetgen

@@ -94,7 +94,9 @@ void GpuModel::draw(GLuint program, const glm::mat4& objectModel, const ModelDra
                 glProgramUniform3fv(program, uniform_location::emissive, 1, glm::value_ptr(emissive));
             }
             if (style.bindTextures) {
-                glBindTextureUnit(texture_unit::baseColor, material.baseColorTexture);
+                glBindTextureUnit(texture_unit::baseColor, style.baseColorTexture
+                                                               ? style.baseColorTexture
+                                                               : material.baseColorTexture);
                 glBindTextureUnit(texture_unit::emissive, material.emissiveTexture);
             }
             if (!part.skinned) {

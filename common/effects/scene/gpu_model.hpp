@@ -30,6 +30,7 @@ struct ModelDrawStyle {
     glm::vec3 addedEmissive{0.0f};  // added to each material's emissive colour
     bool setMaterial = true;        // upload base colour and emissive (a depth-only program has neither)
     bool bindTextures = true;       // base colour texture on unit 0, emissive on unit 1
+    GLuint baseColorTexture = 0;    // not 0: bound instead of every material's own base colour texture
     SkinnedDraw skinned = SkinnedDraw::posed;
 };
 

@@ -60,6 +60,9 @@ SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
             cached = files_.emplace(key, std::make_shared<const GltfModel>(std::move(*loaded))).first;
         }
         meshes.model = std::make_unique<GpuModel>(cached->second, *textures_, label);
+        // The scene's texture replaces the model's own (lesson 02 dresses a character in a cut-out lattice).
+        if (!object.material.baseColorTexture.empty())
+            meshes.baseColorTexture = textures_->file(object.material.baseColorTexture.resolved);
         if (!object.animation.clips.empty()) {
             auto clip = selectClips(*cached->second, object.animation);
             meshes.speed = object.animation.speed;
@@ -149,6 +152,7 @@ std::size_t SceneMeshes::draw(GLuint program, const Scene& scene, double seconds
             style.addedEmissive = object.material.emitted();
             style.setMaterial = options.setMaterial;
             style.bindTextures = options.bindTextures;
+            style.baseColorTexture = meshes.baseColorTexture;
             style.skinned = options.skinned;
             meshes.model->draw(program, model, style);
             ++drawn;

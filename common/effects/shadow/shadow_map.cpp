@@ -19,6 +19,8 @@ constexpr GLint kLookupMatrixLocation = 40;
 constexpr GLint kLookupParamsLocation = 41;
 constexpr GLint kLookupTapsLocation = 42;
 constexpr GLint kLookupToLightLocation = 43;
+// shadow_depth.frag
+constexpr GLint kAlphaCutoffLocation = 5;
 
 constexpr int kMaxMapSize = 8192;
 // A walking character's limbs leave its bind-pose box; this much room around skinned meshes keeps
@@ -191,11 +193,16 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
         const float* vp = glm::value_ptr(light.viewProjection);
         glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
         glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
+        // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
+        // uniform nobody set (set explicitly here because the program outlives the toggle).
+        glProgramUniform1f(staticProgram->name(), kAlphaCutoffLocation, kAlphaCutoff);
+        glProgramUniform1f(skinnedProgram->name(), kAlphaCutoffLocation,
+                           options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
         if (options.drawStatic) {
             MeshDrawOptions o;
             o.shadowCastersOnly = true;
             o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
-            o.bindTextures = false;
+            o.bindTextures = true;  // the base colour alpha, for the cutoff
             o.skinFilter = SkinFilter::withoutSkin;
             stats.staticDraws = meshes.draw(staticProgram->name(), scene, seconds, o);
         }
@@ -204,7 +211,7 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
             if (options.drawStatic) ++stats.programSwitches;
             MeshDrawOptions o;
             o.shadowCastersOnly = true;
-            o.bindTextures = false;
+            o.bindTextures = true;
             o.skinned = SkinnedDraw::source;
             o.skinFilter = SkinFilter::skinnedOnly;
             // The fix asks the program (its active uniforms were listed once, at link time).

@@ -41,6 +41,17 @@ enum class SkinningProduct {
     parenthesised,  // T*(J*p): two mat4*vec4, 32 mul + 24 add a vertex
     grouped,        // T*J*p = (T*J)*p: mat4*mat4 then mat4*vec4, 80 mul + 60 add a vertex
 };
+// Which shadow programs get the alpha cutoff (Shader effects chapter, §2: a uniform belongs to one
+// program; the chapter sets it on the static shadow program at start-up and must set it again on the
+// skinned one it adds).
+enum class CutoffUniform {
+    everyProgram,      // both programs discard below kAlphaCutoff: the fix
+    firstProgramOnly,  // only the static program: the skinned one keeps GL's initial 0 and discards
+                       // nothing, so skinned cut-out casters throw solid shadows (the chapter's bug)
+};
+// The alpha below which a cut-out texel casts no shadow (the chapter's 0.5; shadowed_scene.frag too).
+inline constexpr float kAlphaCutoff = 0.5f;
+
 struct OperationCount {
     int mul = 0;
     int add = 0;
@@ -72,6 +83,7 @@ struct ShadowPassOptions {
     bool setsItsOwnState = true;
     SkinningProduct product = SkinningProduct::parenthesised;
     MaterialUpload materialUpload = MaterialUpload::askProgram;
+    CutoffUniform cutoff = CutoffUniform::everyProgram;
     // World transforms each skinned object is drawn at, on top of its own (a crowd); empty: once, as is.
     std::vector<glm::mat4> skinnedPlacements;
     // The lookup's PCF radius in metres, the same at every map size (0: 1.5 texels of the map).

@@ -12,10 +12,14 @@ layout(location = 0) uniform mat4 modelMatrix;
 layout(location = 2) uniform mat4 viewProjectionMatrix;
 
 layout(location = 0) in vec3 position;
+layout(location = 1) in vec2 texcoord;  // for the alpha cutoff (shadow_depth.frag)
+
+layout(location = 1) out vec2 outTexcoord;
 layout(location = 3) in uvec4 joints;
 layout(location = 4) in vec4 weights;
 
 void main() {
+    outTexcoord = texcoord;
     mat4 J = skinMatrix(joints, weights);
     vec4 p = vec4(position, 1.0);
 #ifdef GROUPED_PRODUCT

@@ -7,8 +7,12 @@ layout(location = 0) uniform mat4 modelMatrix;
 layout(location = 2) uniform mat4 viewProjectionMatrix;
 
 layout(location = 0) in vec3 position;
+layout(location = 1) in vec2 texcoord;  // for the alpha cutoff (shadow_depth.frag)
+
+layout(location = 1) out vec2 outTexcoord;
 
 void main() {
+    outTexcoord = texcoord;
     gl_Position = viewProjectionMatrix * (modelMatrix * vec4(position, 1.0));
     // Pancaking: a caster between the light and the near plane is flattened onto it instead of being
     // clipped away, so it still throws its shadow (the fit covers receivers, not every caster).

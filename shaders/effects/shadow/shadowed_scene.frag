@@ -8,6 +8,9 @@
 layout(binding = 0) uniform sampler2D baseColorTexture;
 layout(binding = 1) uniform sampler2D emissiveTexture;
 layout(location = 30) uniform float hdrMax;
+// Cut-out materials: the same cutoff the shadow pass uses (ShadowMap, kAlphaCutoff), so a surface has
+// holes exactly where its shadow has them. Opaque textures (alpha 1) never reach it.
+const float kAlphaCutoff = 0.5;
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;
@@ -15,7 +18,9 @@ layout(location = 3) in vec3 worldPosition;
 layout(location = 0) out vec4 color;
 
 void main() {
-    vec3 albedo = baseColor * texture(baseColorTexture, texcoord).rgb;
+    vec4 base = texture(baseColorTexture, texcoord);
+    if (base.a < kAlphaCutoff) discard;
+    vec3 albedo = baseColor * base.rgb;
     vec3 emitted = emissiveColor * texture(emissiveTexture, texcoord).rgb;
     vec3 linear = shadowedLighting(worldNormal, worldPosition, albedo) + emitted;
     linear = mix(clamp(linear, 0.0, hdrMax), vec3(0.0), isnan(linear));

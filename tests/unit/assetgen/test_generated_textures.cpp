@@ -209,3 +209,24 @@ TEST(HashNoise, HashIsFixedAndWellSpread) {
 }
 
 }  // namespace
+
+TEST(CutoutLattice, AlphaIsZeroOrOneWithSquareHolesThatTile) {
+    ByteImage lattice = fx::assetgen::cutoutLattice();
+    ASSERT_EQ(lattice.width, 128);
+    ASSERT_EQ(lattice.height, 128);
+    ASSERT_EQ(lattice.channels, 4);
+    int holes = 0;
+    for (int y = 0; y < lattice.height; ++y) {
+        for (int x = 0; x < lattice.width; ++x) {
+            int a = lattice.texel(x, y, 3);
+            ASSERT_TRUE(a == 0 || a == 255) << "a partly transparent texel at " << x << "," << y;
+            holes += a == 0 ? 1 : 0;
+            // Tiles: the same 64-texel cell everywhere, so the edges meet without a seam.
+            EXPECT_EQ(a, lattice.texel(x % 64, y % 64, 3));
+        }
+    }
+    // 2x2 holes of 48x48 texels: 9/16 of the texture is hole.
+    EXPECT_EQ(holes, 4 * 48 * 48);
+    EXPECT_EQ(lattice.texel(32, 32, 3), 0);   // a hole's centre
+    EXPECT_EQ(lattice.texel(0, 32, 3), 255);  // a bar on the cell border
+}

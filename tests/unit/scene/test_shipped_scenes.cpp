@@ -39,7 +39,8 @@ struct ShippedScene {
 
 const ShippedScene kShippedScenes[] = {
     {"01_program_objects.json", {}},
-    {"02_skinned_shadows.json", {"models/character.gltf", "textures/ground_checker.png"}},
+    {"02_skinned_shadows.json",
+     {"models/character.gltf", "textures/ground_checker.png", "textures/cutout_lattice.png"}},
     {"03_fbo_pipeline.json", {"models/character.gltf", "textures/ground_checker.png"}},
     {"04_colour_matrix.json", {}},
     {"05_radial_blur.json", {}},
@@ -147,7 +148,7 @@ TEST(ShippedScenes, CloudsHasTheChaptersLayerAndASunThatCastsShadows) {
 TEST(ShippedScenes, SkinnedShadowsHasASkinnedMeshAndASun) {
     fx::Scene scene = loadShipped("02_skinned_shadows.json");
     fx::SceneFeatures f = fx::features(scene);
-    EXPECT_EQ(f.skinnedMeshes, 1);
+    EXPECT_EQ(f.skinnedMeshes, 2);  // the character and the lattice mannequin (the cut-out caster)
     EXPECT_EQ(f.shadowCastingLights, 1);
     auto character = std::find_if(scene.objects.begin(), scene.objects.end(),
                                   [](const fx::SceneObject& o) { return o.skinned; });
