@@ -62,7 +62,7 @@ private:
     gl::ReloadableProgram program_;
     gl::VertexArrayName noVertices_;  // core GL draws need a vertex array; the shader makes the corners
     gl::Texture sprite_;
-    gl::Texture dot_;  // 1x1 placeholder bound when there is no sprite
+    gl::Texture dot_;  // a 1x1 white texture bound in place of a missing sprite
     gl::BufferName emitters_;
     std::size_t emitterBytes_ = 0;
     gl::BufferName instances_;
