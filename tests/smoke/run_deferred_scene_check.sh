@@ -9,16 +9,8 @@ set -uo pipefail
 exe="$1" shipped="$2" work="$3"
 rm -rf "$work" && mkdir -p "$work"
 status=0
-fail() { echo "FAIL: $*"; status=1; }
+source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 
-edit() {  # edit <out file> <python statements on the dict d>
-  python3 - "$shipped" "$1" "$2" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-exec(sys.argv[3])
-json.dump(d, open(sys.argv[2], "w"), indent=2)
-PY
-}
 edit "$work/four_lights.json" 'd["lightGrids"][0]["count"] = [3, 1]; d["objects"] = [o for o in d["objects"] if "mirror" not in o]'
 edit "$work/edge_on.json" 'd["camera"] = {"position": [0, 0.02, 12], "target": [0, 0.02, 0], "fovY": 55, "near": 0.1, "far": 200}'
 

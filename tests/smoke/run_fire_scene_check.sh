@@ -8,16 +8,8 @@ set -uo pipefail
 exe="$1" shipped="$2" work="$3"
 rm -rf "$work" && mkdir -p "$work"
 status=0
-fail() { echo "FAIL: $*"; status=1; }
+source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 
-edit() {  # edit <out file> <python statements on the dict d>
-  python3 - "$shipped" "$1" "$2" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-exec(sys.argv[3])
-json.dump(d, open(sys.argv[2], "w"), indent=2)
-PY
-}
 # The copies live in the work folder; their emitters draw soft dots (no sprite path to resolve),
 # except the one whose sprite is missing on purpose.
 dir="$work"

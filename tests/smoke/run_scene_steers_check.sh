@@ -8,17 +8,9 @@ set -uo pipefail
 exe="$1" shipped="$2" work="$3"
 rm -rf "$work" && mkdir -p "$work"
 status=0
-fail() { echo "FAIL: $*"; status=1; }
+source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 
 # A copy of the shipped scene with other post-effect settings (no asset paths in it to resolve).
-edit() {  # edit <out file> <python statements on the dict d>
-  python3 - "$shipped" "$1" "$2" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-exec(sys.argv[3])
-json.dump(d, open(sys.argv[2], "w"), indent=2)
-PY
-}
 edit "$work/steered.json" 'd["postEffects"]["bloom"]["intensity"] = 3; d["postEffects"]["toneMap"] = {"operator": "reinhard", "exposure": 0.5}'
 edit "$work/too_bright.json" 'd["postEffects"]["bloom"]["intensity"] = 50'
 edit "$work/no_bloom.json" 'd["postEffects"].pop("bloom"); d["postEffects"].pop("toneMap")'
