@@ -1,7 +1,8 @@
 #include "fire_lesson.hpp"
 
+#include "fire_workloads.hpp"
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include <imgui.h>
@@ -17,41 +18,13 @@ using namespace fx;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-const char* kPathNames[] = {"objects", "instanced", "gpu"};
 const int kOffscreenDivisors[] = {1, 2, 4};
-// The bench's workloads: every path at every count, in one sweep so their times share one run.
-const int kWorkloadCounts[] = {100, 1000, 10000, 100000};
 
 std::vector<std::string> workloadNames() {
     std::vector<std::string> names{"params"};
     for (const char* path : kPathNames)
         for (int count : kWorkloadCounts) names.push_back(cat(path, " ", count));
     return names;
-}
-constexpr int kInstancedCount = 2000;  // step 3's fire
-constexpr int kGpuCount = 100000;      // step 4's fire
-// The chapter's emitter moved aside by this much for step 2's two fires (m, along x).
-constexpr float kSideBySide = 0.9f;
-
-// A fire of `count` particles alive: the rate follows, and the particles shrink so that together
-// they cover about what ten of the chapter's do (small particles: the cost is the count, not fill).
-EmitterSetup swarm(EmitterSetup s, int count) {
-    ParticleEmitter& e = s.emitter;
-    const float chapterAlive = std::max(e.ratePerSecond * e.lifetimeSeconds, 1.0f);
-    e.ratePerSecond = float(count) / e.lifetimeSeconds;
-    s.sizeScale = std::min(1.0f, std::sqrt(10.0f * chapterAlive / float(count)));
-    e.spread = std::max(e.spread, 0.3f * std::abs(e.riseSpeed));
-    return s;
-}
-
-float emitterRadius(const ParticleEmitter& e) {
-    return 0.5f * std::abs(e.riseSpeed) * e.lifetimeSeconds * 1.5f + e.spread * e.lifetimeSeconds +
-           std::max(e.startSize, e.endSize);
 }
 
 }  // namespace
@@ -125,166 +98,6 @@ Status FireLesson::init(const Scene& scene) {
         }
     }
     return Status::success();
-}
-
-FireLesson::Setup FireLesson::setupFor(int step) const {
-    Setup setup;
-    const bool beyond = step == Beyond;
-    for (const ParticleEmitter& e : scene_->emitters) {
-        if (!beyond && e.kind != EmitterKind::fire) continue;  // smoke and sparks are step 5's
-        EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_.hasSprite()};
-        if (e.kind == EmitterKind::fire) s.emitter.spinDegreesPerSecond += spin_;
-        if (step == Objects) s.rules = {true, true};
-        if (step == Hitch) {
-            // Two fires side by side: the chapter's rules on the left, the fixed ones on the right.
-            EmitterSetup chapter = s;
-            chapter.rules = {true, true};
-            chapter.emitter.position.x -= kSideBySide;
-            setup.emitters.push_back(chapter);
-            s.emitter.position.x += kSideBySide;
-        }
-        int count = count_ > 0 ? count_ : step == Instanced ? kInstancedCount : step == Gpu ? kGpuCount : 0;
-        if (workload_ > 0) count = kWorkloadCounts[(workload_ - 1) % 4];
-        if (count > 0 && e.kind == EmitterKind::fire) s = swarm(s, count);
-        setup.emitters.push_back(s);
-    }
-    if (step == Hitch) {
-        // The chapter's emitters first, so the fixed ones are the tail that gets sorted.
-        std::stable_partition(setup.emitters.begin(), setup.emitters.end(),
-                              [](const EmitterSetup& s) { return s.rules.chapterLifetime; });
-        setup.sortedFrom = int(std::count_if(setup.emitters.begin(), setup.emitters.end(),
-                                             [](const EmitterSetup& s) { return s.rules.chapterLifetime; }));
-    }
-    setup.path = step == Objects || step == Hitch ? Path::objects
-                 : step == Instanced              ? Path::instanced
-                                                  : Path::gpu;
-    if (path_ > 0) setup.path = static_cast<Path>(path_ - 1);
-    if (workload_ > 0) setup.path = static_cast<Path>(std::clamp((workload_ - 1) / 4, 0, 2));
-    setup.sort = (step == Hitch || step == Instanced) && sort_ && setup.path != Path::gpu;
-    setup.premultiplied = beyond;
-    return setup;
-}
-
-bool FireLesson::hitchOn(const FrameInfo& frame) const {
-    return frame.step == Hitch && hitch_ > 0.0f && frame.index % 120 == 2;
-}
-
-void FireLesson::configure(const Setup& setup) {
-    setup_ = setup;
-    configured_ = true;
-    const bool gpu = setup.path == Path::gpu;
-    system_ = ParticleSystem(setup.emitters, !gpu);
-    gpu_ = gpu ? GpuParticles::create(system_) : GpuParticles();
-    restart();
-}
-
-void FireLesson::restart() {
-    const bool gpu = setup_.path == Path::gpu;
-    system_ = ParticleSystem(setup_.emitters, !gpu);
-    gpu_.clear();
-    // Start from a steady flame. The fixed rules catch up in one step (every spawn owed, born at its
-    // time); the chapter's timer needs frame by frame.
-    double longest = 0;
-    bool chapter = false;
-    for (const EmitterSetup& s : setup_.emitters) {
-        longest = std::max(longest, double(s.emitter.lifetimeSeconds));
-        chapter = chapter || s.rules.chapterTimer;
-    }
-    firstDt_ = 0;
-    if (chapter)
-        system_.prewarm(longest);
-    else if (gpu)
-        firstDt_ = longest;
-    else
-        system_.update(longest);
-}
-
-void FireLesson::simulate(double dt) {
-    Clock::time_point start = Clock::now();
-    dt += std::exchange(firstDt_, 0.0);
-    system_.update(dt);
-    renderer_.setEmitters(system_.emitters());
-    if (setup_.path == Path::gpu) {
-        gpu_.simulate(system_, dt, renderer_.emitterBuffer());
-        visible_.clear();
-    } else {
-        system_.collect(visible_);
-        CameraMatrices camera = cameraMatrices(scene_->camera, 1, 1);
-        auto sortedBegin = std::find_if(visible_.begin(), visible_.end(), [this](const GpuParticle& p) {
-            return int(p.extra.y) >= setup_.sortedFrom;
-        });
-        if (setup_.sort) {
-            std::vector<GpuParticle> tail(sortedBegin, visible_.end());
-            ParticleSystem::sortBackToFront(tail, camera.view);
-            std::copy(tail.begin(), tail.end(), sortedBegin);
-        }
-        // What the panel counts: alpha below 0 drawn (the chapter's rule), and pairs drawn front first.
-        negativeAlpha_ = 0;
-        outOfOrder_ = 0;
-        for (std::size_t i = 0; i < visible_.size(); ++i) {
-            const GpuParticle& p = visible_[i];
-            const GpuEmitter& e = system_.emitters()[std::size_t(p.extra.y)];
-            float t = p.originAge.w / std::max(p.velocityLife.w, 1e-6f);
-            if (e.motion.y > 0.0f && e.startColor.a + (e.endColor.a - e.startColor.a) * t < 0.0f)
-                ++negativeAlpha_;
-            if (i > 0 && visible_[i - 1].extra.y == p.extra.y) {
-                auto depth = [&](const GpuParticle& q) {
-                    glm::vec3 at = glm::vec3(q.originAge) + glm::vec3(q.velocityLife) * q.originAge.w;
-                    return (camera.view * glm::vec4(at, 1.0f)).z;
-                };
-                if (depth(p) < depth(visible_[i - 1])) ++outOfOrder_;  // p is farther, drawn later
-            }
-        }
-    }
-    simulateMs_ = msSince(start);
-}
-
-void FireLesson::drawPoolView(GLuint texture, int rows) const {
-    if (setup_.path == Path::gpu) {
-        gpu_.drawPoolView(texture, int(system_.emitters().size()));
-    } else {
-        std::vector<float> texels = system_.poolViewTexels(rows);
-        glTextureSubImage2D(texture, 0, 0, 0, 256, rows, GL_RGBA, GL_FLOAT, texels.data());
-    }
-}
-
-int FireLesson::draw(const ParticleDrawSettings& settings) {
-    Clock::time_point start = Clock::now();
-    int calls = 0;
-    switch (setup_.path) {
-        case Path::objects:
-            calls = renderer_.drawObjects(visible_, settings);
-            break;
-        case Path::instanced:
-            calls = renderer_.drawInstanced(visible_, settings);
-            break;
-        case Path::gpu:
-            calls = renderer_.drawIndirect(gpu_, settings);
-            break;
-    }
-    drawCpuMs_ = msSince(start);
-    drawCalls_ = calls;
-    return calls;
-}
-
-bool FireLesson::anyEmitterInView(const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    const glm::mat4 m = glm::transpose(camera.viewProjection);
-    // The six planes of the view volume (Gribb and Hartmann), each as (normal, distance).
-    const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1],
-                                 m[3] - m[1], m[3] + m[2], m[3] - m[2]};
-    for (const EmitterSetup& s : setup_.emitters) {
-        const ParticleEmitter& e = s.emitter;
-        glm::vec3 centre = e.position + glm::vec3(0.0f, 0.5f * e.riseSpeed * e.lifetimeSeconds, 0.0f);
-        float radius = emitterRadius(e) * std::max(s.sizeScale, 1.0f);
-        bool inside = true;
-        for (const glm::vec4& plane : planes) {
-            float length = std::max(glm::length(glm::vec3(plane)), 1e-12f);
-            if ((glm::dot(glm::vec3(plane), centre) + plane.w) / length < -radius) inside = false;
-        }
-        if (inside) return true;
-    }
-    return false;
 }
 
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
