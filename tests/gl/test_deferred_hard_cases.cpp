@@ -122,6 +122,13 @@ protected:
         lights = PointLightBuffer::create();
     }
 
+    // The lesson's own scene, with its assets resolved from res/.
+    static Result<Scene> loadShippedScene() {
+        SceneLoadOptions options;
+        options.assetRoot = resourceDir();
+        return loadScene(resourceDir() / "scenes/10_deferred_shading.json", options);
+    }
+
     // Lights a compact G-buffer of kW x 1 pixels, all at depth 0.5 with albedo kAlbedo, whose normals
     // are the octahedral codes `codes`, with `pointLights`; returns deferred.color.
     FloatImage light(const Scene& scene, const std::vector<glm::vec2>& codes,
@@ -285,9 +292,7 @@ TEST_F(DeferredHardCases, AThousandLightsOnOnePixelStayFiniteAndClamped) {
 // What storing the world position costs far from the origin (step 5): the fat layout's RGBA16F against
 // the compact layout's depth reconstruction, both against the exact (RGBA32F) position.
 TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
-    SceneLoadOptions options;
-    options.assetRoot = resourceDir();
-    auto scene = loadScene(resourceDir() / "scenes/10_deferred_shading.json", options);
+    auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
     GBufferPass gbuffer = GBufferPass::create();
@@ -474,9 +479,7 @@ TEST_F(DeferredHardCases, SharpeningReachesItsRangeInFloatAndClipsInEightBits) {
 // Normals in RGBA8 without the remap lose their negative half: on the lesson's scene the fat layout
 // stores negative components where the rgba8Raw layout stores 0, and nothing below 0.
 TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
-    SceneLoadOptions options;
-    options.assetRoot = resourceDir();
-    auto scene = loadScene(resourceDir() / "scenes/10_deferred_shading.json", options);
+    auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
     GBufferPass gbuffer = GBufferPass::create();
