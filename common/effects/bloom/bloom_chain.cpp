@@ -32,15 +32,34 @@ void BloomSampler::unbind() {
 BloomChain BloomChain::create() {
     BloomChain c;
     std::string defines = bloomShaderDefines();
-    c.extract_ = FullscreenPass("effects/bloom/extract.frag", "bloom bright pass", defines);
-    c.down_ = FullscreenPass("effects/bloom/downsample.frag", "bloom downsample", defines);
-    c.up_ = FullscreenPass("effects/bloom/upsample.frag", "bloom upsample", defines);
+    c.extract_ = FullscreenVariants("effects/bloom/extract.frag", "bloom bright pass", defines);
+    c.down_ = FullscreenVariants("effects/bloom/downsample.frag", "bloom downsample", defines);
+    c.up_ = FullscreenVariants("effects/bloom/upsample.frag", "bloom upsample", defines);
     c.sampler_ = BloomSampler::create();
     return c;
 }
 
+namespace {
+
+const int kDefaultFilters = static_cast<int>(BloomFilters::chapter001);
+
+const FullscreenPass& extractProgram(const FullscreenVariants& v, int filters, bool karis) {
+    // Only the Bloom chapter's filter has a Karis average; the others build without one.
+    return v.get({{"BLOOM_FILTERS", filters}, {"BLOOM_KARIS", filters == kDefaultFilters && karis ? 1 : 0}});
+}
+const FullscreenPass& downProgram(const FullscreenVariants& v, int filters) {
+    return v.get({{"BLOOM_FILTERS", filters}});
+}
+const FullscreenPass& upProgram(const FullscreenVariants& v, int filters, bool wide) {
+    return v.get({{"BLOOM_FILTERS", filters}, {"BLOOM_WIDE", wide ? 1 : 0}});
+}
+
+}  // namespace
+
 std::string BloomChain::error() const {
-    for (const FullscreenPass* p : {&extract_, &down_, &up_}) {
+    for (const FullscreenPass* p :
+         {&extractProgram(extract_, kDefaultFilters, true), &downProgram(down_, kDefaultFilters),
+          &upProgram(up_, kDefaultFilters, false)}) {
         if (!p->usable()) return p->error();
     }
     return {};
@@ -58,19 +77,21 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         return graph.declareTexture(cat("bloom.", chain, "[", l.index, "]"),
                                     {TextureSize::outputFraction(1, l.divisor), settings.format, 1});
     };
-    std::string broken = usable() ? std::string() : "a bloom program did not build: " + error();
+    std::string broken;
+    auto program = [&broken](const FullscreenPass& pass) {
+        if (!pass.usable() && broken.empty()) broken = "a bloom program did not build: " + pass.error();
+        return &pass;
+    };
 
     // The bright pass: the scene's bright part, shrunk into level 0.
-    const FullscreenPass* extract = &extract_;
+    const FullscreenPass* extract = program(extractProgram(extract_, filters, settings.karisAverage));
     d.down.push_back(level("down", d.levels[0]));
     Pass& bright = graph.addPass("bloom bright pass", [=](PassContext& ctx) {
         GLuint p = extract->program();
-        glProgramUniform1i(p, bloom_uniform::filters, filters);
         glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
         glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
         glProgramUniform1f(p, bloom_uniform::scale, settings.extractScale);
         glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
-        glProgramUniform1i(p, bloom_uniform::karis, settings.karisAverage ? 1 : 0);
         sampler->bind();
         extract->draw({ctx.native(input)});
         BloomSampler::unbind();
@@ -79,13 +100,12 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
     d.passes.push_back(&bright);
 
     // Down the chain: each level from the one above it, with blending off, so the level is overwritten.
-    const FullscreenPass* down = &down_;
+    const FullscreenPass* down = program(downProgram(down_, filters));
     for (std::size_t k = 1; k < d.levels.size(); ++k) {
         TextureHandle from = d.down[k - 1];
         d.down.push_back(level("down", d.levels[k]));
         Pass& pass = graph.addPass(cat("bloom down ", k), [=](PassContext& ctx) {
             GLuint p = down->program();
-            glProgramUniform1i(p, bloom_uniform::filters, filters);
             glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
             sampler->bind();
             down->draw({ctx.native(from)});
@@ -96,7 +116,6 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
     }
 
     // Up the chain, smallest first: level k gets itself plus the enlarged sum of everything below it.
-    const FullscreenPass* up = &up_;
     std::size_t n = d.levels.size();
     d.up.resize(n > 1 ? n - 1 : 0);
     for (std::size_t k = n - 1; k-- > 0;) {
@@ -104,11 +123,10 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         TextureHandle base = d.down[k];
         d.up[k] = level("up", d.levels[k]);
         const bool wide = k == 0 && settings.wideTop;
+        const FullscreenPass* up = program(upProgram(up_, filters, wide));
         Pass& pass = graph.addPass(cat("bloom up ", k), [=](PassContext& ctx) {
             GLuint p = up->program();
-            glProgramUniform1i(p, bloom_uniform::filters, filters);
             glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
-            glProgramUniform1i(p, bloom_uniform::wide, wide ? 1 : 0);
             glProgramUniform1f(p, bloom_uniform::upScale, 1.0f);  // the chapters add every level at weight 1
             sampler->bind();
             up->draw({ctx.native(base), ctx.native(below)});

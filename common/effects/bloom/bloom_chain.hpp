@@ -23,15 +23,17 @@
 
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 #include "render/bloom_levels.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
 
-// Uniform locations shared by shaders/effects/bloom/*.frag.
+// Uniform locations shared by shaders/effects/bloom/*.frag. Which filter, the Karis average, the wide
+// top level and the tone curve are not uniforms: they are built into each program (BLOOM_FILTERS,
+// BLOOM_KARIS, BLOOM_WIDE, TONE_CURVE; effects/post/fullscreen_variants.hpp says why).
 namespace bloom_uniform {
-inline constexpr GLint filters = 0, threshold = 1, knee = 2, scale = 3, offset = 4, karis = 5, upScale = 6,
-                       wide = 7, curve = 8, exposure = 9;
+inline constexpr GLint threshold = 1, knee = 2, scale = 3, offset = 4, upScale = 6, exposure = 9;
 }
 
 // What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.
@@ -56,7 +58,9 @@ public:
     BloomChain() = default;  // empty: no GL yet
     static BloomChain create();
 
-    bool usable() const { return extract_.usable() && down_.usable() && up_.usable(); }
+    // Whether the programs for the chapters' default settings built (the others build when a frame
+    // first asks for them, and a pass whose program did not build is switched off with its error).
+    bool usable() const { return error().empty(); }
     std::string error() const;
 
     struct Declared {
@@ -73,9 +77,9 @@ public:
     Declared declare(FrameGraph& graph, TextureHandle input, const BloomChainSettings& settings) const;
 
 private:
-    FullscreenPass extract_;
-    FullscreenPass down_;
-    FullscreenPass up_;
+    FullscreenVariants extract_;
+    FullscreenVariants down_;
+    FullscreenVariants up_;
     BloomSampler sampler_;
 };
 

@@ -15,25 +15,28 @@ float normalisedCompositeScale(float intensity, int levels) {
 
 BloomComposite BloomComposite::create() {
     BloomComposite c;
-    c.pass_ = FullscreenPass("effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines());
-    c.presented_ = FullscreenPass("effects/bloom/composite_present.frag",
-                                  "bloom composite + output transform", bloomShaderDefines());
+    c.pass_ = FullscreenVariants("effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines());
+    c.presented_ = FullscreenVariants("effects/bloom/composite_present.frag",
+                                      "bloom composite + output transform", bloomShaderDefines());
     c.sampler_ = BloomSampler::create();
     return c;
 }
 
 namespace {
 
-// The composite's draw, fused or not: the glow's filter, offset and scale, then scene and glow on units 0
-// and 1 with the chain's sampler. `more` sets the uniforms only one of the two programs has.
+// The glow's filter as the shaders number it: filter 2 in shaders/effects/bloom/bloom_common.glsl is one
+// bilinear tap of a glow blurred already.
+int compositeFilters(const BloomCompositeSettings& settings) {
+    return settings.filters ? static_cast<int>(*settings.filters) : 2;
+}
+
+// The composite's draw, fused or not: the glow's offset and scale, then scene and glow on units 0 and 1
+// with the chain's sampler. `more` sets the uniforms only one of the two programs has.
 Pass::Body compositeBody(const FullscreenPass* pass, const BloomSampler* sampler, TextureHandle scene,
                          TextureHandle glow, const BloomCompositeSettings& settings,
                          std::function<void(GLuint)> more) {
-    // Filter 2 in shaders/effects/bloom/bloom_common.glsl: one bilinear tap of a glow blurred already.
-    int filters = settings.filters ? static_cast<int>(*settings.filters) : 2;
     return [=](PassContext& ctx) {
         GLuint p = pass->program();
-        glProgramUniform1i(p, bloom_uniform::filters, filters);
         glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
         glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
         more(p);
@@ -47,28 +50,29 @@ Pass::Body compositeBody(const FullscreenPass* pass, const BloomSampler* sampler
 
 DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
                                      const BloomCompositeSettings& settings) const {
-    Pass& composite = graph.addPass(
-        "bloom composite", compositeBody(&pass_, &sampler_, scene, glow, settings,
-                                         [](GLuint p) { glProgramUniform1i(p, bloom_uniform::wide, 0); }));
+    const FullscreenPass& program =
+        pass_.get({{"BLOOM_FILTERS", compositeFilters(settings)}, {"BLOOM_WIDE", 0}});
+    Pass& composite = graph.addPass("bloom composite",
+                                    compositeBody(&program, &sampler_, scene, glow, settings, [](GLuint) {}));
     TextureHandle result = composite.create(
         "bloom.result", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     composite.read(scene).read(glow).setState(FullscreenPass::state());
-    if (!pass_.usable()) composite.disable("the bloom composite program did not build: " + pass_.error());
+    if (!program.usable()) composite.disable("the bloom composite program did not build: " + program.error());
     return {composite, result};
 }
 
 Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
                                        const BloomCompositeSettings& settings, ToneCurve curve,
                                        float exposure) const {
-    Pass& declared =
-        graph.addPass("bloom composite + output transform",
-                      compositeBody(&presented_, &sampler_, scene, glow, settings, [=](GLuint p) {
-                          glProgramUniform1i(p, bloom_uniform::curve, static_cast<int>(curve));
-                          glProgramUniform1f(p, bloom_uniform::exposure, exposure);
-                      }));
+    const FullscreenPass& program = presented_.get(
+        {{"BLOOM_FILTERS", compositeFilters(settings)}, {"TONE_CURVE", static_cast<int>(curve)}});
+    Pass& declared = graph.addPass("bloom composite + output transform",
+                                   compositeBody(&program, &sampler_, scene, glow, settings, [=](GLuint p) {
+                                       glProgramUniform1f(p, bloom_uniform::exposure, exposure);
+                                   }));
     declared.read(scene).read(glow).writeColor(graph.output()).setState(FullscreenPass::state());
-    if (!presented_.usable())
-        declared.disable("the fused bloom composite program did not build: " + presented_.error());
+    if (!program.usable())
+        declared.disable("the fused bloom composite program did not build: " + program.error());
     return declared;
 }
 

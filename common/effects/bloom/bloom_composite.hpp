@@ -37,8 +37,9 @@ public:
     BloomComposite() = default;  // empty: no GL yet
     static BloomComposite create();
 
-    bool usable() const { return pass_.usable(); }
-    const std::string& error() const { return pass_.error(); }
+    // Whether the Bloom chapter's composite built (other filters build when a frame first asks).
+    bool usable() const { return chapterComposite().usable(); }
+    const std::string& error() const { return chapterComposite().error(); }
 
     // "bloom composite": scene + scale * Up(glow) -> bloom.result.
     DeclaredPass declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
@@ -52,8 +53,11 @@ public:
                            const BloomCompositeSettings& settings, ToneCurve curve, float exposure) const;
 
 private:
-    FullscreenPass pass_;
-    FullscreenPass presented_;
+    const FullscreenPass& chapterComposite() const {
+        return pass_.get({{"BLOOM_FILTERS", static_cast<int>(BloomFilters::chapter001)}, {"BLOOM_WIDE", 0}});
+    }
+    FullscreenVariants pass_;
+    FullscreenVariants presented_;
     BloomSampler sampler_;
 };
 

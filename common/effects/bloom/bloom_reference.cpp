@@ -12,8 +12,9 @@ constexpr GLint kDirectionLocation = 0, kSigmaLocation = 1, kScaleLocation = 2;
 
 BloomReference BloomReference::create() {
     BloomReference r;
-    r.extract_ =
-        FullscreenPass("effects/bloom/extract.frag", "bloom reference bright pass", bloomShaderDefines());
+    // One texel of the same size (filter 2), no Karis average: the bright part exactly, per pixel.
+    r.extract_ = FullscreenPass("effects/bloom/extract.frag", "bloom reference bright pass",
+                                bloomShaderDefines() + "#define BLOOM_FILTERS 2\n#define BLOOM_KARIS 0\n");
     r.gaussian_ = FullscreenPass("effects/bloom/gaussian.frag", "bloom reference Gaussian");
     return r;
 }
@@ -28,12 +29,10 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
     const FullscreenPass* extract = &extract_;
     Pass& bright = graph.addPass("bloom reference bright", [=](PassContext& ctx) {
         GLuint p = extract->program();
-        glProgramUniform1i(p, bloom_uniform::filters, 2);  // one texel, same size
         glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
         glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
         glProgramUniform1f(p, bloom_uniform::scale, 1.0f);
         glProgramUniform1f(p, bloom_uniform::offset, 0.0f);
-        glProgramUniform1i(p, bloom_uniform::karis, 0);
         extract->draw({ctx.native(input)});
     });
     d.bright = bright.create("bloom.reference.bright", full, TextureUsage::ColorAttachment);

@@ -7,7 +7,9 @@
 #include "bloom_common.glsl"
 
 layout(binding = 0) uniform sampler2D source;
-layout(location = 0) uniform int filters;
+// Chosen when the program is built (effects/post/fullscreen_variants.hpp): a uniform here would make
+// llvmpipe run every filter's taps for every pixel.
+const int filters = BLOOM_FILTERS;
 layout(location = 4) uniform float offset;
 
 layout(location = 1) in vec2 uv;

@@ -10,12 +10,14 @@
 #include "bloom_common.glsl"
 
 layout(binding = 0) uniform sampler2D source;
-layout(location = 0) uniform int filters;
+// Chosen when the program is built (effects/post/fullscreen_variants.hpp): a uniform here would make
+// llvmpipe run every filter's taps for every pixel.
+const int filters = BLOOM_FILTERS;
 layout(location = 1) uniform float threshold;
 layout(location = 2) uniform float knee;
 layout(location = 3) uniform float scale;
 layout(location = 4) uniform float offset;
-layout(location = 5) uniform bool karis;
+const bool karis = BLOOM_KARIS != 0;
 
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 color;

@@ -1,0 +1,28 @@
+#include "effects/post/fullscreen_variants.hpp"
+
+#include "base/log.hpp"
+
+namespace fx {
+
+FullscreenVariants::FullscreenVariants(std::string fragmentShader, std::string label, std::string defines)
+    : shader_(std::move(fragmentShader)),
+      label_(std::move(label)),
+      defines_(std::move(defines)),
+      built_(std::make_unique<std::map<std::string, FullscreenPass>>()) {}
+
+const FullscreenPass& FullscreenVariants::get(std::initializer_list<ShaderChoice> choices) const {
+    static const FullscreenPass kNone;  // a default-made FullscreenVariants has nothing to build
+    if (!built_) return kNone;
+    std::string key;
+    std::string lines;
+    for (const auto& [name, value] : choices) {
+        key += cat(key.empty() ? "" : ", ", name, " ", value);
+        lines += cat("#define ", name, " ", value, "\n");
+    }
+    auto found = built_->find(key);
+    if (found != built_->end()) return found->second;
+    std::string label = key.empty() ? label_ : cat(label_, " (", key, ")");
+    return built_->emplace(key, FullscreenPass(shader_, label, defines_ + lines)).first->second;
+}
+
+}  // namespace fx
