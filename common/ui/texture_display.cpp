@@ -21,8 +21,7 @@ enum Uniform : GLint {
     kShown,
     kRange,
     kExposure,
-    kTransform,
-    kLinearDepth,
+    kLinearDepth = 9,  // location 8 was the transform: now each program's VIEW_TRANSFORM
     kNearFar,
     kHighlight,
     kGrid,
@@ -58,14 +57,7 @@ ImTextureID DisplaySurface::id() const {
 }
 
 TextureDisplay::TextureDisplay() {
-    auto built =
-        gl::Program::build({"common/fullscreen.vert", "ui/texture_view.frag", {}, {}, "ui.texture view"});
-    if (!built) {
-        error_ = built.error();
-        log::error("the inspector's view shader did not build: ", error_);
-        return;
-    }
-    program_ = std::move(*built);
+    if (!program(DisplayTransform::Direct)) return;
     vertexArray_ = gl::createVertexArray("ui.texture view (no vertices)");
     // texelFetch ignores filtering, but a depth texture set up for shadow comparisons would
     // compare instead of returning depth: the sampler object turns that off.
@@ -75,13 +67,32 @@ TextureDisplay::TextureDisplay() {
     glSamplerParameteri(sampler_.name(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
 }
 
+const gl::Program& TextureDisplay::program(DisplayTransform transform) const {
+    const int index = std::clamp(static_cast<int>(transform), 0, kDisplayTransformCount - 1);
+    gl::Program& p = programs_[std::size_t(index)];
+    if (p || !error_.empty()) return p;  // built, or the shader is broken: the first error stays
+    auto built = gl::Program::build({"common/fullscreen.vert",
+                                     "ui/texture_view.frag",
+                                     {},
+                                     cat("#define VIEW_TRANSFORM ", index, "\n"),
+                                     cat("ui.texture view (", toString(transform), ")")});
+    if (!built) {
+        error_ = built.error();
+        log::error("the inspector's view shader did not build: ", error_);
+        return p;
+    }
+    p = std::move(*built);
+    return p;
+}
+
 void TextureDisplay::draw(DisplaySurface& surface, const TextureSource& source, const ViewSettings& s,
                           const ViewWindow& window, bool grid) const {
     if (!ok() || !surface.ready() || !source.alive()) return;
     GlStateScope keep;
     const int level = std::clamp(s.level, 0, source.levels() - 1);
     const Size2D size = source.levelSize(level);
-    const GLuint p = program_.name();
+    const GLuint p = program(s.transform).name();
+    if (!p) return;
     glProgramUniform1i(p, kLevel, level);
     glProgramUniform2i(p, kLevelSize, size.width, size.height);
     glProgramUniform2f(p, kOrigin, float(window.originX), float(window.originY));
@@ -91,7 +102,6 @@ void TextureDisplay::draw(DisplaySurface& surface, const TextureSource& source, 
                        s.channels[2] ? 1.0f : 0.0f, s.channels[3] ? 1.0f : 0.0f);
     glProgramUniform2f(p, kRange, s.rangeLow, s.rangeHigh);
     glProgramUniform1f(p, kExposure, std::exp2(s.exposureStops));
-    glProgramUniform1i(p, kTransform, static_cast<int>(s.transform));
     glProgramUniform1i(p, kLinearDepth, showsLinearDepth(s, source.spec) ? 1 : 0);
     glProgramUniform2f(p, kNearFar, s.cameraNear, s.cameraFar);
     glProgramUniform1i(p, kHighlight, s.highlightSpecial ? 1 : 0);

@@ -4,6 +4,7 @@
 // texture_view.frag (range, exposure, channels, view transform, depth linearisation, NaN / Inf /
 // negative marks) into a DisplaySurface, an RGBA8 texture of exactly the size it is shown at, which
 // ImGui then draws like any image.
+#include <array>
 #include <string>
 
 #include <imgui.h>
@@ -56,7 +57,7 @@ class TextureDisplay {
 public:
     TextureDisplay();
 
-    bool ok() const { return static_cast<bool>(program_); }
+    bool ok() const { return error_.empty(); }
     const std::string& error() const { return error_; }
 
     // Draws level settings.level of `source` (which must be alive) into `surface`. GL state is left
@@ -65,10 +66,14 @@ public:
               const ViewWindow& window, bool grid = false) const;
 
 private:
-    gl::Program program_;
+    // One program per view transform, built the first time a view uses it. The transform is a
+    // #define, not a uniform: llvmpipe runs both sides of a uniform branch, so with a uniform every
+    // texel paid for all four transforms (the sRGB encodings' pow() twice). Only Direct is built at once.
+    const gl::Program& program(DisplayTransform transform) const;
+    mutable std::array<gl::Program, kDisplayTransformCount> programs_;
+    mutable std::string error_;
     gl::VertexArrayName vertexArray_;
     gl::SamplerName sampler_;
-    std::string error_;
 };
 
 }  // namespace fx

@@ -29,15 +29,22 @@ vec3 falseColour(float x) {
     return mix(stops[i], stops[i + 1], s - float(i));
 }
 
-// Values already mapped to the range and exposed; the result is display-ready in [0, 1].
-vec3 applyTransform(vec3 v, int transform) {
-    if (transform == kSrgb) return encodeSrgb(clamp(v, 0.0, 1.0));
+// The view transforms in two halves, so that zoomed-out views can average between them:
+// mapTransform is what each texel needs alone (values already mapped to the range and exposed), and
+// its result is still linear; encodeTransform makes that display-ready in [0, 1]. For one texel,
+// encodeTransform(mapTransform(v)) is the whole transform, as image/view_transform.cpp applies it.
+vec3 mapTransform(vec3 v, int transform) {
     if (transform == kReinhard) {
         vec3 c = max(v, vec3(0.0));
-        return encodeSrgb(c / (1.0 + c));
+        return c / (1.0 + c);
     }
-    if (transform == kFalseColour) return falseColour(max(max(v.r, v.g), v.b));
+    if (transform == kFalseColour) return vec3(clamp(max(max(v.r, v.g), v.b), 0.0, 1.0));
     return clamp(v, 0.0, 1.0);
+}
+vec3 encodeTransform(vec3 mapped, int transform) {
+    if (transform == kSrgb || transform == kReinhard) return encodeSrgb(mapped);
+    if (transform == kFalseColour) return falseColour(mapped.r);
+    return mapped;
 }
 
 // A perspective depth-buffer value (0 near, 1 far, the default glDepthRange) back to the distance
