@@ -114,7 +114,7 @@ void BloomLesson::declareParams(ParamSet& params) {
         "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at "
         "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
         "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
-    finish.knob = Knob{{0, 1, 2, 3}, 2, "way"};
+    finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
     params
         .addChoice(
             "tone_map", &toneCurve_, enumNameList<ToneCurve>(),

@@ -57,7 +57,7 @@ private:
     float upOffset_ = 0.5f;
     int format_ = 0;  // index into kChainFormats
     bool karis_ = true;
-    int finish_ = 2;     // step 5's way to end the chain (full-taps-fused): kFinishNames in bloom_lesson.cpp
+    int finish_ = 3;     // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
     int toneCurve_ = 2;  // fx::ToneCurve::filmic
     float exposure_ = 1.0f;
     bool reference_ = false;

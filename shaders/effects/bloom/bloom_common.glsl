@@ -55,3 +55,15 @@ vec3 upsampleFilter(sampler2D source, vec2 uv, int filters, float offset) {
 // below, whose texels are twice as large. Variances add: s^2 (here) + (2 s)^2 (below, in these texels) =
 // 5 s^2, which is the same filter at sqrt(5) / 2 = 1.118 times its offset in the lower level's texels.
 const float kWideUpsampleScale = 1.118034;
+
+// The top level's blur of its own texels when it does the composite's work (`wide`): as wide as
+// upsampleFilter with the same offset, in four bilinear taps instead of eight. Per axis, the Bloom
+// chapter's filter has a variance of 16/12 offset^2 and the Shader effects one 16/15 offset^2 (the
+// bilinear spread of each tap aside); four equal diagonal taps at +-d have d^2, so d is the square
+// root of that. Half the taps, and against the direct Gaussians the error did not grow (docs/bench.md).
+vec3 ownBlur(sampler2D level, vec2 uv, int filters, float offset) {
+    float d = offset * (filters == 0 ? 1.032796 : 1.154701);
+    vec2 o = d * texelSize(level);
+    return 0.25 * (texture(level, uv + vec2(-o.x, o.y)).rgb + texture(level, uv + vec2(o.x, o.y)).rgb +
+                   texture(level, uv + vec2(-o.x, -o.y)).rgb + texture(level, uv + vec2(o.x, -o.y)).rgb);
+}
