@@ -6,8 +6,7 @@
 namespace fx {
 namespace {
 
-constexpr GLint kDividerLocation = 0;  // shaders/effects/output_transform.frag
-constexpr GLint kCurveLocation = 1;
+constexpr GLint kDividerLocation = 0;  // shaders/effects/output_transform.frag (split view only)
 constexpr GLint kExposureLocation = 2;
 
 }  // namespace
@@ -43,29 +42,35 @@ int splitDividerPixel(float divider, int width) {
 
 OutputTransformPass OutputTransformPass::create() {
     OutputTransformPass p;
-    p.pass_ = FullscreenPass("effects/post/output_transform.frag", "output transform");
+    p.pass_ = FullscreenVariants("effects/post/output_transform.frag", "output transform");
     return p;
+}
+
+const FullscreenPass& OutputTransformPass::program(bool split, ToneCurve curve) const {
+    return pass_.get({{"SPLIT_VIEW", split ? 1 : 0}, {"TONE_CURVE", static_cast<int>(curve)}});
 }
 
 Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
                                    const std::optional<SplitView>& split, ToneCurve curve,
                                    float exposure) const {
-    const FullscreenPass* pass = &pass_;
+    const FullscreenPass* pass = &program(split.has_value(), curve);
     std::optional<SplitView> view = split;
-    Pass& declared =
-        graph.addPass("output transform", [pass, linear, view, curve, exposure](PassContext& ctx) {
-            // -1: no split. Otherwise the first pixel column that shows `linear`.
-            int divider = view ? splitDividerPixel(view->divider, ctx.targetSize().width) : -1;
-            glProgramUniform1i(pass->program(), kDividerLocation, divider);
-            glProgramUniform1i(pass->program(), kCurveLocation, static_cast<int>(curve));
-            glProgramUniform1f(pass->program(), kExposureLocation, exposure);
-            GLuint after = ctx.native(linear);
-            pass->draw({after, view ? ctx.native(view->before) : after});
-        });
+    Pass& declared = graph.addPass("output transform", [pass, linear, view, exposure](PassContext& ctx) {
+        glProgramUniform1f(pass->program(), kExposureLocation, exposure);
+        GLuint after = ctx.native(linear);
+        if (view) {
+            // The first pixel column that shows `linear`.
+            glProgramUniform1i(pass->program(), kDividerLocation,
+                               splitDividerPixel(view->divider, ctx.targetSize().width));
+            pass->draw({after, ctx.native(view->before)});
+        } else {
+            pass->draw({after});
+        }
+    });
     declared.read(linear);
     if (view) declared.read(view->before);
     declared.writeColor(graph.output()).setState(FullscreenPass::state());
-    if (!pass_.usable()) declared.disable("the output transform program did not build: " + pass_.error());
+    if (!pass->usable()) declared.disable("the output transform program did not build: " + pass->error());
     return declared;
 }
 

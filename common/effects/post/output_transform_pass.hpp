@@ -19,6 +19,7 @@
 #include <optional>
 
 #include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene_post.hpp"
 
@@ -44,8 +45,10 @@ public:
     OutputTransformPass() = default;  // empty: no GL yet
     static OutputTransformPass create();
 
-    bool usable() const { return pass_.usable(); }
-    const std::string& error() const { return pass_.error(); }
+    // Whether the plain program (no split view, no tone curve) built; the others build when a frame
+    // first asks for them, and a pass whose program did not build is switched off with its error.
+    bool usable() const { return program(false, ToneCurve::clip).usable(); }
+    const std::string& error() const { return program(false, ToneCurve::clip).error(); }
 
     // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,
@@ -53,7 +56,8 @@ public:
                   float exposure = 1.0f) const;
 
 private:
-    FullscreenPass pass_;
+    const FullscreenPass& program(bool split, ToneCurve curve) const;
+    FullscreenVariants pass_;
 };
 
 }  // namespace fx

@@ -5,12 +5,17 @@
 // `before`, through the same transform, so the two halves differ only by the effect.
 #include "../../common/output_transform.glsl"
 
+// The split view and the tone curve are built into the program (SPLIT_VIEW, TONE_CURVE: one program
+// each, effects/post/fullscreen_variants.hpp): as uniforms, llvmpipe fetched `before` and ran all three
+// curves for every pixel of every frame.
 layout(binding = 0) uniform sampler2D after;
+#if SPLIT_VIEW
 layout(binding = 1) uniform sampler2D before;
-// The first pixel column that shows `after`; -1 without a split view.
+// The first pixel column that shows `after`.
 layout(location = 0) uniform int divider;
+#endif
 // The tone curve before the encoding (effects/output_transform_pass.hpp: ToneCurve); 0: none.
-layout(location = 1) uniform int curve;
+const int curve = TONE_CURVE;
 // Multiplies the light before the curve (1: unchanged).
 layout(location = 2) uniform float exposure;
 
@@ -19,11 +24,17 @@ layout(location = 0) out vec4 color;
 void main() {
     // Input and output have the same size: read the texel under the pixel, no filtering.
     ivec2 texel = ivec2(gl_FragCoord.xy);
+#if SPLIT_VIEW
     bool showBefore = texel.x < divider;
     vec3 linear = showBefore ? texelFetch(before, texel, 0).rgb : texelFetch(after, texel, 0).rgb;
+#else
+    vec3 linear = texelFetch(after, texel, 0).rgb;
+#endif
     vec3 encoded = linearToSrgb(toneCurve(linear * exposure, curve));
+#if SPLIT_VIEW
     // The divider: a white column with a dark one beside it, visible on light and dark pictures.
-    if (divider >= 0 && texel.x == divider) encoded = vec3(1.0);
-    if (divider >= 0 && texel.x == divider - 1) encoded = vec3(0.0);
+    if (texel.x == divider) encoded = vec3(1.0);
+    if (texel.x == divider - 1) encoded = vec3(0.0);
+#endif
     color = vec4(encoded, 1.0);
 }
