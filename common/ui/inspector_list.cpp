@@ -1,6 +1,8 @@
 #include "ui/inspector_list.hpp"
 
 #include <algorithm>
+#include <string_view>
+#include <unordered_map>
 
 #include "base/log.hpp"
 #include "ui/ui_style.hpp"
@@ -8,11 +10,20 @@
 namespace fx {
 
 std::vector<TextureListEntry> listTextures(const FrameReport& frame) {
+    // Each producer by name, the first pass of that name as FrameReport::findPass gives it: a search
+    // per texture made this list quadratic in the frame's size.
+    std::unordered_map<std::string_view, const PassRecord*> passByName;
+    passByName.reserve(frame.passes.size());
+    for (const PassRecord& p : frame.passes) passByName.emplace(p.name, &p);
     std::vector<TextureListEntry> entries;
+    entries.reserve(frame.textures.size());
     for (const TextureRecord& t : frame.textures) {
         TextureListEntry e;
         e.texture = &t;
-        e.producer = t.producer.empty() ? nullptr : frame.findPass(t.producer);
+        if (!t.producer.empty()) {
+            auto producer = passByName.find(t.producer);
+            e.producer = producer == passByName.end() ? nullptr : producer->second;
+        }
         e.presented = t.origin == TextureOrigin::PresentedOutput;
         e.made = t.origin == TextureOrigin::Transient ? t.allocated : (!e.producer || e.producer->executed);
         entries.push_back(e);
