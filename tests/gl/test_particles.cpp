@@ -4,9 +4,12 @@
 // fade's distance 0 and its linearised depth, and a sprite that is not on disk.
 #include <cmath>
 #include <cstring>
+#include <set>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "base/log.hpp"
 #include "effects/particles/gpu_particles.hpp"
 #include "effects/particles/particle_renderer.hpp"
 #include "effects/particles/particle_system.hpp"
@@ -438,6 +441,98 @@ TEST_F(Particles, SoftFadeLinearisesDepthAndGuardsDistanceZero) {
     // Behind the scene's surface: faded out completely (the depth test the fade replaces).
     p.originAge.z = -6.0f;
     EXPECT_EQ(centreAlpha(0.5f), 0.0f);
+}
+
+TEST_F(Particles, EverySourceDrawsTheSamePictureWithEveryFadeAndBlend) {
+    // The same particles drawn one per draw, instanced and from the GPU's live list, with the fade off
+    // and on, straight and premultiplied: each combination is its own program (#defines), and the three
+    // sources must agree in each, while the fade and the blend must change the picture.
+    ParticleEmitter e = chapterFire();
+    e.ratePerSecond = 120.0f;
+    e.spread = 0.7f;
+    e.spinDegreesPerSecond = 120.0f;
+    std::vector<EmitterSetup> setups = {setupOf(e, false)};
+    ParticleSystem clocks(setups, false);
+    GpuParticles gpu = GpuParticles::create(clocks);
+    ASSERT_TRUE(gpu.usable());
+    for (int i = 0; i < 90; ++i) {  // 1.5 s: the oldest have died and the ring has wrapped
+        clocks.update(1.0 / 60.0);
+        renderer.setEmitters(clocks.emitters());
+        gpu.simulate(clocks, 1.0 / 60.0, renderer.emitterBuffer());
+    }
+    // The GPU's live particles in the order its live list draws them, for the other two sources. The
+    // list must skip free slots, or reading particles[instance] would draw the same picture.
+    std::vector<GpuParticle> pool = gpu.readPool();
+    std::vector<std::uint32_t> list = gpu.readLiveList();
+    ASSERT_GE(list.size(), 60u);
+    ASSERT_LT(list.size(), pool.size());
+    ASSERT_NE(list.back(), std::uint32_t(list.size() - 1)) << "the live list should have gaps";
+    std::vector<GpuParticle> live;
+    for (std::uint32_t slot : list) live.push_back(pool[slot]);
+
+    // The scene's surface 4.5 m away, the emitter at 4 m: a 1 m fade thins the particles.
+    const float near = 0.1f, far = 100.0f, surface = 4.5f;
+    gl::Texture depth =
+        gl::Texture::create2D(TextureFormat::Depth32F, 24, 24, 1, "test particles.scene_depth");
+    std::vector<float> texels(24 * 24, (far * (surface - near)) / (surface * (far - near)));
+    glTextureSubImage2D(depth.name(), 0, 0, 0, 24, 24, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+
+    auto sum = [](const FloatImage& image) {
+        double total = 0.0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                for (int c = 0; c < 4; ++c) total += image.texel(x, y, c);
+        return total;
+    };
+    std::set<std::string> labels;
+    double totals[2][2] = {};
+    for (int soft = 0; soft < 2; ++soft)
+        for (int premultiplied = 0; premultiplied < 2; ++premultiplied) {
+            ParticleDrawSettings s = camera(24, 24);
+            s.view = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+            s.premultiplied = premultiplied == 1;
+            s.softDistance = soft ? 1.0f : 0.0f;
+            s.sceneDepth = depth.name();
+            s.nearPlane = near;
+            s.farPlane = far;
+            FloatImage images[3];
+            for (int source = 0; source < 3; ++source) {
+                Target target(24, 24, TextureFormat::RGBA32F, {0, 0, 0, 0});
+                target.bind(s.premultiplied);
+                const int calls = source == 0   ? renderer.drawObjects(live, s)
+                                  : source == 1 ? renderer.drawInstanced(live, s)
+                                                : renderer.drawIndirect(gpu, s);
+                EXPECT_EQ(calls, source == 0 ? int(live.size()) : 1);
+                target.unbind();
+                images[source] = target.read();
+                EXPECT_TRUE(extremes(images[source], 4).finite);
+            }
+            const std::string variant = cat("soft ", soft, ", premultiplied ", premultiplied);
+            for (int source = 1; source < 3; ++source) {
+                float largest = 0.0f;
+                for (int y = 0; y < 24; ++y)
+                    for (int x = 0; x < 24; ++x)
+                        for (int c = 0; c < 4; ++c)
+                            largest = std::max(
+                                largest, std::abs(images[source].texel(x, y, c) - images[0].texel(x, y, c)));
+                EXPECT_LT(largest, 1e-3f) << variant << ", source " << source << " against one per draw";
+            }
+            totals[soft][premultiplied] = sum(images[0]);
+            EXPECT_GT(totals[soft][premultiplied], 1.0) << variant << ": nothing drawn";
+            for (auto source : {ParticleRenderer::Source::buffer, ParticleRenderer::Source::liveList,
+                                ParticleRenderer::Source::uniforms})
+                labels.insert(renderer.program(source, s).program().label());
+        }
+    // The fade thins both blends, and the blends differ (premultiplied fire, coverage 0, writes alpha 0).
+    EXPECT_LT(totals[1][0], 0.9 * totals[0][0]);
+    EXPECT_LT(totals[1][1], 0.9 * totals[0][1]);
+    EXPECT_NE(totals[0][0], totals[0][1]);
+    // One program per combination, each labelled with its choices.
+    EXPECT_EQ(renderer.programsBuilt(), 12);
+    EXPECT_EQ(labels.size(), 12u);
+    EXPECT_EQ(labels.count("particles: sprites (live list, soft, premultiplied)"), 1u);
+    EXPECT_EQ(labels.count("particles: sprites (one per draw, straight)"), 1u);
+    EXPECT_TRUE(renderer.usable()) << renderer.error();
 }
 
 TEST_F(Particles, MissingSpriteNamesThePath) {

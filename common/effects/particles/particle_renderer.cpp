@@ -10,11 +10,16 @@
 namespace fx {
 namespace {
 
-// Locations in particle.vert and particle.frag.
-constexpr GLint kView = 0, kProjection = 1, kSource = 2, kOneOriginAge = 3, kOneVelocityLife = 4,
-                kOneExtra = 5, kPremultiplied = 10, kHdrMax = 11, kSoftDistance = 12, kNearFar = 13,
-                kDepthTexelsPerPixel = 14;
-constexpr int kFromBuffer = 0, kFromLiveList = 1, kFromUniforms = 2;
+// Locations in particle.vert and particle.frag. The one-particle uniforms exist only in the program
+// that draws from uniforms, the fade's only in the programs that fade: GL refuses a location the
+// program does not have, so bind() sets each only where the program has it.
+constexpr GLint kView = 0, kProjection = 1, kOneOriginAge = 3, kOneVelocityLife = 4, kOneExtra = 5,
+                kHdrMax = 11, kSoftDistance = 12, kNearFar = 13, kDepthTexelsPerPixel = 14;
+constexpr const char* kSourceNames[] = {"instanced", "live list", "one per draw"};
+
+bool softFade(const ParticleDrawSettings& s) {
+    return s.softDistance > 0.0f && s.sceneDepth != 0;
+}
 
 // A buffer of at least `bytes`, replaced (with `label`) when too small.
 void ensureBuffer(gl::BufferName& buffer, std::uint64_t& capacity, std::uint64_t bytes, const char* label) {
@@ -29,13 +34,52 @@ void ensureBuffer(gl::BufferName& buffer, std::uint64_t& capacity, std::uint64_t
 
 ParticleRenderer ParticleRenderer::create() {
     ParticleRenderer r;
-    r.program_ = gl::ReloadableProgram(
-        {"effects/particles/particle.vert", "effects/particles/particle.frag", {}, {}, "particles: sprites"});
     r.noVertices_ = gl::createVertexArray("particles.no_vertices");
     r.dot_ = gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite");
     const unsigned char white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(r.dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    (void)r.program(Source::uniforms, ParticleDrawSettings{});  // the chapter's: shows a broken shader now
     return r;
+}
+
+const gl::ReloadableProgram& ParticleRenderer::program(Source source, const ParticleDrawSettings& s) const {
+    static const gl::ReloadableProgram kNone;
+    if (!noVertices_) return kNone;  // before create(): no GL
+    const int sourceNumber = static_cast<int>(source);
+    const bool soft = softFade(s);
+    std::optional<gl::ReloadableProgram>& slot =
+        programs_[sourceNumber * 4 + (soft ? 2 : 0) + (s.premultiplied ? 1 : 0)];
+    if (!slot) {
+        slot.emplace(gl::ProgramSources{
+            "effects/particles/particle.vert",
+            "effects/particles/particle.frag",
+            {},
+            cat("#define PARTICLE_SOURCE ", sourceNumber, "\n#define PARTICLE_SOFT ", soft ? 1 : 0,
+                "\n#define PARTICLE_PREMULTIPLIED ", s.premultiplied ? 1 : 0, "\n"),
+            cat("particles: sprites (", kSourceNames[sourceNumber], soft ? ", soft" : "",
+                s.premultiplied ? ", premultiplied" : ", straight", ")")});
+    }
+    return *slot;
+}
+
+int ParticleRenderer::programsBuilt() const {
+    int built = 0;
+    for (const auto& slot : programs_) built += slot ? 1 : 0;
+    return built;
+}
+
+bool ParticleRenderer::usable() const {
+    if (!noVertices_) return false;
+    for (const auto& slot : programs_)
+        if (slot && !slot->usable()) return false;
+    return true;
+}
+
+const std::string& ParticleRenderer::error() const {
+    static const std::string kNoError;
+    for (const auto& slot : programs_)
+        if (slot && !slot->error().empty()) return slot->error();
+    return kNoError;
 }
 
 Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
@@ -65,29 +109,32 @@ void ParticleRenderer::setEmitters(const std::vector<GpuEmitter>& emitters) {
                              emitters.data());
 }
 
-void ParticleRenderer::bind(const ParticleDrawSettings& s, int source) const {
-    const GLuint p = program_.name();
+bool ParticleRenderer::bind(const gl::ReloadableProgram& program, const ParticleDrawSettings& s) const {
+    if (!program.usable() || !emitters_) return false;
+    const GLuint p = program.name();
     glProgramUniformMatrix4fv(p, kView, 1, GL_FALSE, glm::value_ptr(s.view));
     glProgramUniformMatrix4fv(p, kProjection, 1, GL_FALSE, glm::value_ptr(s.projection));
-    glProgramUniform1i(p, kSource, source);
-    glProgramUniform1i(p, kPremultiplied, s.premultiplied ? 1 : 0);
     glProgramUniform1f(p, kHdrMax, s.hdrMax);
-    const bool soft = s.softDistance > 0.0f && s.sceneDepth != 0;
-    glProgramUniform1f(p, kSoftDistance, soft ? s.softDistance : 0.0f);
-    glProgramUniform2f(p, kNearFar, s.nearPlane, s.farPlane);
-    glProgramUniform2f(p, kDepthTexelsPerPixel, s.depthTexelsPerPixel.x, s.depthTexelsPerPixel.y);
+    const bool soft = softFade(s);
+    if (soft) {
+        glProgramUniform1f(p, kSoftDistance, s.softDistance);
+        glProgramUniform2f(p, kNearFar, s.nearPlane, s.farPlane);
+        glProgramUniform2f(p, kDepthTexelsPerPixel, s.depthTexelsPerPixel.x, s.depthTexelsPerPixel.y);
+    }
     glUseProgram(p);
     glBindVertexArray(noVertices_.name());
     const GLuint textures[2] = {sprite_ ? sprite_.name() : dot_.name(), soft ? s.sceneDepth : dot_.name()};
     glBindTextures(0, 2, textures);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, emitters_.name());
+    return true;
 }
 
 int ParticleRenderer::drawObjects(const std::vector<GpuParticle>& particles,
                                   const ParticleDrawSettings& s) const {
-    if (particles.empty() || !usable() || !emitters_) return 0;
-    bind(s, kFromUniforms);
-    const GLuint p = program_.name();
+    if (particles.empty()) return 0;
+    const gl::ReloadableProgram& program = this->program(Source::uniforms, s);
+    if (!bind(program, s)) return 0;
+    const GLuint p = program.name();
     // The chapter's way: every particle is an object with its own uniforms and its own draw call.
     for (const GpuParticle& particle : particles) {
         glProgramUniform4fv(p, kOneOriginAge, 1, glm::value_ptr(particle.originAge));
@@ -101,11 +148,11 @@ int ParticleRenderer::drawObjects(const std::vector<GpuParticle>& particles,
 
 int ParticleRenderer::drawInstanced(const std::vector<GpuParticle>& particles,
                                     const ParticleDrawSettings& s) {
-    if (particles.empty() || !usable() || !emitters_) return 0;
+    if (particles.empty()) return 0;
+    if (!bind(program(Source::buffer, s), s)) return 0;
     const std::uint64_t bytes = particles.size() * sizeof(GpuParticle);
     ensureBuffer(instances_, instanceBytes_, bytes, "particles.instances");
     glNamedBufferSubData(instances_.name(), 0, GLsizeiptr(bytes), particles.data());
-    bind(s, kFromBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, instances_.name());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(particles.size()));
     glBindVertexArray(0);
@@ -113,8 +160,8 @@ int ParticleRenderer::drawInstanced(const std::vector<GpuParticle>& particles,
 }
 
 int ParticleRenderer::drawIndirect(const GpuParticles& pool, const ParticleDrawSettings& s) const {
-    if (!pool.usable() || !usable() || !emitters_) return 0;
-    bind(s, kFromLiveList);
+    if (!pool.usable()) return 0;
+    if (!bind(program(Source::liveList, s), s)) return 0;
     pool.bindForDraw();
     // The instance count is whatever compact.comp wrote: 0 draws nothing, and is no error.
     glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);

@@ -7,7 +7,16 @@
 //   drawIndirect:  the GPU pool's live list and instance count (gpu_particles.hpp), one indirect draw.
 // The sprite is the scene's particle texture (only its alpha is used); the emitter table is uploaded
 // once a frame to particles.emitters.
+//
+// Each draw's choices (where the particle comes from, the soft fade on or off, premultiplied or
+// straight alpha) are built into its program as #defines, one program per set of choices, each built
+// the first time a draw asks for it and labelled with its choices ("particles: sprites (instanced,
+// soft, premultiplied)"). Uniforms and branches would be the same picture, but llvmpipe runs both
+// sides of a branch even on a uniform, so every vertex would read all three sources and every pixel
+// would fetch and linearise the scene's depth with the fade off (docs/bench.md, Lesson 07).
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -38,8 +47,12 @@ public:
     ParticleRenderer() = default;  // empty: no GL
     static ParticleRenderer create();
 
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
+    // create() builds the chapter's program (one draw per particle, straight alpha, no fade), so a
+    // shader that does not build shows at once; the others are built when a draw first needs them.
+    // usable(): every program built so far builds; error(): the first one's error that does not.
+    // A draw whose program does not build draws nothing (the runner lists the error).
+    bool usable() const;
+    const std::string& error() const;
 
     // The sprite from a PNG file: an error that names the path when it cannot be read.
     Status loadSprite(const std::filesystem::path& path);
@@ -56,10 +69,21 @@ public:
 
     std::uint64_t instanceBytes() const { return instanceBytes_; }
 
-private:
-    void bind(const ParticleDrawSettings& s, int source) const;
+    // Where a draw's particles come from (PARTICLE_SOURCE in particle.vert).
+    enum class Source { buffer = 0, liveList = 1, uniforms = 2 };
+    // The program for a draw from `source` with `s`'s fade and blend, built the first time it is asked
+    // for (an empty program before create()).
+    const gl::ReloadableProgram& program(Source source, const ParticleDrawSettings& s) const;
+    // Programs built so far (tests: a draw builds only the one it needs).
+    int programsBuilt() const;
 
-    gl::ReloadableProgram program_;
+private:
+    // Sets the uniforms `program` has, binds it, the sprite, the depth and the emitters; false when
+    // the program does not build (nothing to draw with).
+    bool bind(const gl::ReloadableProgram& program, const ParticleDrawSettings& s) const;
+
+    // [source * 4 + soft * 2 + premultiplied]
+    mutable std::optional<gl::ReloadableProgram> programs_[12];
     gl::VertexArrayName noVertices_;  // core GL draws need a vertex array; the shader makes the corners
     gl::Texture sprite_;
     gl::Texture dot_;  // a 1x1 white texture bound in place of a missing sprite

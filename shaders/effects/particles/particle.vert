@@ -4,20 +4,34 @@
 // particle at the camera gives no NaN), and the half-width is at most a quarter of the distance to
 // the camera, so a particle at the near plane cannot cover the screen (at 50 degrees, about half its
 // height at most).
+//
+// Where the particle comes from is built into the program (ParticleRenderer builds one per source):
+//   PARTICLE_SOURCE 0: particles[gl_InstanceID] (the CPU uploaded the live ones);
+//   PARTICLE_SOURCE 1: particles[liveIndex[gl_InstanceID]] (the GPU compacted them);
+//   PARTICLE_SOURCE 2: the particle in three uniforms (one draw per particle).
+// Not a uniform and a branch: llvmpipe shades a batch of vertices as one instruction stream and runs
+// both sides of a branch under a mask even when every vertex takes the same side, so every vertex
+// would pay for the reads of all three sources.
 #include "particle_common.glsl"
 
-layout(std430, binding = 0) readonly buffer Particles { Particle particles[]; };
-layout(std430, binding = 1) readonly buffer Emitters { Emitter emitters[]; };
-layout(std430, binding = 2) readonly buffer LiveIndices { uint liveIndex[]; };
+#ifndef PARTICLE_SOURCE
+#error "PARTICLE_SOURCE is set by ParticleRenderer: 0 buffer, 1 live list, 2 uniforms"
+#endif
 
-layout(location = 0) uniform mat4 viewMatrix;
-layout(location = 1) uniform mat4 projectionMatrix;
-// 0: particles[gl_InstanceID] (the CPU uploaded the live ones); 1: particles[liveIndex[gl_InstanceID]]
-// (the GPU compacted them); 2: the particle in the three uniforms below (one draw per particle).
-layout(location = 2) uniform int particleSource;
+layout(std430, binding = 1) readonly buffer Emitters { Emitter emitters[]; };
+#if PARTICLE_SOURCE == 2
 layout(location = 3) uniform vec4 oneOriginAge;
 layout(location = 4) uniform vec4 oneVelocityLife;
 layout(location = 5) uniform vec4 oneExtra;
+#else
+layout(std430, binding = 0) readonly buffer Particles { Particle particles[]; };
+#endif
+#if PARTICLE_SOURCE == 1
+layout(std430, binding = 2) readonly buffer LiveIndices { uint liveIndex[]; };
+#endif
+
+layout(location = 0) uniform mat4 viewMatrix;
+layout(location = 1) uniform mat4 projectionMatrix;
 
 layout(location = 0) out vec2 corner;
 layout(location = 1) out vec4 color;
@@ -25,13 +39,13 @@ layout(location = 2) flat out vec3 emitterFlags;  // coverage, textured, the cha
 layout(location = 3) out float viewDistance;
 
 void main() {
-    Particle p;
-    if (particleSource == 2) {
-        p = Particle(oneOriginAge, oneVelocityLife, oneExtra);
-    } else {
-        uint index = particleSource == 1 ? liveIndex[gl_InstanceID] : uint(gl_InstanceID);
-        p = particles[index];
-    }
+#if PARTICLE_SOURCE == 2
+    Particle p = Particle(oneOriginAge, oneVelocityLife, oneExtra);
+#elif PARTICLE_SOURCE == 1
+    Particle p = particles[liveIndex[gl_InstanceID]];
+#else
+    Particle p = particles[gl_InstanceID];
+#endif
     Emitter e = emitters[uint(p.extra.y)];
     ParticleLook look = particleLook(p, e);
 
