@@ -286,6 +286,47 @@ TEST_F(CloudsOnGl, HitsBehindTheEyeAreRejectedOtherwiseTheLayerIsMirroredInTheSk
     }
 }
 
+// The stage, the features, the dither and the premultiplied output are #defines (one program each,
+// so llvmpipe does not run every alternative); a bit or a dither the stage's code never reads must not
+// build another program for the same picture.
+TEST_F(CloudsOnGl, SettingsThatDrawTheSamePictureShareOneProgram) {
+    CloudFrameSettings screen;
+    screen.stage = CloudStage::screenTexture;
+    CloudFrameSettings screenWithEverything = screen;
+    screenWithEverything.features = cloudShadows | cloudTwoScales | cloudBeerLambert;
+    screenWithEverything.dither = CloudDither::r2;
+    EXPECT_EQ(&pass.programFor(screen), &pass.programFor(screenWithEverything));
+
+    CloudFrameSettings plane;
+    plane.stage = CloudStage::plane;
+    plane.features = cloudRejectBehind | cloudTwoScales;
+    CloudFrameSettings planeWithMarchBits = plane;
+    planeWithMarchBits.features |= cloudShadows | cloudEyeInside | cloudBeerLambert;
+    planeWithMarchBits.dither = CloudDither::bayer;
+    EXPECT_EQ(&pass.programFor(plane), &pass.programFor(planeWithMarchBits));
+    EXPECT_NE(&pass.programFor(plane), &pass.programFor(screen));
+
+    // What the march reads is a program of its own: the dither, a feature bit, premultiplied output.
+    CloudFrameSettings march;
+    march.stage = CloudStage::march;
+    march.features = cloudEyeInside;
+    CloudFrameSettings bayer = march;
+    bayer.dither = CloudDither::bayer;
+    CloudFrameSettings shadows = march;
+    shadows.features |= cloudShadows;
+    CloudFrameSettings premultiplied = march;
+    premultiplied.premultiplied = true;
+    CloudFrameSettings rejectBehind = march;  // a plane-only bit: the same march
+    rejectBehind.features |= cloudRejectBehind;
+    const FullscreenPass* m = &pass.programFor(march);
+    EXPECT_NE(m, &pass.programFor(bayer));
+    EXPECT_NE(m, &pass.programFor(shadows));
+    EXPECT_NE(m, &pass.programFor(premultiplied));
+    EXPECT_EQ(m, &pass.programFor(rejectBehind));
+    for (const CloudFrameSettings* s : {&screen, &plane, &march, &bayer, &shadows, &premultiplied})
+        EXPECT_TRUE(pass.programFor(*s).usable()) << pass.programFor(*s).error();
+}
+
 TEST_F(CloudsOnGl, TheWorldPositionFromDepthUsesTheMatricesThatDrewIt) {
     // A floor under the eye, its depth written as a camera would: at 0.5 m (under the plane at 1 m)
     // the plane is in front of it; at 1.5 m the floor is in front of the plane and hides it.

@@ -21,15 +21,18 @@ constexpr GLint kRangeCountStep = 4;
 constexpr GLint kThresholdPair = 5;
 constexpr GLint kCloudColour = 6;
 constexpr GLint kScales = 7;
-constexpr GLint kStage = 8;
-constexpr GLint kFeatures = 9;
 constexpr GLint kShadowOffset = 10;
-constexpr GLint kDither = 11;
 constexpr GLint kFrameIndex = 12;
 constexpr GLint kPlaneHeight = 13;
 constexpr GLint kTargetSize = 14;
-constexpr GLint kPremultiply = 15;
 constexpr GLint kDepthStride = 16;
+
+// The feature bits each stage's code reads (clouds.frag): the others are left out of the program's
+// choices, so settings that draw the same picture share one program.
+constexpr int kPlaneFeatures = cloudRejectBehind | cloudTwoScales | cloudDepthAware;
+constexpr int kMarchFeatures = cloudTwoScales | cloudDepthAware | cloudEyeInside | cloudShadows |
+                               cloudThreshold | cloudHeightShaping | cloudDistanceOcclusion |
+                               cloudBeerLambert;
 
 constexpr GLuint kDensityUnit = 0;
 constexpr GLuint kDepthUnit = 1;
@@ -118,8 +121,30 @@ std::uint64_t CloudDensityTexture::bytes() const {
 
 CloudPass CloudPass::create() {
     CloudPass p;
-    p.program_ = FullscreenPass("effects/clouds/clouds.frag", "clouds");
+    p.programs_ = FullscreenVariants("effects/clouds/clouds.frag", "clouds");
     return p;
+}
+
+const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
+    const int stage = int(s.stage);
+    int features = 0;
+    if (s.stage == CloudStage::plane) features = s.features & kPlaneFeatures;
+    if (s.stage == CloudStage::march) features = s.features & kMarchFeatures;
+    // Only the march jitters its start.
+    const int dither = s.stage == CloudStage::march ? int(s.dither) : 0;
+    return programs_.get({{"CLOUD_STAGE", stage},
+                          {"CLOUD_FEATURES", features},
+                          {"CLOUD_DITHER", dither},
+                          {"CLOUD_PREMULTIPLY", s.premultiplied ? 1 : 0}});
+}
+
+const FullscreenPass& CloudPass::fullest() const {
+    CloudFrameSettings s;
+    s.stage = CloudStage::march;
+    s.features = kMarchFeatures;
+    s.dither = CloudDither::ign;
+    s.premultiplied = true;
+    return programFor(s);
 }
 
 PassState CloudPass::state() {
@@ -130,7 +155,7 @@ PassState CloudPass::state() {
 }
 
 void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
-    GLuint prog = program();
+    GLuint prog = programFor(s).program();
     setCloudCameraUniforms(prog, s);
     glm::vec4 rcs = s.march.rangeCountStep();
     if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
@@ -140,13 +165,9 @@ void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const Sh
     glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
     glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
     glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
-    glProgramUniform1i(prog, kStage, int(s.stage));
-    glProgramUniform1i(prog, kFeatures, s.features);
     glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
-    glProgramUniform1i(prog, kDither, int(s.dither));
     glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
     glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
-    glProgramUniform1i(prog, kPremultiply, s.premultiplied ? 1 : 0);
     glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
     glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
                        float(std::max(target.height, 1)));
@@ -186,6 +207,7 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
     s.premultiplied = false;
     s.depthStride = 1;
     MarchInputs m = marchInputs(inputs, s);
+    programFor(s);  // built while the frame is declared (the first time), not while it runs
     const CloudPass* self = this;
     const CloudDensityTexture* densityTexture = &density;
     Pass& pass = graph.addPass("clouds", [self, s, m, densityTexture](PassContext& ctx) {
@@ -205,6 +227,7 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     s.premultiplied = true;
     s.depthStride = divisor;
     MarchInputs m = marchInputs(inputs, s);
+    programFor(s);  // built while the frame is declared (the first time), not while it runs
     const CloudPass* self = this;
     const CloudDensityTexture* densityTexture = &density;
     Pass& pass = graph.addPass("clouds march", [self, s, m, densityTexture](PassContext& ctx) {
@@ -223,9 +246,10 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
 void CloudPass::draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
                      const ShadowLookup& lookup, GLuint density) const {
     const bool shadows = shadowMap != 0;
+    const FullscreenPass& program = programFor(s);
     setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
-    ShadowMap::bindForLookup(program(), shadowMap, shadows ? lookup : ShadowLookup{});
-    program_.draw({density, depth});
+    ShadowMap::bindForLookup(program.program(), shadowMap, shadows ? lookup : ShadowLookup{});
+    program.draw({density, depth});
 }
 
 }  // namespace fx

@@ -20,6 +20,7 @@
 
 #include "effects/clouds/cloud_march.hpp"
 #include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "gl/texture.hpp"
 #include "image/image.hpp"
@@ -110,9 +111,14 @@ public:
     CloudPass() = default;  // empty: no GL yet
     static CloudPass create();
 
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
-    GLuint program() const { return program_.program(); }
+    // Whether the program that holds the most code builds (the march with every feature, jitter and
+    // premultiplied output); the others differ from it only by #defines.
+    bool usable() const { return fullest().usable(); }
+    const std::string& error() const { return fullest().error(); }
+
+    // The program for these settings: the stage, the features that stage reads, the dither and the
+    // premultiplied output are #defines (clouds.frag), one program per combination, built on first use.
+    const FullscreenPass& programFor(const CloudFrameSettings& settings) const;
 
     // Declares "clouds". `density` must outlive the frame's execution. A settings.march that is not
     // drawn (no thickness, no samples) or a threshold that leaves no cloud still declares the pass:
@@ -127,7 +133,7 @@ public:
                                const CloudDensityTexture& density, CloudFrameSettings settings, int divisor,
                                const std::string& textureName = "clouds.layer") const;
 
-    // Sets every uniform on the program (public for tests that draw without a graph).
+    // Sets every uniform on programFor(settings) (public for tests that draw without a graph).
     void setUniforms(const CloudFrameSettings& settings, Size2D target, const ShadowLookup* shadow) const;
 
     // The state the pass declares: no depth, straight-alpha blending, no culling, every channel.
@@ -137,7 +143,9 @@ private:
     void draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
               const ShadowLookup& lookup, GLuint density) const;
 
-    FullscreenPass program_;
+    const FullscreenPass& fullest() const;
+
+    FullscreenVariants programs_;
 };
 
 }  // namespace fx

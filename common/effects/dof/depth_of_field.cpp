@@ -55,7 +55,7 @@ DepthOfField DepthOfField::create() {
     d.chapter_ = FullscreenPass("effects/dof/chapter.frag", "dof chapter");
     d.prefilter_ = FullscreenPass("effects/dof/prefilter.frag", "dof prefilter");
     d.tileMax_ = FullscreenPass("effects/dof/tile_max.frag", "dof tile max");
-    d.gather_ = FullscreenPass("effects/dof/gather.frag", "dof gather");
+    d.gather_ = FullscreenVariants("effects/dof/gather.frag", "dof gather");
     d.composite_ = FullscreenPass("effects/dof/composite.frag", "dof composite");
     return d;
 }
@@ -65,10 +65,15 @@ bool DepthOfField::usable() const {
 }
 
 std::string DepthOfField::error() const {
+    // The default gather (near/far) stands for both: the two differ only by a #define.
     for (const FullscreenPass* p :
-         {&coc_, &heat_, &naive_, &chapter_, &prefilter_, &tileMax_, &gather_, &composite_})
+         {&coc_, &heat_, &naive_, &chapter_, &prefilter_, &tileMax_, &gatherProgram(true), &composite_})
         if (!p->usable()) return p->error();
     return {};
+}
+
+const FullscreenPass& DepthOfField::gatherProgram(bool separateFields) const {
+    return gather_.get({{"DOF_SEPARATE", separateFields ? 1 : 0}});
 }
 
 DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
@@ -152,18 +157,19 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
                            TextureUsage::ColorAttachment);
     tiles.read(g.prefiltered);
 
-    const FullscreenPass* gather = &gather_;
+    // One field or two is built into the program: a uniform branch ran both on llvmpipe.
+    const FullscreenPass& gatherPass = gatherProgram(s.separateFields);
+    const FullscreenPass* gather = &gatherPass;
     const DofKernel kernel = dofKernelForTaps(s.taps);
     // The clamp as a radius in gather texels bounds the kernel and how many tiles it looks across.
     const float maxRadius = lens.maxCocPixels * lens.radiusPerDiameter / float(scale);
     TextureHandle tileTexture = g.tiles;
     Pass& gath =
-        fullscreen(graph, "dof gather", gather_,
+        fullscreen(graph, "dof gather", gatherPass,
                    [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
                        GLuint p = gather->program();
                        glProgramUniform1i(p, 0, kernel.rings);
                        glProgramUniform1i(p, 1, kernel.tapsPerRing);
-                       glProgramUniform1i(p, 2, s.separateFields ? 1 : 0);
                        glProgramUniform1i(p, 3, tile);
                        glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
                        glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));

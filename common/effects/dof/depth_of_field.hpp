@@ -12,6 +12,7 @@
 #include <string>
 
 #include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/thin_lens.hpp"
 
@@ -81,7 +82,11 @@ public:
                          const DofLensUniforms& lens, const DofGatherSettings& settings) const;
 
 private:
-    FullscreenPass coc_, heat_, naive_, chapter_, prefilter_, tileMax_, gather_, composite_;
+    // The gather with near/far separation on or off (DOF_SEPARATE), built into the program.
+    const FullscreenPass& gatherProgram(bool separateFields) const;
+
+    FullscreenPass coc_, heat_, naive_, chapter_, prefilter_, tileMax_, composite_;
+    FullscreenVariants gather_;
 };
 
 }  // namespace fx

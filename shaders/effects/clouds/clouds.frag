@@ -23,20 +23,24 @@ layout(location = 4) uniform vec4 rangeCountStep;  // bottom, top, samples, vert
 layout(location = 5) uniform vec2 thresholdPair;   // threshold, 1 / (1 - threshold) (0: no cloud)
 layout(location = 6) uniform vec3 cloudColour;
 layout(location = 7) uniform vec2 scales;  // texture repeats per metre, layer 0 and layer 1
-layout(location = 8) uniform int stage;    // 0: texture on the screen, 1: one plane, 2: march the slab
-layout(location = 9) uniform int features;
 layout(location = 10) uniform float shadowOffset;  // metres: one texel of the shadow map
-layout(location = 11) uniform int dither;          // 0 none, 1 Bayer 4x4, 2 IGN, 3 R2
 layout(location = 12) uniform int frameIndex;      // moves the IGN and R2 patterns every frame
 layout(location = 13) uniform float planeHeight;   // stages 0 and 1
 // The target's size: the pixel's position on the screen is gl_FragCoord / targetSize, exact at pixel
 // centres, and it indexes the depth texture (the same size) directly.
 layout(location = 14) uniform vec2 targetSize;
-// 1: write premultiplied colour (rgb x alpha) into a cloud layer of its own, for accumulation and
-// upsampling; 0: straight alpha, blended over the scene directly (the chapter).
-layout(location = 15) uniform int premultiply;
 // Scene depth texels per pixel of this target: 1 at full resolution, 2 at half.
 layout(location = 16) uniform int depthStride;
+
+// What the whole draw shares is built into the program, one program per combination (#defines set by
+// cloud_pass.cpp through effects/post/fullscreen_variants.hpp), not read from uniforms: llvmpipe runs
+// both sides of a branch on a uniform, so every stage, feature and dither was paid for on every pixel.
+//   CLOUD_STAGE        0: texture on the screen, 1: one plane, 2: march the slab
+//   CLOUD_FEATURES     the feature bits below
+//   CLOUD_DITHER       0 none, 1 Bayer 4x4, 2 IGN, 3 R2
+//   CLOUD_PREMULTIPLY  1: write premultiplied colour (rgb x alpha) into a cloud layer of its own, for
+//                      accumulation and upsampling; 0: straight alpha, blended over the scene directly
+//                      (the chapter).
 
 // Feature bits (CloudFeature in cloud_pass.hpp).
 const int kRejectBehind = 1;       // plane: no hit behind the eye (no mirrored layer)
@@ -57,7 +61,7 @@ const float kMinSlope = 0.1;
 // A ray whose |v.y| is below this is parallel to the planes: no division by it.
 const float kParallel = 1e-7;
 
-bool has(int bit) { return (features & bit) != 0; }
+bool has(int bit) { return (CLOUD_FEATURES & bit) != 0; }
 
 float sampleDensity(vec2 xz) {
     // textureLod: the lookups sit in per-pixel control flow, where implicit derivatives are undefined.
@@ -73,14 +77,14 @@ float bayer(ivec2 p) {
 
 float ditherOffset() {
     vec2 p = floor(gl_FragCoord.xy);
-    if (dither == 1) return bayer(ivec2(p));
+    if (CLOUD_DITHER == 1) return bayer(ivec2(p));
     float shift = 5.588238 * float(frameIndex % 64);
-    if (dither == 2) {
+    if (CLOUD_DITHER == 2) {
         // Interleaved gradient noise (Jimenez 2014), moved every frame.
         vec2 q = p + shift;
         return fract(52.9829189 * fract(0.06711056 * q.x + 0.00583715 * q.y));
     }
-    if (dither == 3) {
+    if (CLOUD_DITHER == 3) {
         // Roberts' R2 sequence over the screen: low-discrepancy, its spectrum close to blue noise.
         return fract(0.5 + 0.7548776662 * p.x + 0.5698402910 * p.y + 0.618034 * float(frameIndex % 64));
     }
@@ -102,12 +106,12 @@ void march();
 
 void main() {
     march();
-    if (premultiply != 0) color.rgb *= color.a;
+    if (CLOUD_PREMULTIPLY != 0) color.rgb *= color.a;
 }
 
 void march() {
     color = vec4(0.0);
-    if (stage == 0) {
+    if (CLOUD_STAGE == 0) {
         // Step 1: the texture glued to the screen.
         color = vec4(cloudColour, textureLod(density, uv, 0.0).r);
         return;
@@ -122,7 +126,7 @@ void march() {
     float camY = cameraPosition.y;
     float vy = abs(v.y) >= kParallel ? v.y : 0.0;  // below this, exactly parallel: no division at all
 
-    if (stage == 1) {
+    if (CLOUD_STAGE == 1) {
         // Steps 2 to 4: one infinite plane. t = (planeY - camY) / v.y; a parallel ray never meets it.
         if (vy == 0.0) return;
         float t = (planeHeight - camY) / vy;

@@ -14,7 +14,9 @@ layout(binding = 0) uniform sampler2D prefiltered;  // rgb, a = signed radius in
 layout(binding = 1) uniform sampler2D tileMax;
 layout(location = 0) uniform int rings;         // rings around the centre tap
 layout(location = 1) uniform int tapsPerRing;   // ring k holds tapsPerRing * k taps
-layout(location = 2) uniform int separate;      // near/far separation on (1) or off (0)
+// DOF_SEPARATE, near/far separation on (1) or off (0), is a #define, one program each
+// (effects/post/fullscreen_variants.hpp): llvmpipe runs both sides of a branch on a uniform, so one
+// field cost as much as two.
 layout(location = 3) uniform int tilePixels;
 layout(location = 4) uniform float maxRadius;   // gather pixels: the clamp, which bounds the tile reach
 layout(location = 5) uniform float highlight;   // bokeh: extra weight per unit of luminance above 1
@@ -61,33 +63,32 @@ void main() {
             vec4 s = texelFetch(prefiltered, q, 0);
             float w = weightOf(s.rgb);
             ++taps;
-            if (separate != 0) {
-                // In front: a near-field tap nearer than the centre by more than half a texel of blur.
-                bool inFront = s.a < min(centre.a, 0.0) - 0.5;
-                if (inFront) {
-                    float nw = clamp(-s.a - r + 1.0, 0.0, 1.0);
-                    near += vec4(s.rgb, 1.0) * nw * w;
-                    // Each tap stands for radius^2 / taps of area; a near tap's light spreads over its
-                    // own blur disk (s.a^2), so a uniform near field in front gives a coverage of 1.
-                    nearCoverage += nw * radius * radius / max(s.a * s.a, 1.0);
-                } else {
-                    // Behind a near centre, what shows through its blurred edge: the taps not in front,
-                    // within the centre's radius. Behind any other centre, a tap counts only up to the
-                    // smaller blur of the two: a sharp foreground is not covered by the background.
-                    float farRadius = centre.a < -0.5 ? -centre.a : max(min(centre.a, s.a), 0.0);
-                    float fw = clamp(farRadius - r + 1.0, 0.0, 1.0);
-                    far += vec4(s.rgb, 1.0) * fw * w;
-                }
+#if DOF_SEPARATE
+            // In front: a near-field tap nearer than the centre by more than half a texel of blur.
+            bool inFront = s.a < min(centre.a, 0.0) - 0.5;
+            if (inFront) {
+                float nw = clamp(-s.a - r + 1.0, 0.0, 1.0);
+                near += vec4(s.rgb, 1.0) * nw * w;
+                // Each tap stands for radius^2 / taps of area; a near tap's light spreads over its
+                // own blur disk (s.a^2), so a uniform near field in front gives a coverage of 1.
+                nearCoverage += nw * radius * radius / max(s.a * s.a, 1.0);
             } else {
-                float aw = clamp(abs(s.a) - r + 1.0, 0.0, 1.0);  // 1 for the centre tap
-                all += vec4(s.rgb, 1.0) * aw * w;
+                // Behind a near centre, what shows through its blurred edge: the taps not in front,
+                // within the centre's radius. Behind any other centre, a tap counts only up to the
+                // smaller blur of the two: a sharp foreground is not covered by the background.
+                float farRadius = centre.a < -0.5 ? -centre.a : max(min(centre.a, s.a), 0.0);
+                float fw = clamp(farRadius - r + 1.0, 0.0, 1.0);
+                far += vec4(s.rgb, 1.0) * fw * w;
             }
+#else
+            float aw = clamp(abs(s.a) - r + 1.0, 0.0, 1.0);  // 1 for the centre tap
+            all += vec4(s.rgb, 1.0) * aw * w;
+#endif
         }
     }
-    if (separate == 0) {
-        color = vec4(all.rgb / max(all.a, 1e-6), 0.0);
-        return;
-    }
+#if !DOF_SEPARATE
+    color = vec4(all.rgb / max(all.a, 1e-6), 0.0);
+#else
     vec3 farColour = far.a > 0.0 ? far.rgb / far.a : centre.rgb;
     vec3 nearColour = near.a > 0.0 ? near.rgb / near.a : farColour;
     float alpha = near.a > 0.0 ? clamp(nearCoverage / float(taps), 0.0, 1.0) : 0.0;
@@ -96,4 +97,5 @@ void main() {
     // composite's alpha puts it over); over a blurred one, the far and near fields mixed.
     float defocus = smoothstep(0.5, 1.5, abs(centre.a) * float(scale));
     color = vec4(mix(nearColour, mix(farColour, nearColour, alpha), defocus), alpha);
+#endif
 }
