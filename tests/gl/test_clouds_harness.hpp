@@ -1,0 +1,131 @@
+#pragma once
+// The cloud pass on GL for tests/gl/test_clouds*.cpp (effects/clouds, the Clouds chapter's hard cases in
+// its part 8), read back as floats. Most cases use a constant density texture, so the expected opacity
+// is the chapter's closed form 1 - (1 - 0.3 a)^n for n samples in the slab.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <vector>
+#include "base/paths.hpp"
+#include "effects/clouds/cloud_march.hpp"
+#include "effects/clouds/cloud_pass.hpp"
+#include "effects/clouds/cloud_temporal.hpp"
+#include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
+#include "gl/readback.hpp"
+#include "gl_test.hpp"
+#include "image/png_file.hpp"
+#include "render_gl/gl_pass_executor.hpp"
+#include "render_gl/gl_texture_allocator.hpp"
+#include "render_gl/pass_timer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace fx::test {
+
+inline constexpr float kTolerance = 3e-3f;  // RGBA16F holds the result: about 1e-3 near 1
+
+inline float srgbDecode(float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+// The chapter's opacity after n samples of density a (both layers summed), without threshold.
+inline float chapterOpacity(float a, int n) {
+    return 1.0f - std::pow(1.0f - std::min(0.3f * a, 1.0f), float(n));
+}
+
+inline ByteImage constantDensity(unsigned char value) {
+    ByteImage image = makeByteImage(4, 4, 4);
+    for (std::size_t i = 0; i < image.texels.size(); ++i) image.texels[i] = (i % 4 == 3) ? 255 : value;
+    return image;
+}
+
+inline Camera cameraAt(glm::vec3 position, float yaw, float pitch) {
+    Camera c;
+    c.position = position;
+    c.aim = CameraAim::yawPitch;
+    c.yawDegrees = yaw;
+    c.pitchDegrees = pitch;
+    c.fovYDegrees = 60.0f;
+    c.near = 0.1f;
+    c.far = 500.0f;
+    return c;
+}
+
+// Step 6's march (two scales, depth, eye inside), no dither, the chapter's slab 0..2 m and 8 samples.
+inline CloudFrameSettings marchSettings(const Camera& camera, int width, int height) {
+    CloudFrameSettings s;
+    s.stage = CloudStage::march;
+    s.features = cloudTwoScales | cloudDepthAware | cloudEyeInside;
+    s.march = cloudMarch(0.0f, 2.0f, 8.0f, 0.5f);
+    s.scales = {1.0f / 311.0f, 1.0f / 127.0f};
+    s.color = glm::vec3(1.0f);
+    CameraMatrices m = cameraMatrices(camera, width, height);
+    s.view = m.view;
+    s.projection = m.projection;
+    s.cameraPosition = m.position;
+    return s;
+}
+
+// The depth a camera's depth buffer holds for a point at view-space depth z (z < 0).
+inline float depthForViewZ(const glm::mat4& projection, float z) {
+    glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, z, 1.0f);
+    return clip.z / clip.w * 0.5f + 0.5f;
+}
+
+class CloudsOnGl : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        pass = CloudPass::create();
+        ASSERT_TRUE(pass.usable()) << pass.error();
+        constant = CloudDensityTexture::fromImage(constantDensity(188));
+        a = 2.0f * srgbDecode(188.0f / 255.0f);
+    }
+
+    // Runs the pass over a colour target cleared to 0 with `depth01` as the scene's depth (empty: 1
+    // everywhere, the sky). Returns the colour target: alpha is the cloud's opacity.
+    FloatImage run(const CloudFrameSettings& settings, int width, int height,
+                   const CloudDensityTexture& density, std::vector<float> depth01 = {}) {
+        gl::Texture color =
+            gl::Texture::create2D(TextureFormat::RGBA16F, width, height, 1, "test.scene.color");
+        gl::Texture depth =
+            gl::Texture::create2D(TextureFormat::Depth32F, width, height, 1, "test.scene.depth");
+        const float zero[4] = {0, 0, 0, 0};
+        glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
+        if (depth01.empty()) depth01.assign(std::size_t(width) * std::size_t(height), 1.0f);
+        glTextureSubImage2D(depth.name(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
+                            depth01.data());
+
+        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
+        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+        pass.declare(graph, {c, d, nullptr}, density, settings);
+        Status status = graph.execute(pool, executor);
+        EXPECT_TRUE(status) << (status ? "" : status.error());
+        graph.releaseTextures();
+        pool.endFrame();
+        glDisable(GL_BLEND);
+        glUseProgram(0);
+        glBindVertexArray(0);
+        return gl::readTexture(color);
+    }
+
+    static bool allFinite(const FloatImage& image) {
+        return std::all_of(image.texels.begin(), image.texels.end(),
+                           [](float v) { return std::isfinite(v); });
+    }
+    static float alphaAt(const FloatImage& image, int x, int y) { return image.texel(x, y, 3); }
+
+    CloudPass pass;
+    CloudDensityTexture constant;
+    float a = 0.0f;
+    GlTextureAllocator allocator;
+    TexturePool pool{allocator};
+    PassTimer timer{TimingMode::Off, ""};
+    GlPassExecutor executor{timer, {0, true}};
+};
+
+}  // namespace fx::test
