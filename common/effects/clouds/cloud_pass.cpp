@@ -154,25 +154,6 @@ PassState CloudPass::state() {
     return s;
 }
 
-void CloudPass::setUniforms(const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) const {
-    GLuint prog = programFor(s).program();
-    setCloudCameraUniforms(prog, s);
-    glm::vec4 rcs = s.march.rangeCountStep();
-    if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
-    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));
-    glm::vec2 th = s.march.thresholdPair();
-    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
-    glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
-    glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
-    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
-    glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
-    glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
-    glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
-    glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
-    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
-                       float(std::max(target.height, 1)));
-}
-
 namespace {
 
 // What a cloud march pass needs from its inputs, resolved once for both ways of declaring it.
@@ -199,6 +180,37 @@ MarchInputs marchInputs(const CloudInputs& inputs, CloudFrameSettings& s) {
     return m;
 }
 
+// Every uniform of the march program `prog` for these settings.
+void setMarchUniforms(GLuint prog, const CloudFrameSettings& s, Size2D target, const ShadowLookup* shadow) {
+    setCloudCameraUniforms(prog, s);
+    glm::vec4 rcs = s.march.rangeCountStep();
+    if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
+    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));
+    glm::vec2 th = s.march.thresholdPair();
+    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
+    glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
+    glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
+    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
+    glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
+    glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
+    glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
+    glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
+    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
+                       float(std::max(target.height, 1)));
+}
+
+// The body both declares give their pass: the program resolved once, when the frame is declared.
+Pass::Body marchBody(const FullscreenPass* program, const CloudFrameSettings& s, const MarchInputs& m,
+                     const CloudDensityTexture* density) {
+    return [program, s, m, density](PassContext& ctx) {
+        const GLuint prog = program->program();
+        setMarchUniforms(prog, s, ctx.targetSize(), m.shadows ? &m.lookup : nullptr);
+        ShadowMap::bindForLookup(prog, m.shadows ? ctx.native(m.shadowMap) : 0,
+                                 m.shadows ? m.lookup : ShadowLookup{});
+        program->draw({density->name(), m.depth ? ctx.native(m.depthTexture) : 0});
+    };
+}
+
 }  // namespace
 
 Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const CloudDensityTexture& density,
@@ -207,13 +219,7 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
     s.premultiplied = false;
     s.depthStride = 1;
     MarchInputs m = marchInputs(inputs, s);
-    programFor(s);  // built while the frame is declared (the first time), not while it runs
-    const CloudPass* self = this;
-    const CloudDensityTexture* densityTexture = &density;
-    Pass& pass = graph.addPass("clouds", [self, s, m, densityTexture](PassContext& ctx) {
-        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
-                   m.lookup, densityTexture->name());
-    });
+    Pass& pass = graph.addPass("clouds", marchBody(&programFor(s), s, m, &density));
     pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
@@ -227,13 +233,7 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     s.premultiplied = true;
     s.depthStride = divisor;
     MarchInputs m = marchInputs(inputs, s);
-    programFor(s);  // built while the frame is declared (the first time), not while it runs
-    const CloudPass* self = this;
-    const CloudDensityTexture* densityTexture = &density;
-    Pass& pass = graph.addPass("clouds march", [self, s, m, densityTexture](PassContext& ctx) {
-        self->draw(ctx, s, m.depth ? ctx.native(m.depthTexture) : 0, m.shadows ? ctx.native(m.shadowMap) : 0,
-                   m.lookup, densityTexture->name());
-    });
+    Pass& pass = graph.addPass("clouds march", marchBody(&programFor(s), s, m, &density));
     TextureHandle layer =
         pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                     TextureUsage::ColorAttachment);
@@ -241,15 +241,6 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
     return layer;
-}
-
-void CloudPass::draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
-                     const ShadowLookup& lookup, GLuint density) const {
-    const bool shadows = shadowMap != 0;
-    const FullscreenPass& program = programFor(s);
-    setUniforms(s, ctx.targetSize(), shadows ? &lookup : nullptr);
-    ShadowMap::bindForLookup(program.program(), shadowMap, shadows ? lookup : ShadowLookup{});
-    program.draw({density, depth});
 }
 
 }  // namespace fx

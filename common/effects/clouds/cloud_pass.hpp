@@ -133,16 +133,10 @@ public:
                                const CloudDensityTexture& density, CloudFrameSettings settings, int divisor,
                                const std::string& textureName = "clouds.layer") const;
 
-    // Sets every uniform on programFor(settings) (public for tests that draw without a graph).
-    void setUniforms(const CloudFrameSettings& settings, Size2D target, const ShadowLookup* shadow) const;
-
     // The state the pass declares: no depth, straight-alpha blending, no culling, every channel.
     static PassState state();
 
 private:
-    void draw(PassContext& ctx, const CloudFrameSettings& s, GLuint depth, GLuint shadowMap,
-              const ShadowLookup& lookup, GLuint density) const;
-
     const FullscreenPass& fullest() const;
 
     FullscreenVariants programs_;

@@ -34,6 +34,12 @@ vec2 texelSize(sampler2D s) {
     return 1.0 / vec2(max(textureSize(s, 0), ivec2(1)));
 }
 
+// The four bilinear taps at (+-o.x, +-o.y) from uv, summed: the diagonals every bloom filter has.
+vec3 diagonalSum(sampler2D source, vec2 uv, vec2 o) {
+    return texture(source, uv + vec2(-o.x, o.y)).rgb + texture(source, uv + vec2(o.x, o.y)).rgb +
+           texture(source, uv + vec2(-o.x, -o.y)).rgb + texture(source, uv + vec2(o.x, -o.y)).rgb;
+}
+
 // The upsample filters (effects/bloom/bloom_settings.hpp), `offset` in texels of `source`:
 //   filters 0 (Shader effects): centre x3, 4 diagonals at +-offset x2, 4 axial at 2 offset x1, / 15;
 //   filters 1 (Bloom chapter): 4 axial taps at 2 offset x1, 4 diagonal at offset x2, / 12;
@@ -42,8 +48,7 @@ vec2 texelSize(sampler2D s) {
 vec3 upsampleFilter(sampler2D source, vec2 uv, int filters, float offset) {
     if (filters == 2) return texture(source, uv).rgb;
     vec2 o = offset * texelSize(source);
-    vec3 diagonals = texture(source, uv + vec2(-o.x, o.y)).rgb + texture(source, uv + vec2(o.x, o.y)).rgb +
-                     texture(source, uv + vec2(-o.x, -o.y)).rgb + texture(source, uv + vec2(o.x, -o.y)).rgb;
+    vec3 diagonals = diagonalSum(source, uv, o);
     vec3 axial = texture(source, uv + vec2(-2.0 * o.x, 0.0)).rgb + texture(source, uv + vec2(2.0 * o.x, 0.0)).rgb +
                  texture(source, uv + vec2(0.0, -2.0 * o.y)).rgb + texture(source, uv + vec2(0.0, 2.0 * o.y)).rgb;
     return filters == 0 ? (3.0 * texture(source, uv).rgb + 2.0 * diagonals + axial) / 15.0
@@ -63,7 +68,5 @@ const float kWideUpsampleScale = 1.118034;
 // root of that. Half the taps, and against the direct Gaussians the error did not grow (docs/bench.md).
 vec3 ownBlur(sampler2D level, vec2 uv, int filters, float offset) {
     float d = offset * (filters == 0 ? 1.032796 : 1.154701);
-    vec2 o = d * texelSize(level);
-    return 0.25 * (texture(level, uv + vec2(-o.x, o.y)).rgb + texture(level, uv + vec2(o.x, o.y)).rgb +
-                   texture(level, uv + vec2(-o.x, -o.y)).rgb + texture(level, uv + vec2(o.x, -o.y)).rgb);
+    return 0.25 * diagonalSum(level, uv, d * texelSize(level));
 }

@@ -17,8 +17,7 @@ layout(location = 0) out vec4 color;
 
 void main() {
     vec2 o = offset * texelSize(source);
-    vec3 diagonals = texture(source, uv + vec2(-o.x, o.y)).rgb + texture(source, uv + vec2(o.x, o.y)).rgb +
-                     texture(source, uv + vec2(-o.x, -o.y)).rgb + texture(source, uv + vec2(o.x, -o.y)).rgb;
+    vec3 diagonals = diagonalSum(source, uv, o);
     vec3 c = filters == 0 ? (4.0 * texture(source, uv).rgb + diagonals) / 8.0 : diagonals / 4.0;
     color = vec4(finiteClamp(c, 0.0, BLOOM_MAX_VALUE), 1.0);
 }
