@@ -41,11 +41,12 @@ BloomChain BloomChain::create() {
 
 namespace {
 
-const int kDefaultFilters = static_cast<int>(BloomFilters::chapter001);
+const int kBloomChapterFilters = static_cast<int>(BloomFilters::chapter001);
 
 const FullscreenPass& extractProgram(const FullscreenVariants& v, int filters, bool karis) {
     // Only the Bloom chapter's filter has a Karis average; the others build without one.
-    return v.get({{"BLOOM_FILTERS", filters}, {"BLOOM_KARIS", filters == kDefaultFilters && karis ? 1 : 0}});
+    return v.get(
+        {{"BLOOM_FILTERS", filters}, {"BLOOM_KARIS", filters == kBloomChapterFilters && karis ? 1 : 0}});
 }
 const FullscreenPass& downProgram(const FullscreenVariants& v, int filters) {
     return v.get({{"BLOOM_FILTERS", filters}});
@@ -58,8 +59,8 @@ const FullscreenPass& upProgram(const FullscreenVariants& v, int filters, bool w
 
 std::string BloomChain::error() const {
     for (const FullscreenPass* p :
-         {&extractProgram(extract_, kDefaultFilters, true), &downProgram(down_, kDefaultFilters),
-          &upProgram(up_, kDefaultFilters, false)}) {
+         {&extractProgram(extract_, kBloomChapterFilters, true), &downProgram(down_, kBloomChapterFilters),
+          &upProgram(up_, kBloomChapterFilters, false)}) {
         if (!p->usable()) return p->error();
     }
     return {};

@@ -1,6 +1,7 @@
 #include "effects/bloom/bloom_reference.hpp"
 
 #include "base/log.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 
 namespace fx {
 namespace {
@@ -13,8 +14,9 @@ constexpr GLint kDirectionLocation = 0, kSigmaLocation = 1, kScaleLocation = 2;
 BloomReference BloomReference::create() {
     BloomReference r;
     // One texel of the same size (filter 2), no Karis average: the bright part exactly, per pixel.
-    r.extract_ = FullscreenPass("effects/bloom/extract.frag", "bloom reference bright pass",
-                                bloomShaderDefines() + "#define BLOOM_FILTERS 2\n#define BLOOM_KARIS 0\n");
+    r.extract_ =
+        FullscreenPass("effects/bloom/extract.frag", "bloom reference bright pass",
+                       bloomShaderDefines() + shaderDefines({{"BLOOM_FILTERS", 2}, {"BLOOM_KARIS", 0}}));
     r.gaussian_ = FullscreenPass("effects/bloom/gaussian.frag", "bloom reference Gaussian");
     return r;
 }

@@ -10,19 +10,22 @@ FullscreenVariants::FullscreenVariants(std::string fragmentShader, std::string l
       defines_(std::move(defines)),
       built_(std::make_unique<std::map<std::string, FullscreenPass>>()) {}
 
+std::string shaderDefines(std::initializer_list<ShaderChoice> choices) {
+    std::string lines;
+    for (const auto& [name, value] : choices) lines += cat("#define ", name, " ", value, "\n");
+    return lines;
+}
+
 const FullscreenPass& FullscreenVariants::get(std::initializer_list<ShaderChoice> choices) const {
     static const FullscreenPass kNone;  // a default-made FullscreenVariants has nothing to build
     if (!built_) return kNone;
     std::string key;
-    std::string lines;
-    for (const auto& [name, value] : choices) {
-        key += cat(key.empty() ? "" : ", ", name, " ", value);
-        lines += cat("#define ", name, " ", value, "\n");
-    }
+    for (const auto& [name, value] : choices) key += cat(key.empty() ? "" : ", ", name, " ", value);
     auto found = built_->find(key);
     if (found != built_->end()) return found->second;
     std::string label = key.empty() ? label_ : cat(label_, " (", key, ")");
-    return built_->emplace(key, FullscreenPass(shader_, label, defines_ + lines)).first->second;
+    return built_->emplace(key, FullscreenPass(shader_, label, defines_ + shaderDefines(choices)))
+        .first->second;
 }
 
 }  // namespace fx

@@ -22,6 +22,10 @@ namespace fx {
 // A compile-time choice: `#define name value`.
 using ShaderChoice = std::pair<const char*, int>;
 
+// The lines that make `choices` #defines ("#define BLOOM_FILTERS 2\n..."), for a program built with one
+// fixed set of choices.
+std::string shaderDefines(std::initializer_list<ShaderChoice> choices);
+
 class FullscreenVariants {
 public:
     FullscreenVariants() = default;  // empty: no GL yet
