@@ -11,12 +11,11 @@ const vec3 kNanColour = vec3(1.0, 0.0, 1.0);          // magenta, as in the capt
 const vec3 kInfColour = vec3(1.0, 0.78, 0.0);         // amber
 const vec3 kNegativeColour = vec3(0.0, 0.67, 1.0);    // azure
 
-// The exact sRGB encoding (IEC 61966-2-1), as image/view_transform.cpp does it.
-float encodeSrgb(float c) {
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
-}
+// The sRGB encoding of values in [0, 1], within 1/90 of an 8-bit step of image/view_transform.cpp's
+// exact one (the shared fit in common/srgb.glsl: llvmpipe's pow() is slow).
+#include "../common/srgb.glsl"
 vec3 encodeSrgb(vec3 c) {
-    return vec3(encodeSrgb(c.r), encodeSrgb(c.g), encodeSrgb(c.b));
+    return srgbEncode(c);
 }
 
 // A perceptual ramp from dark blue through green and yellow to dark red (a few control points of
