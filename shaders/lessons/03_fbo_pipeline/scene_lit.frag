@@ -1,6 +1,6 @@
 #version 450 core
 // Lesson 03's lit scene, with the shadow of the sun. Until section 3.4 the chapter's standard.frag
-// ends by encoding for the display (its pow(c, 1/2.2); here the exact sRGB curve the output transform
+// ends by encoding for the display (its pow(c, 1/2.2); here the sRGB curve the output transform
 // uses), because it draws straight into the window. Once the scene goes into a float target and a
 // full-screen pass encodes at the end, encoding here as well is the double-gamma washout: the fix is
 // to write linear light and leave the encoding to the last pass (encodeForDisplay = 0).
