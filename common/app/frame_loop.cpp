@@ -157,6 +157,7 @@ void FrameLoop::run() {
 
 void FrameLoop::present(const LayoutRect& place, Size2D window) {
     // Around the picture (where no panel is, for a moment during a resize): a dark ground.
+    gl::DebugGroup group("present picture");
     const GLuint target = context_.presentFramebuffer();
     const float ground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
     glClearNamedFramebufferfv(target, GL_COLOR, 0, ground);

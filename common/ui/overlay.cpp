@@ -8,6 +8,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 #include "gl/gl.hpp"
 #include "gl/object.hpp"
 #include "ui/gl_state_scope.hpp"
@@ -20,6 +21,8 @@ namespace {
 
 // The docked windows are placed by the layout every frame; the user changes the layout by dragging
 // their inner edges (followResize), never by moving them.
+// The debug group around Dear ImGui's own GL work (its backend's objects have no labels).
+constexpr const char* kImGuiGroup = "overlay (Dear ImGui)";
 constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
 
 void placeNext(const LayoutRect& r) {
@@ -174,7 +177,13 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
     if (m.textRevision != fontsForRevision_ || textScale_ != appliedScale_) prepareFonts(m);
     if (textScale_ != appliedScale_) applyTextScale();
     ImGuiIO& io = ImGui::GetIO();
-    ImGui_ImplOpenGL3_NewFrame();
+    {
+        // Dear ImGui's GL backend (Debian's, unchanged) makes its program and buffers in its first
+        // NewFrame and a vertex array in every draw, without labels; its group says whose they are
+        // (tests/trace/check_gl_names.py allows unlabelled objects only inside it).
+        gl::DebugGroup group(kImGuiGroup);
+        ImGui_ImplOpenGL3_NewFrame();
+    }
     if (!fontTextureLabelled_ && io.Fonts->TexID) {
         // The backend makes the font texture in its first NewFrame; overlay_fonts labels later ones.
         gl::labelObject(GL_TEXTURE, GLuint(reinterpret_cast<std::uintptr_t>(io.Fonts->TexID)),
@@ -215,6 +224,7 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         }
     }
     ImGui::Render();
+    gl::DebugGroup group(kImGuiGroup);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

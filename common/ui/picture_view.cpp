@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 #include "gl/readback.hpp"
 #include "ui/gl_state_scope.hpp"
 
@@ -64,6 +65,7 @@ void PictureView::keepAsPrevious(int step) {
         previous_ = gl::Texture::create2D(TextureFormat::RGBA8, size_.width, size_.height, 1,
                                           "picture.previous_step");
     }
+    gl::DebugGroup group("keep the picture for the compare view");
     glCopyImageSubData(target_.color.name(), GL_TEXTURE_2D, 0, 0, 0, 0, previous_.name(), GL_TEXTURE_2D, 0, 0,
                        0, 0, size_.width, size_.height, 1);
     previousStep_ = step;

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 #include "gl/gl_formats.hpp"
 #include "ui/gl_state_scope.hpp"
 
@@ -88,6 +89,7 @@ const gl::Program& TextureDisplay::program(DisplayTransform transform) const {
 void TextureDisplay::draw(DisplaySurface& surface, const TextureSource& source, const ViewSettings& s,
                           const ViewWindow& window, bool grid) const {
     if (!ok() || !surface.ready() || !source.alive()) return;
+    gl::DebugGroup group(cat("inspector view of ", source.name.empty() ? "a texture" : source.name));
     GlStateScope keep;
     const int level = std::clamp(s.level, 0, source.levels() - 1);
     const Size2D size = source.levelSize(level);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "gl/debug_output.hpp"
+
 namespace fx {
 namespace {
 
@@ -101,6 +103,7 @@ void GpuParticles::drawPoolView(GLuint view, int emitters) const {
 
 void GpuParticles::clear() const {
     if (!pool_) return;
+    gl::DebugGroup group("particles: clear the GPU pool");  // a reset happens between frames
     const GLuint zero = 0;
     glClearNamedBufferData(pool_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glClearNamedBufferData(stats_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 #include "image/png_file.hpp"
 
 namespace fx {
@@ -86,6 +87,7 @@ Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
     auto image = readPng(path);
     if (!image) return Error{cat("particle sprite ", path.string(), ": ", image.error())};
     // Only alpha is used, so a linear format; mipmaps for the small far particles.
+    gl::DebugGroup group("upload particles.sprite");
     sprite_ = gl::Texture::create2D(TextureFormat::RGBA8, image->width, image->height,
                                     fullMipChainLength(image->width, image->height), "particles.sprite");
     glTextureSubImage2D(sprite_.name(), 0, 0, 0, image->width, image->height, GL_RGBA, GL_UNSIGNED_BYTE,

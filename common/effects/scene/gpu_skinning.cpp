@@ -1,6 +1,7 @@
 #include "effects/scene/gpu_skinning.hpp"
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 
 namespace fx {
 
@@ -26,6 +27,8 @@ GpuSkinning GpuSkinning::create() {
 
 void GpuSkinning::pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints) const {
     if (!usable() || mesh.vertexCount() == 0) return;
+    // Lessons pose their meshes before the frame's passes run, outside the graph's groups.
+    gl::DebugGroup group("skinning (transform feedback)");
     GLint previousFeedback = 0, previousFramebuffer = 0;
     glGetIntegerv(GL_TRANSFORM_FEEDBACK_BINDING, &previousFeedback);
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);

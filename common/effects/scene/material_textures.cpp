@@ -5,12 +5,14 @@
 #include <cstring>
 
 #include "base/log.hpp"
+#include "gl/debug_output.hpp"
 #include "image/png_file.hpp"
 
 namespace fx {
 
 GLuint MaterialTextures::upload(const std::string& key, const std::string& label, int width, int height,
                                 const unsigned char* rgba) {
+    gl::DebugGroup group(cat("upload ", label));  // the mip chain is GPU work a debugger should name
     gl::Texture texture = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, width, height,
                                                 fullMipChainLength(width, height), label);
     glTextureSubImage2D(texture.name(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
