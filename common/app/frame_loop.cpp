@@ -184,7 +184,7 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
         if (std::uint64_t(p.frame) == index) keys |= p.press;
     }
     for (const ScriptedResize& r : s_.options.resizes) {
-        if (std::uint64_t(r.frame) == index && !plan_.headless) context_.resize({r.width, r.height});
+        if (std::uint64_t(r.frame) == index) context_.resize({r.width, r.height});
     }
     if (keys.next) s_.step = std::min(s_.step + 1, stepCount - 1);
     if (keys.previous) s_.step = std::max(s_.step - 1, 0);

@@ -302,7 +302,8 @@ const std::vector<Flag>& flags() {
          .apply = addPress},
         {.name = "--resize",
          .value = "WxH@FRAME",
-         .help = "resize the window at frame FRAME, as if its border were dragged",
+         .help = "resize the window at frame FRAME, as if its border were dragged (headless: the offscreen "
+                 "target; 0x0 is a minimised window)",
          .repeatable = true,
          .apply = addResize},
         {.name = "--all-steps",

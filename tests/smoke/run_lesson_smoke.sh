@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Smoke test of one lesson: every step headless at 320x180, checked by fx_smoke_check against
 # tests/smoke/golden/<lesson>/step-<k>.png; every step again, which must give the same bytes; and
-# every step at 1x1 and 0x0 (a minimised window), which must run without a GL error.
+# every step at 1x1 and 0x0 (a minimised window), which must run without a GL error; and every step
+# resized while it runs.
 #   run_lesson_smoke.sh <lesson exe> <checker exe> <golden dir> <work dir>
 set -uo pipefail
 exe="$1" checker="$2" golden="$3" work="$4"
@@ -42,6 +43,34 @@ for size in 1x1 0x0; do
       echo "FAIL: $name step $step at $size reported GL errors:"; grep '"lastGlError"' "$dir/report.json"; status=1
     fi
   done
+done
+# Resized while it runs, as a window dragged through every size: minimised, 1x1, odd, and back. Every
+# texture follows the size, so the last frame is 320x180 again, with no GL error and no NaN or Inf in
+# any texture the report lists (but those the step shows them in on purpose).
+for step in $(seq 1 "$steps"); do
+  dir="$work/resized-step-$step"
+  mkdir -p "$dir"
+  if ! "$exe" --headless --size 320x180 --frames 6 --step "$step" --resize 0x0@1 --resize 1x1@2 --resize 97x31@3 \
+       --resize 320x180@4 --report "$dir/report.json" >"$dir.log" 2>&1; then
+    echo "FAIL: $name step $step, resized while running, exited with an error:"; cat "$dir.log"; status=1; continue
+  fi
+  if ! python3 - "$dir/report.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+# A step that shows NaN or Inf on purpose names the textures (as fx_smoke_check reads it).
+excused = {n.strip() for n in str(r.get("facts", {}).get("expectNonFiniteIn", "")).split(",")}
+stats = [s for t in r["textures"] if t["name"] not in excused for s in t.get("stats", [])]
+bad = sum(s.get("nan", 0) + s.get("inf", 0) for s in stats + r["final"]["stats"])
+problems = []
+if r["glErrors"]: problems.append(f"{r['glErrors']} GL error(s)")
+if r["final"]["size"] != [320, 180]: problems.append(f"the last frame is {r['final']['size']}, not [320, 180]")
+if bad: problems.append(f"{bad} NaN or Inf texel(s)")
+print("; ".join(problems))
+sys.exit(1 if problems else 0)
+PY
+  then
+    echo "FAIL: $name step $step, resized while running (report: $dir/report.json)"; status=1
+  fi
 done
 [ "$status" -eq 0 ] && echo "$name: $steps steps passed"
 exit "$status"
