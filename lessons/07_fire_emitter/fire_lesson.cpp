@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <imgui.h>
 
@@ -100,6 +101,12 @@ Status FireLesson::init(const Scene& scene) {
     return Status::success();
 }
 
+void FireLesson::update(const FrameInfo& frame) {
+    // A frame with nothing to draw into (a minimised window) is not built, but the clock went on: its
+    // time joins the next simulated step, so the fire comes back where it would have been.
+    if (frame.size.empty()) pendingDt_ += frame.deltaSeconds;
+}
+
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
     HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
@@ -114,14 +121,16 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         restart();  // every bench frame of a setting draws the same picture, at a steady frame's cost
     }
     hitchNow_ = hitchOn(frame);
-    pendingDt_ = frame.deltaSeconds + (hitchNow_ ? double(hitch_) : 0.0);
+    // Added to what update() kept from frames that were not built: one longer step, as after a hitch.
+    pendingDt_ += frame.deltaSeconds + (hitchNow_ ? double(hitch_) : 0.0);
 
     const std::string notInView = "every emitter's bounds are outside the view";
     const bool inView = particles && anyEmitterInView(frame);
     const Camera& cam = scene_->camera;
     {
         PassGroup::Scope in(graph, particleGroup_);
-        Pass& sim = graph.addPass("particles.simulate", [this](PassContext&) { simulate(pendingDt_); });
+        Pass& sim = graph.addPass("particles.simulate",
+                                  [this](PassContext&) { simulate(std::exchange(pendingDt_, 0.0)); });
         sim.keepAlive();
 
         // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the

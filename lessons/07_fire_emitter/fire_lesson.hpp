@@ -27,6 +27,7 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
+    void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
@@ -88,7 +89,7 @@ private:
     fx::GpuParticles gpu_;
     double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm
     std::vector<fx::GpuParticle> visible_;  // CPU paths: the live particles in draw order
-    double pendingDt_ = 0;                  // this frame's step, set in buildFrame for the pass body
+    double pendingDt_ = 0;                  // time since the simulation last ran, for the pass body
     bool hitchNow_ = false;
     fx::TextureHandle poolTexture_;  // this frame's particles.pool (the pool view pass writes it)
     double simulateMs_ = 0, drawCpuMs_ = 0;

@@ -101,6 +101,7 @@ void FireLesson::restart() {
         chapter = chapter || s.rules.chapterTimer;
     }
     firstDt_ = 0;
+    pendingDt_ = 0;  // a restarted simulation owes no time from before
     if (chapter)
         system_.prewarm(longest);
     else if (gpu)
