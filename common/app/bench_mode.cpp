@@ -26,6 +26,13 @@ int runBenchMode(RunSession& s, FrameRenderer& renderer, Context& context) {
     }
     fs::path dir =
         o.benchOut.empty() ? fs::path("out") / "bench" / lessonFolderName(lesson.info()) : o.benchOut;
+    if (const Size2D size = context.framebufferSize(); size.empty()) {
+        // A minimised window draws nothing, so a sweep at 0 pixels would time nothing and write empty tables.
+        log::error(
+            s.exe, ": --bench at ", size.width, "x", size.height,
+            ": nothing is drawn at that size, so there is nothing to time (--size needs both sides >= 1)");
+        return 2;
+    }
     if (s.params.knobs().empty()) {
         // Nothing to sweep: say so instead of printing an empty table.
         std::cout << noKnobsMessage(s.exe) << "\n";

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bench smoke test: a lesson without knobs says so and writes nothing; otherwise a one-value sweep of every knob at a small size writes its CSV, JSON and plots;
+# Bench smoke test: at 0x0 the bench refuses with a reason; a lesson without knobs says so and writes nothing; otherwise a one-value sweep of every knob at a small size writes its CSV, JSON and plots;
 # every knob keeps exactly one reference row although the sweep is cut to one value; that row is
 # rendered again like the others and its picture matches the reference image (the frame is
 # reproducible); and nothing raised a GL error. (A value known to differ showing an error is
@@ -12,11 +12,18 @@ if ! "$exe" --bench --size 160x90 --bench-frames 1 --bench-values 1 --bench-out 
   echo "FAIL: the bench exited with an error:"; cat "$work/log"; exit 1
 fi
 status=0
+# At 0x0 nothing is drawn: the bench says so, exits 2 and writes nothing.
+"$exe" --bench --size 0x0 --bench-frames 1 --bench-out "$work/empty" >"$work/empty.log" 2>&1
+code=$?
+if [ "$code" -ne 2 ] || [ -e "$work/empty" ] || ! grep -q "nothing to time" "$work/empty.log"; then
+  echo "FAIL: --bench at 0x0 must say there is nothing to time, exit 2 and write nothing (exit $code):"
+  cat "$work/empty.log"; status=1
+fi
 knobs=$("$exe" --list-params | grep -c 'quality knob')
 # A lesson without knobs says so, and writes no empty table.
 if [ "$knobs" -eq 0 ]; then
   if grep -q "has no quality knobs" "$work/log" && [ ! -e "$work/bench.csv" ]; then
-    echo "bench: no knobs, said so"; exit 0
+    echo "bench: no knobs, said so"; exit "$status"
   fi
   echo "FAIL: a lesson without knobs must say so instead of writing a table:"; cat "$work/log"; exit 1
 fi
