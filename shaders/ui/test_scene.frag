@@ -17,7 +17,7 @@ vec3 hue(float h) {
 void main() {
     if (mode == 1) {
         vec3 c = max(texture(presented, uv).rgb, vec3(0.0));
-        color = vec4(encodeSrgb(c / (1.0 + c)), 1.0);
+        color = vec4(srgbEncode(c / (1.0 + c)), 1.0);
         return;
     }
     vec2 p = uv * vec2(size.x / size.y, 1.0);

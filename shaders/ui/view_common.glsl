@@ -11,12 +11,9 @@ const vec3 kNanColour = vec3(1.0, 0.0, 1.0);          // magenta, as in the capt
 const vec3 kInfColour = vec3(1.0, 0.78, 0.0);         // amber
 const vec3 kNegativeColour = vec3(0.0, 0.67, 1.0);    // azure
 
-// The sRGB encoding of values in [0, 1], within 1/90 of an 8-bit step of image/view_transform.cpp's
-// exact one (the shared fit in common/srgb.glsl: llvmpipe's pow() is slow).
+// srgbEncode: the sRGB encoding of values in [0, 1], within 1/90 of an 8-bit step of
+// image/view_transform.cpp's exact one (a fit: llvmpipe's pow() is slow).
 #include "../common/srgb.glsl"
-vec3 encodeSrgb(vec3 c) {
-    return srgbEncode(c);
-}
 
 // A perceptual ramp from dark blue through green and yellow to dark red (a few control points of
 // a turbo-like map, blended linearly): cold is low, hot is high.
@@ -41,7 +38,7 @@ vec3 mapTransform(vec3 v, int transform) {
     return clamp(v, 0.0, 1.0);
 }
 vec3 encodeTransform(vec3 mapped, int transform) {
-    if (transform == kSrgb || transform == kReinhard) return encodeSrgb(mapped);
+    if (transform == kSrgb || transform == kReinhard) return srgbEncode(mapped);
     if (transform == kFalseColour) return falseColour(mapped.r);
     return mapped;
 }

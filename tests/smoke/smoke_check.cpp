@@ -8,6 +8,9 @@
 // Only those textures, and only with the fact present; and at least one of them must really hold a
 // NaN or Inf, or the step no longer shows what it is for. The final image is never excused.
 //   fx_smoke_check <capture dir> <report.json> <golden.png> <output dir for diffs> [--expect-gl-errors]
+//   fx_smoke_check --report-only <report.json> <WxH>
+// The second form checks only the report (a run resized while it ran): the same GL error and NaN
+// checks, and a last frame of WxH; it has no picture to compare.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -55,25 +58,17 @@ std::vector<std::string> expectedNonFinite(const nlohmann::json& report) {
     return names;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    if (argc < 5) {
-        std::fprintf(stderr, "usage: %s CAPTURE_DIR REPORT GOLDEN OUT_DIR [--expect-gl-errors]\n", argv[0]);
-        return 2;
-    }
-    std::string captureDir = argv[1], reportPath = argv[2], golden = argv[3], outDir = argv[4];
-    bool expectGlErrors = argc > 5 && std::string(argv[5]) == "--expect-gl-errors";
-
+// The checks that need only the report; false when it cannot be read at all.
+bool checkReport(const std::string& reportPath, bool expectGlErrors, nlohmann::json& report) {
     std::ifstream in(reportPath);
     if (!in) {
         fail("no report at " + reportPath);
-        return 1;
+        return false;
     }
-    nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+    report = nlohmann::json::parse(in, nullptr, false);
     if (report.is_discarded()) {
         fail("report is not JSON: " + reportPath);
-        return 1;
+        return false;
     }
     std::int64_t glErrors = report.value("glErrors", -1);
     if (glErrors != 0)
@@ -102,6 +97,33 @@ int main(int argc, char** argv) {
         if (pass.value("status", "") == "executor failed")
             fail("pass " + pass.value("name", "?") + ": " + pass.value("reason", ""));
     }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    nlohmann::json report;
+    if (argc == 4 && std::string(argv[1]) == "--report-only") {
+        int width = 0, height = 0;
+        if (std::sscanf(argv[3], "%dx%d", &width, &height) != 2) {
+            std::fprintf(stderr, "%s: expected a size WxH, got \"%s\"\n", argv[0], argv[3]);
+            return 2;
+        }
+        if (!checkReport(argv[2], false, report)) return 1;
+        if (report["final"].value("size", nlohmann::json::array()) != nlohmann::json::array({width, height}))
+            fail("the last frame is " + report["final"].value("size", nlohmann::json()).dump() + ", not [" +
+                 std::to_string(width) + ", " + std::to_string(height) + "]");
+        return failures == 0 ? 0 : 1;
+    }
+    if (argc < 5) {
+        std::fprintf(stderr, "usage: %s CAPTURE_DIR REPORT GOLDEN OUT_DIR [--expect-gl-errors]\n", argv[0]);
+        std::fprintf(stderr, "       %s --report-only REPORT WxH\n", argv[0]);
+        return 2;
+    }
+    std::string captureDir = argv[1], reportPath = argv[2], golden = argv[3], outDir = argv[4];
+    bool expectGlErrors = argc > 5 && std::string(argv[5]) == "--expect-gl-errors";
+    if (!checkReport(reportPath, expectGlErrors, report)) return 1;
 
     auto finalImage = fx::readPng(captureDir + "/final.png");
     if (!finalImage) {
