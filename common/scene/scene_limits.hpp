@@ -18,11 +18,4 @@ inline constexpr std::size_t kMaxClipsPerObject = 256;
 inline constexpr std::size_t kMaxStringBytes = 4096;
 // Objects and arrays inside one another.
 inline constexpr std::size_t kMaxNesting = 32;
-// The most of a bad value a message quotes.
-inline constexpr std::size_t kExcerptBytes = 48;
-
-// `text` as a message quotes it: whole when short, else its first kExcerptBytes bytes (cut at a
-// character boundary) and how long it was.
-std::string excerpt(std::string_view text);
-
 }  // namespace fx::scene_limits

@@ -283,3 +283,31 @@ TEST(RunOptions, HelpListsEveryKeyOfTheWindow) {
     for (const char* key : {"space", "Page Down", "F3", "F4", "+", "F2", "F12"})
         EXPECT_NE(help.find(std::string("\n  ") + key), std::string::npos) << key;
 }
+
+// A value the user typed is echoed cut to a readable length, its control characters escaped (issue: a
+// 5,000-character --inspect name printed 5,390 bytes).
+TEST(RunOptions, EchoedValuesAreCutAndEscaped) {
+    const std::string huge(5000, 'n');
+    auto report = reportWithTextures({"scene.hdr"});
+    auto warnings = fx::unknownInspectWarnings({huge}, report, 0);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_LT(warnings[0].size(), 300u) << warnings[0];
+    EXPECT_NE(warnings[0].find("... (5000 bytes)"), std::string::npos) << warnings[0];
+    // Every flag that echoes its value does the same.
+    for (const char* flag : {"--size", "--frames", "--lang", "--timing", "--time-step", "--param", "--press",
+                             "--resize", "--step"}) {
+        auto refused = parseRunOptions({flag, huge});
+        ASSERT_FALSE(refused.ok()) << flag;
+        EXPECT_LT(refused.error().size(), 300u) << flag << ": " << refused.error();
+    }
+    auto unknown = parseRunOptions({"--" + huge});
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_LT(unknown.error().size(), 300u) << unknown.error();
+    auto twice = parseRunOptions({"--scene", "a.json", "--scene", huge});
+    ASSERT_FALSE(twice.ok());
+    EXPECT_LT(twice.error().size(), 300u) << twice.error();
+    // A newline or an escape sequence cannot start a new line or recolour the terminal.
+    auto control = parseRunOptions({"--size", "1x1\n\x1b[2J"});
+    ASSERT_FALSE(control.ok());
+    EXPECT_NE(control.error().find("1x1\\n\\u001b[2J"), std::string::npos) << control.error();
+}

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/file_io.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_test_support.hpp"
