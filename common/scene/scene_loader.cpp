@@ -94,6 +94,14 @@ void checkModels(const Scene& scene) {
             if (!model) failField(fieldPath(where, "gltf"), cat("cannot load the model: ", model.error()));
             cached = models.emplace(object.gltf.resolved, std::move(*model)).first;
         }
+        vertices += cached->second.vertexCount();
+        if (vertices > scene_limits::kMaxDrawnVertices)
+            failField(fieldPath(where, "gltf"),
+                      cat("the models of objects[0] to objects[", i, "] have ", vertices,
+                          " vertices together (this one ", cached->second.vertexCount(),
+                          ", each object its own copy on "
+                          "the GPU); a scene may draw at most ",
+                          scene_limits::kMaxDrawnVertices, " (docs/scene-format.md, Limits)"));
         if (object.animation.clips.empty()) continue;
         auto clip = selectClips(cached->second, object.animation);
         if (!clip)

@@ -142,3 +142,22 @@ TEST(PngFile, FailedReplaceKeepsNothingBesideTheTarget) {
 
 }  // namespace
 }  // namespace fx
+
+// A small file that decodes to a huge picture is refused from its header (docs/reliability.md, "Budgets").
+TEST(PngFile, AnImageOverThePixelLimitIsRefusedBeforeItIsDecoded) {
+    // One grey channel, one row past 8192 x 8192: a few hundred kilobytes of PNG, 268 MB as RGBA.
+    fx::ByteImage over = fx::makeByteImage(8192, 8193, 1, 7);
+    auto encoded = fx::encodePng(over);
+    ASSERT_TRUE(encoded.ok()) << encoded.error();
+    auto decoded = fx::decodeImage(*encoded, "huge.png");
+    ASSERT_FALSE(decoded.ok());
+    EXPECT_NE(
+        decoded.error().find("huge.png: 8192 x 8193 pixels is over the limit for an image (67108864 pixels"),
+        std::string::npos)
+        << decoded.error();
+    // At the limit it decodes.
+    fx::ByteImage at = fx::makeByteImage(8192, 8192, 1, 7);
+    auto atLimit = fx::decodeImage(*fx::encodePng(at), "at.png");
+    ASSERT_TRUE(atLimit.ok()) << atLimit.error();
+    EXPECT_EQ(atLimit->height, 8192);
+}

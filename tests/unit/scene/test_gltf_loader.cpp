@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
@@ -637,4 +639,43 @@ TEST(GltfLoader, TheSameRulesHoldForABinaryFile) {
     ASSERT_FALSE(model.ok());
     EXPECT_TRUE(scene_test::contains(model.error(), "test.glb: skin 0 'rig': has no \"joints\""))
         << model.error();
+}
+
+// The models' vertices over all objects are bounded (each object draws its own copy on the GPU): a scene
+// exactly at the limit loads, one vertex more is refused naming the object and the total.
+TEST(GltfLoader, TheScenesVerticesOverAllObjectsAreBounded) {
+    auto model = [](int vertices) {
+        Doc d;
+        int pos = d.floats(std::vector<float>(std::size_t(vertices) * 3, 0.0f), "VEC3", 3);
+        int idx = d.accessor(std::vector<std::uint32_t>{0, 1, 2}, 5125, "SCALAR", 3);
+        d["meshes"] =
+            json::array({{{"primitives", {{{"attributes", {{"POSITION", pos}}}, {"indices", idx}}}}}});
+        d["nodes"] = json::array({{{"mesh", 0}}});
+        return d.finish();
+    };
+    const fs::path dir = fs::temp_directory_path() / ("fx_vertex_budget_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    ASSERT_TRUE(fx::writeFileAtomically(dir / "a.gltf", model(2048)).ok());
+    ASSERT_TRUE(fx::writeFileAtomically(dir / "b.gltf", model(2049)).ok());
+    auto scene = [&](const char* last) {
+        json objects = json::array();
+        for (int i = 0; i < 4096; ++i)
+            objects.push_back({{"name", "o" + std::to_string(i)}, {"gltf", i == 4095 ? last : "a.gltf"}});
+        fx::SceneLoadOptions options;
+        options.assetRoot = dir;
+        return fx::parseScene(json{{"name", "many objects"},
+                                   {"camera", {{"position", {0, 2, 8}}, {"target", {0, 0, 0}}}},
+                                   {"objects", objects}}
+                                  .dump(),
+                              dir / "s.json", options);
+    };
+    auto at = scene("a.gltf");  // 4096 x 2048 = 2^23
+    EXPECT_TRUE(at.ok()) << at.error();
+    auto over = scene("b.gltf");
+    ASSERT_FALSE(over.ok());
+    EXPECT_TRUE(scene_test::contains(over.error(),
+                                     "objects[4095].gltf: the models of objects[0] to objects[4095] "
+                                     "have 8388609 vertices together"))
+        << over.error();
+    fs::remove_all(dir);
 }
