@@ -246,11 +246,12 @@ const std::vector<Flag>& flags() {
          .apply = set(&RunOptions::captureFloat, true)},
         {.name = "--report",
          .value = "FILE",
-         .help = "write a JSON report: renderer, frame times, GL errors, texture statistics, passes",
+         .help = "write a JSON report: renderer, frame times, GL errors, texture statistics, passes\n"
+                 "(- writes it to standard output)",
          .apply = nonEmpty(&RunOptions::reportFile, "a path")},
         {.name = "--graph",
          .value = "FILE.dot",
-         .help = "write the last frame's compiled frame graph as Graphviz dot",
+         .help = "write the last frame's compiled frame graph as Graphviz dot (- for standard output)",
          .apply = nonEmpty(&RunOptions::graphFile, "a path")},
         {.name = "--time-step",
          .value = "S",
@@ -315,6 +316,11 @@ const std::vector<Flag>& flags() {
          .help = "with --capture DIR: capture every step of the lesson, each into DIR/step-K/\n"
                  "(with its report.json), one run per step",
          .apply = set(&RunOptions::allSteps, true)},
+        {.name = "--resource-log",
+         .value = "FILE",
+         .help = "every tenth frame, the process's memory and its live GL objects, written as CSV\n"
+                 "when the run ends (a soak's figures: tools/soak/run_soak.sh)",
+         .apply = nonEmpty(&RunOptions::resourceLog, "a path")},
         {.name = "--list-steps",
          .help = "print the lesson's steps and exit",
          .apply = set(&RunOptions::listSteps, true)},

@@ -147,14 +147,14 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
         EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
             << flag << ": " << (o.ok() ? "" : o.error());
     }
-    EXPECT_EQ(
-        inHelp,
-        (std::set<std::string>{
-            "--headless",    "--size",   "--frames",       "--step",          "--scene",     "--lang",
-            "--param",       "--preset", "--capture",      "--capture-float", "--report",    "--graph",
-            "--time-step",   "--seed",   "--timing",       "--inspect",       "--overlay",   "--no-overlay",
-            "--bench",       "--knob",   "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
-            "--list-params", "--help",   "--press",        "--all-steps",     "--resize"}));
+    EXPECT_EQ(inHelp,
+              (std::set<std::string>{
+                  "--headless",     "--size",         "--frames",     "--step",       "--scene",
+                  "--lang",         "--param",        "--preset",     "--capture",    "--capture-float",
+                  "--report",       "--graph",        "--time-step",  "--seed",       "--timing",
+                  "--inspect",      "--overlay",      "--no-overlay", "--bench",      "--knob",
+                  "--bench-frames", "--bench-values", "--bench-out",  "--list-steps", "--list-params",
+                  "--help",         "--press",        "--all-steps",  "--resize",     "--resource-log"}));
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
