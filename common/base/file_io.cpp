@@ -70,7 +70,7 @@ int writeAll(int fd, std::span<const std::byte> bytes) {
     return 0;
 }
 
-// The first name of `name` that would leave the folder, or the reason it is not a name inside one.
+// Why `name` is not a name inside the folder (empty, absolute, climbing out with ".."), or nothing.
 std::optional<std::string> outsideTheFolder(const fs::path& name) {
     if (name.empty()) return "no file name given";
     if (name.is_absolute()) return "an absolute path where a name inside the folder is expected";

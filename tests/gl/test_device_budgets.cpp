@@ -3,6 +3,7 @@
 // the file and the limit (a texture falls back to white, a sprite or a cloud's density stops the run
 // with the message), never a GL_INVALID_VALUE; one at the limit uploads.
 #include <unistd.h>
+#include <cstdio>
 #include <filesystem>
 
 #include "base/file_io.hpp"
@@ -37,6 +38,11 @@ TEST_F(DeviceBudgets, TheLimitsAreTheDevicesOwn) {
     EXPECT_EQ(limits.maxTextureSize, texture);
     EXPECT_GE(limits.maxComputeGroupsX, 65535);
     EXPECT_GE(limits.maxStorageBlockBytes, std::int64_t(1) << 24);
+    std::printf(
+        "this device: GL_MAX_TEXTURE_SIZE %lld, GL_MAX_COMPUTE_WORK_GROUP_COUNT[0] %lld, "
+        "GL_MAX_SHADER_STORAGE_BLOCK_SIZE %lld\n",
+        static_cast<long long>(limits.maxTextureSize), static_cast<long long>(limits.maxComputeGroupsX),
+        static_cast<long long>(limits.maxStorageBlockBytes));
 }
 
 TEST_F(DeviceBudgets, AnImageWiderThanTheDevicesTexturesIsRefusedNotUploaded) {
