@@ -39,7 +39,8 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
       overlay_(overlay),
       programs_(programs),
       overlayVisible_(plan.headless ? session.options.overlayHeadless : session.options.overlay),
-      clock_(session.options.timeStep.value_or(1.0 / 60.0)) {
+      clock_(session.options.timeStep.value_or(1.0 / 60.0)),
+      resources_(session.options.resourceLog) {
     RunFacts& facts = record_.facts;
     facts.lesson = s_.exe;
     facts.contextKind = context.kind();
@@ -68,6 +69,7 @@ void FrameLoop::run() {
     gl::resetDebugCounters();
 
     for (std::uint64_t index = 0; frames == 0 || index < frames; ++index) {
+        resources_.atFrame(index, s_.step, context_.framebufferSize());
         context_.pollEvents();
         if (context_.shouldClose()) break;
         if (!plan_.headless && context_.hidden()) {
@@ -75,8 +77,7 @@ void FrameLoop::run() {
             // system has news (a quarter second at most, so the shader watch still runs).
             context_.waitEvents(0.25);
             lastWall = Clock::now();
-            record_.facts.frameCpuMs.push_back(0);
-            record_.facts.frameGpuMs.push_back(0);
+            record_.facts.addFrame(0, 0);
             continue;
         }
         Clock::time_point frameStart = Clock::now();
@@ -103,8 +104,7 @@ void FrameLoop::run() {
         if (extent.empty()) {
             // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
             if (!plan_.headless) context_.waitEvents(0.25);
-            record_.facts.frameCpuMs.push_back(0);
-            record_.facts.frameGpuMs.push_back(0);
+            record_.facts.addFrame(0, 0);
             continue;
         }
         const bool lastFrame = frames != 0 && index + 1 == frames;
@@ -145,14 +145,14 @@ void FrameLoop::run() {
         keep(rendered, lastFrame, request.readFinal, screenshot);
         context_.present();
         gl::drainErrorFlags();
-        record_.facts.frameCpuMs.push_back(
-            std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
-        record_.facts.frameGpuMs.push_back(rendered.passMs);
+        record_.facts.addFrame(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count(),
+                               rendered.passMs);
     }
     // The facts of the last frame read the last frame's report.
     record_.lastFrame.previousFrame = &record_.lastReport;
     s_.windowSize = context_.framebufferSize();
     saveUiSettings();
+    if (Status written = resources_.write(); !written) log::error(written.error());
 }
 
 void FrameLoop::present(const LayoutRect& place, Size2D window) {

@@ -10,6 +10,7 @@
 #include "app/frame_renderer.hpp"
 #include "app/lesson_clock.hpp"
 #include "app/lesson_text_files.hpp"
+#include "app/resource_log.hpp"
 #include "app/run_report.hpp"
 #include "app/run_session.hpp"
 #include "app/window_input.hpp"
@@ -75,6 +76,7 @@ private:
     int renderedStep_ = -1;  // the step the picture now in picture_ shows
     Clock::time_point lastReloadCheck_;
     RunRecord record_;
+    ResourceLog resources_;
     std::optional<LessonTextFiles> lessonText_;  // with an overlay only: the steps' text
 };
 

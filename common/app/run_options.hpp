@@ -60,6 +60,7 @@ struct RunOptions {
     std::vector<ScriptedPress> presses;         // --press KEY@FRAME
     std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
     bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K
+    std::filesystem::path resourceLog;  // --resource-log FILE: memory and GL objects (app/resource_log.hpp)
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

@@ -27,6 +27,14 @@ nlohmann::ordered_json usesJson(const std::vector<TextureUseRecord>& uses) {
 
 }  // namespace
 
+void RunFacts::addFrame(double cpuMs, double passMs) {
+    frameCpuMs.push_back(cpuMs);
+    frameGpuMs.push_back(passMs);
+    if (frameCpuMs.size() > kKeptFrames) frameCpuMs.pop_front();
+    if (frameGpuMs.size() > kKeptFrames) frameGpuMs.pop_front();
+    ++framesRun;
+}
+
 nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& frame,
                                       const std::vector<CapturedTexture>& textures,
                                       const FloatImage& finalImage) {
@@ -45,8 +53,9 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     if (!f.lastGlError.empty()) j["lastGlError"] = f.lastGlError;
     j["timing"] = {{"method", f.timingMethod}, {"reason", f.timingReason}};
     auto frames = nlohmann::ordered_json::array();
+    const std::uint64_t first = f.framesRun - f.frameCpuMs.size();  // the frames kept are the last ones
     for (std::size_t i = 0; i < f.frameCpuMs.size(); ++i) {
-        frames.push_back({{"index", i},
+        frames.push_back({{"index", first + i},
                           {"cpuMs", f.frameCpuMs[i]},
                           {"passMs", i < f.frameGpuMs.size() ? f.frameGpuMs[i] : 0.0}});
     }

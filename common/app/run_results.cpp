@@ -10,6 +10,11 @@ namespace fx {
 
 namespace {
 
+// --report and --graph: a file under the one rule (base/file_io.hpp), or standard output for "-".
+Status writeOutput(const std::filesystem::path& path, std::string_view text) {
+    return namesStandardOutput(path) ? writeStandardOutput(text) : writeFileAtomically(path, text);
+}
+
 nlohmann::ordered_json rectJson(const LayoutRect& r) {
     return {int(r.x), int(r.y), int(r.width), int(r.height)};
 }
@@ -79,18 +84,18 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         if (record.lastLayout)
             report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
         auto json = report.dump(2) + "\n";
-        if (auto written = writeFileAtomically(plan.reportFile, json); !written) {
+        if (auto written = writeOutput(plan.reportFile, json); !written) {
             log::error(written.error());
             exitCode = 1;
-        } else {
+        } else if (!namesStandardOutput(plan.reportFile)) {
             log::info("report written to ", plan.reportFile.string());
         }
     }
     if (!s.options.graphFile.empty()) {
-        if (auto written = writeFileAtomically(s.options.graphFile, toDot(record.lastReport)); !written) {
+        if (auto written = writeOutput(s.options.graphFile, toDot(record.lastReport)); !written) {
             log::error(written.error());
             exitCode = 1;
-        } else {
+        } else if (!namesStandardOutput(s.options.graphFile)) {
             log::info("frame graph written to ", s.options.graphFile.string(), " (dot -Tpng draws it)");
         }
     }

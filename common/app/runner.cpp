@@ -129,6 +129,13 @@ int captureEveryStep(const RunSession& s) {
     const fs::path self = runningExecutable();
     int failures = 0;
     for (int step = 1; step <= steps; ++step) {
+        // DIR/step-K is made here, under the rule for every file written: a link there is not followed
+        // out of DIR (the step's own run would take the folder as given).
+        if (Status made = makeFolderIn(s.options.captureDir, cat("step-", step)); !made) {
+            log::error(made.error());
+            ++failures;
+            continue;
+        }
         auto code = runAndWait(self, stepCaptureArguments(s.args, s.options.captureDir, step));
         if (!code || *code != 0) {
             log::error(s.exe, ": step ", step,

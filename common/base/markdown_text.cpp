@@ -137,6 +137,23 @@ std::vector<Span> parseSpans(std::string_view text) {
         flush();
         spans.push_back({style, std::string(s)});
     };
+    // Where the next "](" is, the last "[" before it and the ")" after it: found once and kept while the
+    // reading is before it, so a line of many "[" is read in one pass (searching afresh from every "["
+    // took hours for a few megabytes of them).
+    struct LinkEnd {
+        std::size_t closeBracket = 0, lastOpen = 0, closeParen = 0;
+        bool known = false;
+    } link;
+    // The last search for ")": from `parenFrom` the first one is at `parenAt` (npos: none), which holds
+    // for any search starting between the two.
+    std::size_t parenFrom = std::string_view::npos, parenAt = 0;
+    auto closeParenFrom = [&](std::size_t from) {
+        if (parenFrom == std::string_view::npos || from < parenFrom || from > parenAt) {
+            parenFrom = from;
+            parenAt = text.find(')', from);
+        }
+        return parenAt;
+    };
     std::size_t i = 0;
     while (i < text.size()) {
         const char c = text[i];
@@ -178,11 +195,18 @@ std::vector<Span> parseSpans(std::string_view text) {
         if (c == '[' || startsWith(rest, "![")) {
             const bool picture = c == '!';
             std::size_t open = i + (picture ? 1 : 0);
-            std::size_t closeBracket = text.find("](", open);
-            std::size_t closeParen =
-                closeBracket == std::string_view::npos ? closeBracket : text.find(')', closeBracket);
-            if (closeParen != std::string_view::npos &&
-                text.substr(open + 1, closeBracket - open - 1).find('[') == std::string_view::npos) {
+            if (!link.known || (link.closeBracket != std::string_view::npos && link.closeBracket < open)) {
+                link.known = true;
+                link.closeBracket = text.find("](", open);
+                if (link.closeBracket != std::string_view::npos) {
+                    link.lastOpen = text.rfind('[', link.closeBracket);
+                    link.closeParen = closeParenFrom(link.closeBracket);
+                }
+            }
+            const std::size_t closeBracket = link.closeBracket, closeParen = link.closeParen;
+            // A label holds no "[": only the last "[" before the "](" opens the link.
+            if (closeBracket != std::string_view::npos && closeParen != std::string_view::npos &&
+                link.lastOpen == open) {
                 std::string_view label = text.substr(open + 1, closeBracket - open - 1);
                 if (picture) {
                     emit(Style::Picture, label);

@@ -8,23 +8,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/json_document.hpp"
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 
 namespace fx {
 namespace {
-
-std::string formatNumber(double v) {
-    std::string s = cat(v);
-    return s;
-}
 
 Result<double> parseNumber(std::string_view text) {
     std::string s(text);
     if (s.empty()) return Error{"no value"};
     char* end = nullptr;
     double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) return Error{cat("\"", s, "\" is not a number")};
-    if (!std::isfinite(v)) return Error{cat("\"", s, "\" is not a finite number")};
+    if (end != s.c_str() + s.size()) return Error{cat("\"", excerpt(s), "\" is not a number")};
+    if (!std::isfinite(v)) return Error{cat("\"", excerpt(s), "\" is not a finite number")};
     return v;
 }
 
@@ -82,7 +79,7 @@ void Param::set(double value) const {
 std::string Param::valueText(double value) const {
     switch (type) {
         case ParamType::Float:
-            return formatNumber(value);
+            return formatNumber(static_cast<float>(value));
         case ParamType::Int:
             return cat(static_cast<long>(std::lround(value)));
         case ParamType::Bool:
@@ -102,7 +99,8 @@ std::string Param::text() const {
 std::string Param::rangeText() const {
     switch (type) {
         case ParamType::Float:
-            return cat("a number from ", formatNumber(min), " to ", formatNumber(max));
+            return cat("a number from ", formatNumber(static_cast<float>(min)), " to ",
+                       formatNumber(static_cast<float>(max)));
         case ParamType::Int:
             return cat("a whole number from ", static_cast<long>(min), " to ", static_cast<long>(max));
         case ParamType::Bool:
@@ -243,20 +241,20 @@ Result<double> parseFor(const Param& p, std::string_view text) {
         case ParamType::Bool:
             if (text == "true" || text == "1" || text == "on") return 1.0;
             if (text == "false" || text == "0" || text == "off") return 0.0;
-            return bad(cat("\"", text, "\" is not true or false"));
+            return bad(cat("\"", excerpt(text), "\" is not true or false"));
         case ParamType::Choice: {
             for (std::size_t i = 0; i < p.choices.size(); ++i) {
                 if (p.choices[i] == text) return double(i);
             }
-            return bad(cat("\"", text, "\" is not a choice"));
+            return bad(cat("\"", excerpt(text), "\" is not a choice"));
         }
         case ParamType::Int:
         case ParamType::Float: {
             auto v = parseNumber(text);
             if (!v) return bad(v.error());
             if (p.type == ParamType::Int && std::floor(*v) != *v)
-                return bad(cat(text, " is not a whole number"));
-            if (*v < p.min || *v > p.max) return bad(cat(text, " is out of range"));
+                return bad(cat(excerpt(text), " is not a whole number"));
+            if (*v < p.min || *v > p.max) return bad(cat(excerpt(text), " is out of range"));
             return *v;
         }
     }
@@ -270,8 +268,8 @@ Status ParamSet::set(std::string_view name, std::string_view text, ParamSource s
     if (!p) {
         std::string known;
         for (auto& q : params_) known += (known.empty() ? "" : ", ") + q.name;
-        return Error{
-            cat("no parameter named \"", name, "\"; this lesson has: ", known.empty() ? "(none)" : known)};
+        return Error{cat("no parameter named \"", excerpt(name),
+                         "\"; this lesson has: ", known.empty() ? "(none)" : known)};
     }
     auto v = parseFor(*p, text);
     if (!v) return Error{v.error()};
@@ -282,7 +280,7 @@ Status ParamSet::set(std::string_view name, std::string_view text, ParamSource s
 Status ParamSet::assign(std::string_view assignment, ParamSource source) {
     auto eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-        return Error{cat("\"", assignment, "\" is not of the form name=value")};
+        return Error{cat("\"", excerpt(assignment), "\" is not of the form name=value")};
     }
     return set(assignment.substr(0, eq), assignment.substr(eq + 1), source);
 }
@@ -324,17 +322,21 @@ std::string ParamSet::toJson() const {
 }
 
 Status ParamSet::fromJson(std::string_view json, std::string_view fileName, ParamSource source) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(json);
-    } catch (const nlohmann::json::parse_error& e) {
-        return Error{cat(fileName, ": not valid JSON (", e.what(), ")")};
-    }
-    if (!j.is_object()) return Error{cat(fileName, ": expected an object of parameter names to values")};
+    // The scenes' strict reader: a key given twice, a NUL byte or an over-long string is refused, and a
+    // syntax error says where. A preset is one flat object of short values.
+    auto document = readJsonDocument(json, fileName, {"preset", 4096, 8});
+    if (!document) return Error{document.error()};
+    const nlohmann::json& j = *document;
+    if (!j.is_object())
+        return Error{
+            cat(fileName, ": expected an object of parameter names to values, got ", describeJsonType(j))};
     std::vector<std::pair<Param*, double>> checked;
     for (auto& [key, value] : j.items()) {
         Param* p = findMutable(key);
-        if (!p) return Error{cat(fileName, ": ", key, ": no such parameter")};
+        if (!p) return Error{cat(fileName, ": ", excerpt(key), ": no such parameter")};
+        if (!value.is_string() && !value.is_number() && !value.is_boolean())
+            return Error{
+                cat(fileName, ": ", key, ": expected a number or a string, got ", describeJsonType(value))};
         std::string text = value.is_string() ? value.get<std::string>() : value.dump();
         auto v = parseFor(*p, text);
         if (!v) return Error{cat(fileName, ": ", key, ": ", v.error())};

@@ -85,6 +85,7 @@ Status FireLesson::init(const Scene& scene) {
     present_ = OutputTransformPass::create();
     composite_ = FullscreenPass("effects/particles/particles_composite.frag", "particles: composite");
     renderer_ = ParticleRenderer::create();
+    device_ = gl::queryDeviceLimits();
     // One sprite for every emitter that has one (one texture, one draw); a sprite that cannot be read
     // stops the run with its path.
     const ParticleEmitter* first = nullptr;
@@ -271,6 +272,7 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     }
     out.add("live", std::to_string(live), "particles alive");
     out.add("capacity", std::to_string(system_.capacity()), "pool slots");
+    out.add("particleBudget", budget_.summary(), "pool slots against the device and the budget");
     out.add("replaced", std::to_string(replaced), "pool full: oldest particles replaced");
     out.add("dropped", std::to_string(system_.droppedCount()), "pool full: new particles dropped");
     out.add("simulateCpuMs", cat(simulateMs_), "simulation on the CPU (ms)");

@@ -12,6 +12,7 @@
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/particles/gpu_particles.hpp"
+#include "effects/particles/particle_budget.hpp"
 #include "effects/particles/particle_renderer.hpp"
 #include "effects/particles/particle_system.hpp"
 #include "effects/post/fullscreen_pass.hpp"
@@ -85,6 +86,9 @@ private:
     // The simulation, rebuilt when the step's setup changes.
     Setup setup_;
     bool configured_ = false;
+    fx::gl::DeviceLimits device_;
+    std::vector<fx::EmitterSetup> fitted_;  // setup_'s emitters fitted to the particle budget
+    fx::ParticleBudget budget_;
     fx::ParticleSystem system_;
     fx::GpuParticles gpu_;
     double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm

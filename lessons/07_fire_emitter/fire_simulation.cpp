@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "fire_lesson.hpp"
 #include "fire_workloads.hpp"
@@ -82,15 +83,19 @@ bool FireLesson::hitchOn(const FrameInfo& frame) const {
 void FireLesson::configure(const Setup& setup) {
     setup_ = setup;
     configured_ = true;
+    // The scene and the parameters together may ask for more than the device holds: fitted first.
+    fitted_ = setup.emitters;
+    budget_ = fitParticleBudget(fitted_, device_);
+    if (budget_.clamped()) log::warning("lesson 07: ", budget_.warning());
     const bool gpu = setup.path == Path::gpu;
-    system_ = ParticleSystem(setup.emitters, !gpu);
+    system_ = ParticleSystem(fitted_, !gpu);
     gpu_ = gpu ? GpuParticles::create(system_) : GpuParticles();
     restart();
 }
 
 void FireLesson::restart() {
     const bool gpu = setup_.path == Path::gpu;
-    system_ = ParticleSystem(setup_.emitters, !gpu);
+    system_ = ParticleSystem(fitted_, !gpu);
     gpu_.clear();
     // Start from a steady flame. The fixed rules catch up in one step (every spawn owed, born at its
     // time); the chapter's timer needs frame by frame.

@@ -7,7 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include "base/log.hpp"
-#include "image/png_file.hpp"
+#include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
@@ -95,7 +95,7 @@ ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
 }
 
 Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
-    auto image = readPng(path);
+    auto image = gl::readTextureImage(path);
     if (!image) return Error{image.error()};
     return fromImage(*image);
 }

@@ -6,7 +6,7 @@
 
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
-#include "image/png_file.hpp"
+#include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
@@ -84,7 +84,7 @@ const std::string& ParticleRenderer::error() const {
 }
 
 Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
-    auto image = readPng(path);
+    auto image = gl::readTextureImage(path);
     if (!image) return Error{cat("particle sprite ", path.string(), ": ", image.error())};
     // Only alpha is used, so a linear format; mipmaps for the small far particles.
     gl::DebugGroup group("upload particles.sprite");

@@ -147,14 +147,14 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
         EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
             << flag << ": " << (o.ok() ? "" : o.error());
     }
-    EXPECT_EQ(
-        inHelp,
-        (std::set<std::string>{
-            "--headless",    "--size",   "--frames",       "--step",          "--scene",     "--lang",
-            "--param",       "--preset", "--capture",      "--capture-float", "--report",    "--graph",
-            "--time-step",   "--seed",   "--timing",       "--inspect",       "--overlay",   "--no-overlay",
-            "--bench",       "--knob",   "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
-            "--list-params", "--help",   "--press",        "--all-steps",     "--resize"}));
+    EXPECT_EQ(inHelp,
+              (std::set<std::string>{
+                  "--headless",     "--size",         "--frames",     "--step",       "--scene",
+                  "--lang",         "--param",        "--preset",     "--capture",    "--capture-float",
+                  "--report",       "--graph",        "--time-step",  "--seed",       "--timing",
+                  "--inspect",      "--overlay",      "--no-overlay", "--bench",      "--knob",
+                  "--bench-frames", "--bench-values", "--bench-out",  "--list-steps", "--list-params",
+                  "--help",         "--press",        "--all-steps",  "--resize",     "--resource-log"}));
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
@@ -282,4 +282,32 @@ TEST(RunOptions, HelpListsEveryKeyOfTheWindow) {
     }
     for (const char* key : {"space", "Page Down", "F3", "F4", "+", "F2", "F12"})
         EXPECT_NE(help.find(std::string("\n  ") + key), std::string::npos) << key;
+}
+
+// A value the user typed is echoed cut to a readable length, its control characters escaped (issue: a
+// 5,000-character --inspect name printed 5,390 bytes).
+TEST(RunOptions, EchoedValuesAreCutAndEscaped) {
+    const std::string huge(5000, 'n');
+    auto report = reportWithTextures({"scene.hdr"});
+    auto warnings = fx::unknownInspectWarnings({huge}, report, 0);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_LT(warnings[0].size(), 300u) << warnings[0];
+    EXPECT_NE(warnings[0].find("... (5000 bytes)"), std::string::npos) << warnings[0];
+    // Every flag that echoes its value does the same.
+    for (const char* flag : {"--size", "--frames", "--lang", "--timing", "--time-step", "--param", "--press",
+                             "--resize", "--step"}) {
+        auto refused = parseRunOptions({flag, huge});
+        ASSERT_FALSE(refused.ok()) << flag;
+        EXPECT_LT(refused.error().size(), 300u) << flag << ": " << refused.error();
+    }
+    auto unknown = parseRunOptions({"--" + huge});
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_LT(unknown.error().size(), 300u) << unknown.error();
+    auto twice = parseRunOptions({"--scene", "a.json", "--scene", huge});
+    ASSERT_FALSE(twice.ok());
+    EXPECT_LT(twice.error().size(), 300u) << twice.error();
+    // A newline or an escape sequence cannot start a new line or recolour the terminal.
+    auto control = parseRunOptions({"--size", "1x1\n\x1b[2J"});
+    ASSERT_FALSE(control.ok());
+    EXPECT_NE(control.error().find("1x1\\n\\u001b[2J"), std::string::npos) << control.error();
 }

@@ -30,6 +30,26 @@ TEST(Markdown, InlineStyles) {
     EXPECT_EQ(styles(parseSpans("**Seed `000`'s bloom.**")), "[B:Seed 000's bloom.]");
 }
 
+TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
+    // Each "[" used to search the rest of the text for "](": four million of them (a lesson.md may be 64
+    // MiB) took hours. Now one pass, and the link after them still reads as a link.
+    const std::string many(4'000'000, '[');
+    auto spans = parseSpans(many + "[a](x.md) ![pic](p.png)");
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_EQ(spans[0].text, many + "a ");
+    EXPECT_EQ(spans[1].text, "pic");
+    // Many "[" each with a long label that holds another "[" before the one link.
+    std::string labels;
+    for (int i = 0; i < 20000; ++i) labels += "[" + std::string(200, 'a');
+    // A million pictures that never close: each used to search the rest for ")".
+    std::string pictures;
+    for (int i = 0; i < 1'000'000; ++i) pictures += "![a](";
+    EXPECT_EQ(styles(parseSpans(pictures)), "[" + pictures + "]");
+    std::string read = "b " + labels;
+    read.erase(read.rfind('['), 1);  // the last "[" opens the link; its label is read as text
+    EXPECT_EQ(styles(parseSpans("[b](y) " + labels + "](z)")), "[" + read + "]");
+}
+
 TEST(Markdown, BlocksOfAStep) {
     auto blocks = parseBlocks(
         "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  "

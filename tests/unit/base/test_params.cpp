@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "base/params.hpp"
 
 TEST(Params, ChecksTypeAndRangeAndKeepsTheOldValue) {
@@ -59,6 +61,59 @@ TEST(Params, PresetRoundTripAndAllOrNothingLoad) {
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().find("preset.json: c:"), std::string::npos) << bad.error();
     EXPECT_FLOAT_EQ(a, 3.5f);  // nothing changed
+}
+
+// Presets are read by the same strict JSON reader as scenes (issue: duplicate keys and a trailing NUL
+// byte were accepted in presets and refused in scenes).
+TEST(Params, APresetIsReadAsStrictlyAsAScene) {
+    using namespace std::string_literals;
+    float a = 1.0f;
+    fx::ParamSet params;
+    params.addFloat("a", &a, 0.0f, 10.0f, "");
+    // The same key twice: JSON readers disagree on which one counts, so neither does.
+    auto twice = params.fromJson(R"({"a": "2", "a": "3"})", "p.json");
+    ASSERT_FALSE(twice.ok());
+    EXPECT_NE(twice.error().find("p.json: a: appears twice"), std::string::npos) << twice.error();
+    EXPECT_FLOAT_EQ(a, 1.0f);
+    // A NUL byte after the document: a preset is text.
+    auto nul = params.fromJson("{\"a\": \"2\"}\0"s, "p.json");
+    ASSERT_FALSE(nul.ok());
+    EXPECT_NE(nul.error().find("p.json:1:11: JSON syntax error: a NUL byte"), std::string::npos)
+        << nul.error();
+    EXPECT_FLOAT_EQ(a, 1.0f);
+    // Syntax errors carry the line and column, as a scene's do.
+    auto syntax = params.fromJson("{\n  \"a\": 2,\n}", "p.json");
+    ASSERT_FALSE(syntax.ok());
+    EXPECT_NE(syntax.error().find("p.json:3:1: JSON syntax error"), std::string::npos) << syntax.error();
+    // A value that is neither text nor a number, and a key the lesson lacks, named in full and escaped.
+    auto object = params.fromJson(R"({"a": {"x": 1}})", "p.json");
+    ASSERT_FALSE(object.ok());
+    EXPECT_NE(object.error().find("p.json: a: expected a number or a string, got an object"),
+              std::string::npos)
+        << object.error();
+    auto unknown = params.fromJson(R"({"x\u0000y": 1})", "p.json");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_NE(unknown.error().find("p.json: x\\u0000y: no such parameter"), std::string::npos)
+        << unknown.error();
+}
+
+TEST(Params, EchoedValuesAreCutAndEscaped) {
+    float length = 0.02f;
+    fx::ParamSet params;
+    params.addFloat("length", &length, 0.0f, 0.5f, "blur length");
+    const std::string huge(5000, '7');
+    for (const std::string& assignment : {"length=" + huge, huge + "=1", "length=1\n" + huge}) {
+        auto refused = params.assign(assignment);
+        ASSERT_FALSE(refused.ok());
+        EXPECT_LT(refused.error().size(), 300u) << refused.error();
+        EXPECT_EQ(refused.error().find('\n'), std::string::npos) << refused.error();
+    }
+    // The range of a float parameter prints as the float it is, and a refusal near it differs from it.
+    auto near = params.assign("length=0.50000001");
+    ASSERT_FALSE(near.ok());
+    EXPECT_NE(near.error().find("0.50000001 is out of range; expected a number from 0 to 0.5"),
+              std::string::npos)
+        << near.error();
 }
 
 TEST(Params, EveryValueKnowsWhereItCameFrom) {
