@@ -247,6 +247,11 @@ const std::vector<Flag>& flags() {
          .value = "FILE.dot",
          .help = "write the last frame's compiled frame graph as Graphviz dot",
          .apply = nonEmpty(&RunOptions::graphFile, "a path")},
+        {.name = "--dump-shaders",
+         .value = "DIR",
+         .help = "write every shader the run compiles into DIR as the driver got it (includes and\n"
+                 "#defines resolved), named by program label, with DIR/index.tsv",
+         .apply = nonEmpty(&RunOptions::shaderDump, "a path")},
         {.name = "--time-step",
          .value = "S",
          .help = "fixed time step in seconds (headless runs always use one; default 1/60)",

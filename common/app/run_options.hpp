@@ -44,6 +44,7 @@ struct RunOptions {
     bool captureFloat = false;         // --capture-float
     std::filesystem::path reportFile;  // --report FILE
     std::filesystem::path graphFile;   // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
+    std::filesystem::path shaderDump;  // --dump-shaders DIR: every shader as compiled (gl/shader_dump.hpp)
     std::optional<double> timeStep;    // --time-step S (fixed step; default 1/60 s headless)
     std::uint32_t seed = 1;            // --seed N
     std::vector<std::string> params;   // --param name=value, checked once the lesson is known
