@@ -299,6 +299,12 @@ const std::vector<Flag>& flags() {
          .value = "DIR",
          .help = "with --bench: where the results go (default out/bench/<lesson>/)",
          .apply = nonEmpty(&RunOptions::benchOut, "a path")},
+        {.name = "--cost",
+         .value = "time|traffic",
+         .help = "with --bench: the plots' cost axis: time in full-screen copies (default), or the\n"
+                 "memory traffic a frame would move at 1920x1080, modelled (the same on every machine)",
+         .apply = oneOf<BenchCost>(&RunOptions::benchCost,
+                                   {{"time", BenchCost::time}, {"traffic", BenchCost::traffic}})},
         {.name = "--press",
          .value = "KEY@FRAME",
          .help = "press a window key at frame FRAME (0 when left out), as if typed; KEY is the\n"

@@ -11,6 +11,7 @@
 #include "app/window_input.hpp"
 #include "base/result.hpp"
 #include "base/timing_mode.hpp"
+#include "render/quality_sweep.hpp"
 
 namespace fx {
 
@@ -58,6 +59,7 @@ struct RunOptions {
     int benchFrames = 5;                        // --bench-frames N: measured frames per setting
     int benchValues = 0;                        // --bench-values N: only the first N values of each knob
     std::filesystem::path benchOut;             // --bench-out DIR (default out/bench/<NN-name>)
+    BenchCost benchCost = BenchCost::time;      // --cost time|traffic: the plots' cost axis
     std::vector<ScriptedPress> presses;         // --press KEY@FRAME
     std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
     bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K

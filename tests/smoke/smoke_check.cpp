@@ -10,7 +10,8 @@
 //   fx_smoke_check <capture dir> <report.json> <golden.png> <output dir for diffs> [--expect-gl-errors]
 //   fx_smoke_check --report-only <report.json> <WxH>
 // The second form checks only the report (a run resized while it ran): the same GL error and NaN
-// checks, and a last frame of WxH; it has no picture to compare.
+// checks, and a last frame of WxH; it has no picture to compare. Both fail on a pass that ran without
+// declaring its taps (render/pass_traffic.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -96,6 +97,9 @@ bool checkReport(const std::string& reportPath, bool expectGlErrors, nlohmann::j
     for (auto& pass : report["passes"]) {
         if (pass.value("status", "") == "executor failed")
             fail("pass " + pass.value("name", "?") + ": " + pass.value("reason", ""));
+        // Every pass that runs says how many texture lookups it makes per pixel (the cost model's taps).
+        if (pass.value("executed", false) && (!pass.contains("taps") || pass["taps"].is_null()))
+            fail("pass " + pass.value("name", "?") + " declares no taps (Pass::setTaps)");
     }
     return true;
 }
