@@ -34,9 +34,6 @@ constexpr int kMarchFeatures = cloudTwoScales | cloudDepthAware | cloudEyeInside
                                cloudThreshold | cloudHeightShaping | cloudDistanceOcclusion |
                                cloudBeerLambert;
 
-constexpr GLuint kDensityUnit = 0;
-constexpr GLuint kDepthUnit = 1;
-
 // Four PCF taps a sample: 8 samples already cost 8 lookups a pixel, and the clouds are soft.
 constexpr int kCloudShadowTaps = 4;
 
@@ -220,6 +217,7 @@ Pass::Body marchBody(const FullscreenPass* program, const CloudFrameSettings& s,
         setMarchUniforms(prog, s, ctx.targetSize(), m.shadows ? &m.lookup : nullptr);
         ShadowMap::bindForLookup(prog, m.shadows ? ctx.native(m.shadowMap) : 0,
                                  m.shadows ? m.lookup : ShadowLookup{});
+        // Units 0 and 1, clouds.frag's bindings: the density, then the scene's depth.
         program->draw({density->name(), m.depth ? ctx.native(m.depthTexture) : 0});
     };
 }
