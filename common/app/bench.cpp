@@ -39,7 +39,7 @@ public:
         auto& source = graph.addPass("copy source", {});
         TextureHandle texture = source.create(
             "copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-        source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}});
+        source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}}).setTaps(0);  // a clear
         graph
             .addPass("copy",
                      [this, texture](PassContext& ctx) {
@@ -50,7 +50,8 @@ public:
                      })
             .read(texture)
             .writeColor(graph.output())
-            .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
+            .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false})
+            .setTaps(1);
     }
 
 private:
@@ -62,6 +63,8 @@ struct Measured {
     double medianMs = 0, copyMs = 0;
     double multiple = 0, minMultiple = 0, maxMultiple = 0;  // frame / the copy just before it
     std::vector<PassCost> passes;
+    PassTraffic traffic;  // the cost model's, of the last frame (the same every frame of a setting)
+    double tapsPerPixel = 0;
     FloatImage image;
     std::vector<CapturedTexture> effect;
 };
@@ -87,6 +90,7 @@ Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const Fr
     std::vector<double> times, copies, ratios;
     std::vector<std::string> passOrder;
     std::map<std::string, std::vector<double>> passTimes;
+    std::map<std::string, std::pair<std::uint64_t, std::optional<double>>> modelled;  // traffic, taps
     for (int i = 0; i < warmUp + frames; ++i) {
         const bool last = i + 1 == warmUp + frames;
         if (gpu) glFinish();
@@ -111,6 +115,11 @@ Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const Fr
         if (last) {
             m.image = toFloatImage(rendered.finalImage);
             m.effect = std::move(rendered.textures);
+            m.traffic = rendered.report.modelledTraffic();
+            m.tapsPerPixel = rendered.report.tapsPerOutputPixel();
+            for (const PassRecord& p : rendered.report.passes) {
+                if (p.status == PassStatus::Runs) modelled[p.name] = {p.traffic.total(), p.taps};
+            }
         }
     }
     m.medianMs = median(times);
@@ -122,7 +131,8 @@ Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const Fr
     }
     for (const std::string& name : passOrder) {
         const double ms = median(passTimes[name]);
-        m.passes.push_back({name, ms, m.copyMs > 0 ? ms / m.copyMs : 0.0});
+        const auto& [traffic, taps] = modelled[name];
+        m.passes.push_back({name, ms, m.copyMs > 0 ? ms / m.copyMs : 0.0, traffic, taps});
     }
     return m;
 }
@@ -136,6 +146,8 @@ void fillMeasurement(SweepPoint& point, Measured& m, const Measured& reference) 
     point.minMultiple = m.minMultiple;
     point.maxMultiple = m.maxMultiple;
     point.passes = std::move(m.passes);
+    point.trafficBytes = m.traffic.total();
+    point.tapsPerPixel = m.tapsPerPixel;
     if (auto d = compare(m.image, reference.image); d) {
         point.rmse = d->rmse;
         point.psnr = d->psnr;
@@ -334,14 +346,15 @@ nlohmann::ordered_json jsonNumber(double v) {
 
 }  // namespace
 
-Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir) {
+Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir, BenchCost cost) {
     std::ostringstream csv;
     csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,"
            "min_multiple,max_multiple,frames,rmse,psnr_db,max_abs,"
-           "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs\n";
-    // Where the time goes: every pass of every row, in milliseconds and in copies.
+           "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs,traffic_mb_1080p,taps_per_pixel\n";
+    // Where the time goes: every pass of every row, in milliseconds and in copies, beside the modelled
+    // traffic at 1920x1080 and the pass's taps.
     std::ostringstream passes;
-    passes << "knob,value,pass,median_ms,copies\n";
+    passes << "knob,value,pass,median_ms,copies,traffic_mb_1080p,taps\n";
     nlohmann::ordered_json json;
     json["lesson"] = r.lesson;
     json["size"] = {r.width, r.height};
@@ -361,7 +374,7 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         } else {
             csv << ",,,";
         }
-        csv << "\n";
+        csv << "," << number(double(p.trafficBytes) / 1e6) << "," << number(p.tapsPerPixel) << "\n";
         json["points"].push_back({{"knob", p.knob},
                                   {"value", p.value},
                                   {"reference", p.reference},
@@ -373,7 +386,9 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
                                   {"maxMultiple", p.maxMultiple},
                                   {"rmse", jsonNumber(p.rmse)},
                                   {"psnrDb", jsonNumber(p.psnr)},
-                                  {"maxAbs", jsonNumber(p.maxAbs)}});
+                                  {"maxAbs", jsonNumber(p.maxAbs)},
+                                  {"trafficBytes1080p", p.trafficBytes},
+                                  {"tapsPerPixel", p.tapsPerPixel}});
         if (p.hasEffectError) {
             json["points"].back()["effect"] = {{"texture", r.effectTexture},
                                                {"rmse", jsonNumber(p.effectRmse)},
@@ -382,9 +397,15 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         }
         auto& passList = json["points"].back()["passes"] = nlohmann::ordered_json::array();
         for (const PassCost& c : p.passes) {
-            passList.push_back({{"pass", c.pass}, {"medianMs", c.medianMs}, {"copies", c.copies}});
+            passList.push_back(
+                {{"pass", c.pass},
+                 {"medianMs", c.medianMs},
+                 {"copies", c.copies},
+                 {"trafficBytes1080p", c.trafficBytes},
+                 {"taps", c.taps ? nlohmann::ordered_json(*c.taps) : nlohmann::ordered_json(nullptr)}});
             passes << p.knob << ",\"" << p.value << "\",\"" << c.pass << "\"," << number(c.medianMs) << ","
-                   << number(c.copies) << "\n";
+                   << number(c.copies) << "," << number(double(c.trafficBytes) / 1e6) << ","
+                   << (c.taps ? number(*c.taps) : std::string()) << "\n";
         }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
@@ -397,18 +418,30 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
     }
     for (const std::string& knob : knobs) {
         ScatterPlot plot;
-        // The title says what was measured and how; the lesson is the folder the plot sits in.
-        plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
-        bool byCopy = r.copyMs > 0;
-        plot.xLabel = byCopy ? cat("frame cost in full-screen copies, median and min-max of ", r.frames,
-                                   " (1 copy = ", shortNumber(r.copyMs), " ms)")
-                             : "frame time (ms)";
         plot.yLabel = "RMSE of the final image against the reference";
-        for (auto& p : r.points) {
-            if (p.knob != knob) continue;
-            PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current};
-            if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
-            plot.points.push_back(point);
+        if (cost == BenchCost::traffic) {
+            // The model needs no timing: the same numbers on every machine, at every --size.
+            plot.title = cat(knob, " at ", r.width, "x", r.height, " (modelled memory traffic)");
+            plot.xLabel = "memory traffic a frame at 1920x1080, modelled (MB; docs/bench.md)";
+            for (auto& p : r.points) {
+                if (p.knob == knob)
+                    plot.points.push_back(
+                        {p.value, double(p.trafficBytes) / 1e6, p.rmse, p.reference, p.current});
+            }
+        } else {
+            // The title says what was measured and how; the lesson is the folder the plot sits in.
+            plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
+            bool byCopy = r.copyMs > 0;
+            plot.xLabel = byCopy ? cat("frame cost in full-screen copies, median and min-max of ", r.frames,
+                                       " (1 copy = ", shortNumber(r.copyMs), " ms)")
+                                 : "frame time (ms)";
+            for (auto& p : r.points) {
+                if (p.knob != knob) continue;
+                PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference,
+                                p.current};
+                if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
+                plot.points.push_back(point);
+            }
         }
         if (auto s = writePng(dir / cat("bench-", knob, ".png"), renderScatterPlot(plot)); !s) return s;
     }
@@ -421,15 +454,17 @@ std::string describeSweep(const SweepResult& r) {
         << ", one full-screen copy: " << number(r.copyMs) << " ms (median; each frame is divided by a copy"
         << " timed just before it, " << r.frames << " pairs per row)\n";
     out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms"
-        << std::setw(10) << "x copy" << std::setw(16) << "min-max" << std::setw(12) << "rmse"
+        << std::setw(10) << "x copy" << std::setw(16) << "min-max" << std::setw(12) << "MB 1080p"
+        << std::setw(12) << "rmse"
         << "psnr dB\n";
     for (auto& p : r.points) {
         out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
             << std::setw(12) << shortNumber(p.medianMs) << std::setw(10) << shortNumber(p.copyMultiple)
             << std::setw(16) << cat(shortNumber(p.minMultiple), "-", shortNumber(p.maxMultiple))
-            << std::setw(12) << number(p.rmse) << number(p.psnr) << "\n";
+            << std::setw(12) << shortNumber(double(p.trafficBytes) / 1e6) << std::setw(12) << number(p.rmse)
+            << number(p.psnr) << "\n";
     }
-    out << "(* = reference)\n";
+    out << "(* = reference; MB 1080p: modelled memory traffic a frame at 1920x1080, docs/bench.md)\n";
     // Where the time goes, for the setting in use (the first row when none is).
     const SweepPoint* shown = nullptr;
     for (const SweepPoint& p : r.points)
@@ -437,11 +472,14 @@ std::string describeSweep(const SweepResult& r) {
     if (!shown && !r.points.empty()) shown = &r.points.front();
     if (shown && !shown->passes.empty()) {
         out << "\npasses of " << shown->knob << " = " << shown->value << " (every row's: passes.csv)\n";
-        out << std::left << std::setw(30) << "pass" << std::setw(12) << "ms"
-            << "copies\n";
+        out << std::left << std::setw(30) << "pass" << std::setw(12) << "ms" << std::setw(10) << "copies"
+            << std::setw(12) << "MB 1080p"
+            << "taps\n";
         for (const PassCost& c : shown->passes)
             out << std::left << std::setw(30) << c.pass << std::setw(12) << shortNumber(c.medianMs)
-                << shortNumber(c.copies) << "\n";
+                << std::setw(10) << shortNumber(c.copies) << std::setw(12)
+                << shortNumber(double(c.trafficBytes) / 1e6)
+                << (c.taps ? shortNumber(*c.taps) : std::string("-")) << "\n";
     }
     return out.str();
 }

@@ -55,7 +55,8 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
                        const SweepOptions& options, const std::string& lessonName, int step);
 
 // out/bench/<lesson>/: bench.csv, bench.json and bench-<knob>.png (error against cost).
-Status writeBenchOutputs(const SweepResult& result, const std::filesystem::path& dir);
+Status writeBenchOutputs(const SweepResult& result, const std::filesystem::path& dir,
+                         BenchCost cost = BenchCost::time);
 
 // A plain-text table of the sweep for the terminal, then where the time goes: every pass of the
 // setting in use (or the first row) in copies.

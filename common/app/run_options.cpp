@@ -253,6 +253,11 @@ const std::vector<Flag>& flags() {
          .value = "FILE.dot",
          .help = "write the last frame's compiled frame graph as Graphviz dot (- for standard output)",
          .apply = nonEmpty(&RunOptions::graphFile, "a path")},
+        {.name = "--dump-shaders",
+         .value = "DIR",
+         .help = "write every shader the run compiles into DIR as the driver got it (includes and\n"
+                 "#defines resolved), named by program label, with DIR/index.tsv",
+         .apply = nonEmpty(&RunOptions::shaderDump, "a path")},
         {.name = "--time-step",
          .value = "S",
          .help = "fixed time step in seconds (headless runs always use one; default 1/60)",
@@ -300,6 +305,12 @@ const std::vector<Flag>& flags() {
          .value = "DIR",
          .help = "with --bench: where the results go (default out/bench/<lesson>/)",
          .apply = nonEmpty(&RunOptions::benchOut, "a path")},
+        {.name = "--cost",
+         .value = "time|traffic",
+         .help = "with --bench: the plots' cost axis: time in full-screen copies (default), or the\n"
+                 "memory traffic a frame would move at 1920x1080, modelled (the same on every machine)",
+         .apply = oneOf<BenchCost>(&RunOptions::benchCost,
+                                   {{"time", BenchCost::time}, {"traffic", BenchCost::traffic}})},
         {.name = "--press",
          .value = "KEY@FRAME",
          .help = "press a window key at frame FRAME (0 when left out), as if typed; KEY is the\n"

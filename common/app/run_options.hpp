@@ -11,6 +11,7 @@
 #include "app/window_input.hpp"
 #include "base/result.hpp"
 #include "base/timing_mode.hpp"
+#include "render/quality_sweep.hpp"
 
 namespace fx {
 
@@ -44,6 +45,7 @@ struct RunOptions {
     bool captureFloat = false;         // --capture-float
     std::filesystem::path reportFile;  // --report FILE
     std::filesystem::path graphFile;   // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
+    std::filesystem::path shaderDump;  // --dump-shaders DIR: every shader as compiled (gl/shader_dump.hpp)
     std::optional<double> timeStep;    // --time-step S (fixed step; default 1/60 s headless)
     std::uint32_t seed = 1;            // --seed N
     std::vector<std::string> params;   // --param name=value, checked once the lesson is known
@@ -57,6 +59,7 @@ struct RunOptions {
     int benchFrames = 5;                        // --bench-frames N: measured frames per setting
     int benchValues = 0;                        // --bench-values N: only the first N values of each knob
     std::filesystem::path benchOut;             // --bench-out DIR (default out/bench/<NN-name>)
+    BenchCost benchCost = BenchCost::time;      // --cost time|traffic: the plots' cost axis
     std::vector<ScriptedPress> presses;         // --press KEY@FRAME
     std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
     bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K

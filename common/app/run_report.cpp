@@ -72,11 +72,20 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
         pj["timingMethod"] = p.timingMethod;
         pj["reads"] = usesJson(p.reads);
         pj["writes"] = usesJson(p.writes);
+        // The cost model at 1920x1080 (render/pass_traffic.hpp); taps null: not declared.
+        pj["taps"] = p.taps ? nlohmann::ordered_json(*p.taps) : nlohmann::ordered_json(nullptr);
+        pj["trafficBytes1080p"] = {{"read", p.traffic.readBytes}, {"written", p.traffic.writtenBytes}};
         pj["stateLeft"] = p.stateLeft;
         pj["stateInherited"] = p.stateInherited;
         passes.push_back(pj);
     }
     j["passes"] = passes;
+    const PassTraffic traffic = frame.modelledTraffic();
+    j["modelledTraffic1080p"] = {{"readBytes", traffic.readBytes},
+                                 {"writtenBytes", traffic.writtenBytes},
+                                 {"totalBytes", traffic.total()},
+                                 {"tapsPerPixel", frame.tapsPerOutputPixel()},
+                                 {"passesWithoutTaps", frame.undeclaredTaps()}};
     j["declaredOrder"] = frame.declaredOrder;
     j["derivedOrder"] = frame.derivedOrder;
     if (!frame.errors.empty()) j["graphErrors"] = frame.errors;

@@ -15,6 +15,7 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "gl/shader_dump.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_post.hpp"
 #include "scene/scene_settings.hpp"
@@ -178,7 +179,13 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         printParams(s.params);
         return 0;
     }
+    if (auto dumping = gl::setShaderDumpFolder(s.options.shaderDump); !dumping) {
+        std::cerr << exe << ": --dump-shaders: " << dumping.error() << "\n";
+        return 2;
+    }
     int code = run(s);
+    // A shader that could not be written is a failed run: the folder would silently miss a variant.
+    if (code == 0 && gl::shaderDumpFailures() > 0) code = 1;
     if (s.switchLesson != 0) {
         // The window is closed and the lesson released: the neighbour takes this process's place.
         if (auto next = neighbourLesson(s.exe, s.switchLesson)) {

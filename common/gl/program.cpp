@@ -2,6 +2,7 @@
 
 #include "base/log.hpp"
 #include "base/paths.hpp"
+#include "gl/shader_dump.hpp"
 #include "gl/shader_source.hpp"
 
 namespace fx::gl {
@@ -36,7 +37,8 @@ struct CompiledStage {
     std::vector<fs::path> files;
 };
 
-Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std::string& defines) {
+Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std::string& defines,
+                                   const std::string& programLabel) {
     auto source = expandShaderSource(resolveShaderPath(file), shaderDir(), defines);
     if (!source) return Error{source.error()};
     ShaderName shader(glCreateShader(stage));
@@ -45,6 +47,7 @@ Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std
     auto length = static_cast<GLint>(source->text.size());
     glShaderSource(shader.name(), 1, &text, &length);
     glCompileShader(shader.name());
+    dumpShaderStage(programLabel, stage, shader.name(), *source);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
@@ -73,7 +76,7 @@ Result<Program> Program::build(const ProgramSources& sources) {
 
     std::vector<CompiledStage> compiled;
     for (auto& [stage, path] : stages) {
-        auto result = compileStage(stage, path, sources.defines);
+        auto result = compileStage(stage, path, sources.defines, program.label_);
         if (!result) return Error{result.error()};
         for (auto& f : result->files) program.files_.push_back(f);
         compiled.push_back(std::move(*result));

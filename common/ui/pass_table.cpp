@@ -46,9 +46,18 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             "(textures the overlay keeps alive to show them count too)",
             ui_style::byteSizeText(frame.pool.inUseBytes, inUse, sizeof inUse));
     }
+    const PassTraffic traffic = frame.modelledTraffic();
+    ImGui::TextWrapped("modelled memory traffic (MB/taps): %s a frame at 1920x1080, %.1f taps a pixel",
+                       megabytesText(traffic.total()).c_str(), frame.tapsPerOutputPixel());
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "what a GPU would move through memory (render/pass_traffic.hpp): every texture a pass\n"
+            "samples read once, every texture it writes written once, at 1920x1080 whatever the\n"
+            "window's size; taps: texture lookups per pixel written, over the whole output");
+    }
     for (const std::string& e : frame.errors)
         ImGui::TextColored(ui_style::kError, "graph error: %s", e.c_str());
-    const int columns = oneMethod ? 7 : 8;
+    const int columns = oneMethod ? 8 : 9;
 
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_Resizable | ImGuiTableFlags_ScrollY |
@@ -60,6 +69,8 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
     ImGui::TableSetupColumn(copyMs > 0.0 ? "ms (copies)" : "ms", ImGuiTableColumnFlags_WidthFixed,
                             copyMs > 0.0 ? 104.0f : 52.0f);
     ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthFixed, 64.0f);
+    // The cost model in one narrow column (the table shares a column with the lesson's panels).
+    ImGui::TableSetupColumn("MB/taps", ImGuiTableColumnFlags_WidthFixed, 62.0f);
     if (!oneMethod) ImGui::TableSetupColumn("timed by", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("ran / why not", ImGuiTableColumnFlags_WidthStretch, 1.8f);
     ImGui::TableSetupColumn("state inherited / left", ImGuiTableColumnFlags_WidthStretch, 1.6f);
@@ -95,6 +106,13 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             ImGui::ProgressBar(share, ImVec2(-1.0f, ImGui::GetTextLineHeight()), text);
             ImGui::PopStyleColor();
         }
+        // The cost model: megabytes read + written at 1920x1080, then the declared taps.
+        ImGui::TableNextColumn();
+        if (p.status == PassStatus::Runs)
+            ImGui::Text("%.1f/%s", double(p.traffic.total()) / 1e6, p.taps ? cat(*p.taps).c_str() : "-");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "modelled memory traffic at 1920x1080 (MB) / texture lookups per pixel written");
         if (!oneMethod) {
             ImGui::TableNextColumn();
             ImGui::PushTextWrapPos(0.0f);

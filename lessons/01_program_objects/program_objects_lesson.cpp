@@ -228,14 +228,14 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
                   .joinGroup(groupedPass_);
     grouped[0] = a.create("skinning.grouped.color", colorDesc, TextureUsage::ColorAttachment);
     grouped[1] = a.create("skinning.grouped.depth", depthDesc, TextureUsage::DepthAttachment);
-    a.setState(sceneState);
+    a.setState(sceneState).setTaps(0);  // this lesson's shaders sample no texture
     auto& b = graph
                   .addPass("skinning T*(J*p)",
                            [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); })
                   .joinGroup(parenthesisedPass_);
     parenthesised[0] = b.create("skinning.parenthesised.color", colorDesc, TextureUsage::ColorAttachment);
     parenthesised[1] = b.create("skinning.parenthesised.depth", depthDesc, TextureUsage::DepthAttachment);
-    b.setState(sceneState);
+    b.setState(sceneState).setTaps(0);
     // Both products run every frame so their times stand side by side; the knob picks which is shown.
     // A bench frame keeps only the shown one: the graph culls the other.
     if (!frame.benchmark) {
@@ -253,7 +253,8 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
                  })
         .read(shown)
         .writeColor(graph.output())
-        .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
+        .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false})
+        .setTaps(1);
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -295,7 +296,8 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
                 }
             })
         .writeColor(graph.output())
-        .setState(sceneState);
+        .setState(sceneState)
+        .setTaps(0);
 }
 
 void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {

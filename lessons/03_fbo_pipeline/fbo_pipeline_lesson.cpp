@@ -85,7 +85,7 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (frame.step == StraightToWindow) {
         // The chapter's old order: the draw state is set before the shadow map is created.
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
+        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_)).setTaps(0);
         DeclaredShadowMap shadow =
             shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
@@ -96,7 +96,7 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
+        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_)).setTaps(0);
         declareStraightToWindow(graph, frame, shadow);
     } else if (frame.step == EachPassSetsItsState) {
         declareStraightToWindow(graph, frame, shadow);
@@ -134,7 +134,8 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
         graph.addPass("to the window", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
             .read(color)
             .writeColor(graph.output())
-            .setState(FullscreenPass::state());
+            .setState(FullscreenPass::state())
+            .setTaps(1);
     } else {
         HdrSceneTargets linear = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
                                                               sceneOptions, "scene");

@@ -59,6 +59,7 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const Scene& scene, const SceneMe
         meshes.draw(name, scene, seconds);
     });
     if (hasMap) pass.read(map);
+    pass.setTaps(2 + (hasMap ? shadowLookupTaps(lookup) : 0));  // base colour, emissive, the PCF taps
     if (options.declaresState) {
         PassState state = sceneDrawState(scene);
         if (options.viewport) state.viewport = *options.viewport;

@@ -132,7 +132,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         PassGroup::Scope in(graph, particleGroup_);
         Pass& sim = graph.addPass("particles.simulate",
                                   [this](PassContext&) { simulate(std::exchange(pendingDt_, 0.0)); });
-        sim.keepAlive();
+        sim.keepAlive().setTaps(0);  // the simulation: buffers only
 
         // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the
         // graph runs this pass only when someone inspects or captures it.
@@ -143,6 +143,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         poolTexture_ =
             poolView.create("particles.pool", {TextureSize::absolute(256, rows), TextureFormat::RGBA32F, 1},
                             TextureUsage::Storage);
+        poolView.setTaps(0);  // one texel per slot, from the pool's buffer
 
         if (!wanted.premultiplied) {
             // Steps 1 to 4: straight into scene.color, tested against scene.depth with depth writes off
@@ -164,7 +165,8 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                            .blend = true,
                            .blendFunction = BlendFunction::alpha(),
                            .faceCulling = false,
-                           .colorMask = ColorMask{}});
+                           .colorMask = ColorMask{}})
+                .setTaps(1);  // the sprite
             if (particles && !inView) drawPass.notCalledFor(notInView);
         } else {
             // Step 5: premultiplied particles into their own target (a fraction of the output), faded
@@ -201,6 +203,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                           .faceCulling = false,
                                           .colorMask = ColorMask{},
                                           .clearColor = ClearColor{0, 0, 0, 0}});
+            off.setTaps(2);  // the sprite and the scene's depth (the soft fade)
             if (particles && !inView) off.notCalledFor(notInView);
             const FullscreenPass* composite = &composite_;
             Pass& over = graph.addPass("particles.composite", [composite, color](PassContext& ctx) {
@@ -210,7 +213,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             PassState state = FullscreenPass::state();
             state.blend = true;
             state.blendFunction = BlendFunction::premultipliedAlpha();
-            over.read(color).modify(hdr.color, TextureUsage::ColorAttachment).setState(state);
+            over.read(color).modify(hdr.color, TextureUsage::ColorAttachment).setState(state).setTaps(1);
         }
     }
 

@@ -160,7 +160,7 @@ void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame
             const FullscreenPass* copy = &rttToScreen_;
             Pass& pass = graph.addPass("rtt to screen",
                                        [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
-            pass.read(color).setState(FullscreenPass::state());
+            pass.read(color).setState(FullscreenPass::state()).setTaps(1);
             shown = pass.create("rtt.shown", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                 TextureUsage::ColorAttachment);
             break;

@@ -12,6 +12,10 @@ std::string bloomShaderDefines() {
                std::to_string(kBloomMaxBright), "\n");
 }
 
+int bloomUpsampleTaps(int filters) {
+    return filters == 2 ? 1 : filters == 0 ? 9 : 8;
+}
+
 BloomSampler BloomSampler::create() {
     BloomSampler s;
     s.sampler_ = gl::createLinearClampSampler("bloom (linear, clamp to edge)");
@@ -97,7 +101,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         extract->draw({ctx.native(input)});
         BloomSampler::unbind();
     });
-    bright.read(input).writeColor(d.down[0]).setState(FullscreenPass::state());
+    bright.read(input).writeColor(d.down[0]).setState(FullscreenPass::state()).setTaps(4);
     d.passes.push_back(&bright);
 
     // Down the chain: each level from the one above it, with blending off, so the level is overwritten.
@@ -112,7 +116,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
             down->draw({ctx.native(from)});
             BloomSampler::unbind();
         });
-        pass.read(from).writeColor(d.down[k]).setState(FullscreenPass::state());
+        pass.read(from).writeColor(d.down[k]).setState(FullscreenPass::state()).setTaps(filters == 0 ? 5 : 4);
         d.passes.push_back(&pass);
     }
 
@@ -134,6 +138,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
             BloomSampler::unbind();
         });
         pass.read(base).read(below).writeColor(d.up[k]).setState(FullscreenPass::state());
+        pass.setTaps(bloomUpsampleTaps(filters) + (wide ? 4 : 1));  // the level below, then its own level
         d.passes.push_back(&pass);
     }
     if (!broken.empty()) {

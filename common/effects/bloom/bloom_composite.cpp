@@ -57,6 +57,7 @@ DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, Tex
     TextureHandle result = composite.create(
         "bloom.result", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     composite.read(scene).read(glow).setState(FullscreenPass::state());
+    composite.setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
     if (!program.usable()) composite.disable("the bloom composite program did not build: " + program.error());
     return {composite, result};
 }
@@ -71,6 +72,7 @@ Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, T
                                        glProgramUniform1f(p, bloom_uniform::exposure, exposure);
                                    }));
     declared.read(scene).read(glow).writeColor(graph.output()).setState(FullscreenPass::state());
+    declared.setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
     if (!program.usable())
         declared.disable("the fused bloom composite program did not build: " + program.error());
     return declared;

@@ -64,7 +64,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
         valid_ = true;
         ranLastFrame_ = true;
     });
-    pass.read(glow).read(prev).writeColor(out).writeColor(next).setState(FullscreenPass::state());
+    pass.read(glow).read(prev).writeColor(out).writeColor(next).setState(FullscreenPass::state()).setTaps(2);
     if (!usable()) pass.disable("the flicker program did not build: " + error());
     return {pass, out};
 }

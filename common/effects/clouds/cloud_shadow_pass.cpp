@@ -76,7 +76,10 @@ TextureHandle CloudShadowPass::declareMap(FrameGraph& graph, TextureHandle depth
         });
     TextureHandle map = pass.create("clouds.shadow", {TextureSize::output(), TextureFormat::R16F},
                                     TextureUsage::ColorAttachment);
-    pass.read(depth).setState(FullscreenPass::state());
+    // The depth, then two density taps (two scales) per sample along the sun's ray.
+    pass.read(depth)
+        .setState(FullscreenPass::state())
+        .setTaps(1 + 2 * std::clamp(shadow.samples, 0, kCloudMaxSteps));
     return map;
 }
 
@@ -103,7 +106,8 @@ TextureHandle CloudShadowPass::declare(FrameGraph& graph, const CloudShadowInput
                  })
         .read(map)
         .modify(inputs.color, TextureUsage::ColorAttachment)
-        .setState(multiply);
+        .setState(multiply)
+        .setTaps(1);
     return map;
 }
 

@@ -18,6 +18,12 @@ constexpr GLint kSkyLocation = 23;
 constexpr GLint kTilesXLocation = 24;
 constexpr GLint kWorldOffsetLocation = 25;
 
+// Texture lookups of gbuffer_read.glsl for one pixel: albedo, depth, normal, and the stored position
+// where the layout has one (compact rebuilds it from depth).
+int gbufferTaps(const GBufferTargets& g) {
+    return g.position ? 4 : 3;
+}
+
 }  // namespace
 
 DeferredLighting DeferredLighting::create() {
@@ -72,6 +78,7 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
     if (g.position) pass.read(*g.position);
     if (shadow.pass) pass.read(shadow.map);
     if (tiles) pass.read(tiles->heat);
+    pass.setTaps(gbufferTaps(g) + (shadow.pass ? shadowLookupTaps(shadow.lookup) : 0));
     if (!fullscreen->usable()) pass.disable("the lighting program did not build: " + fullscreen->error());
     return pass.create("deferred.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
@@ -96,6 +103,7 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
                      ctx.native(reference)});
     });
     pass.read(g.albedo).read(g.normal).read(g.depth).read(reference).setState(FullscreenPass::state());
+    pass.setTaps(gbufferTaps(g));  // the normal is not read; the reference position is
     if (g.position) pass.read(*g.position);
     if (!error->usable()) pass.disable("the position-error program did not build: " + error->error());
     return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},
@@ -123,6 +131,7 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
     });
     pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
     if (g.position) pass.read(*g.position);
+    pass.setTaps(gbufferTaps(g));
     if (!views->usable()) pass.disable("the G-buffer view program did not build: " + views->error());
     const TextureDesc rgba8{TextureSize::output(), TextureFormat::RGBA8, 1};
     pass.create("gbuffer.view_normal", rgba8, TextureUsage::ColorAttachment);

@@ -71,7 +71,7 @@ GBufferTargets GBufferPass::declare(FrameGraph& graph, const Scene& scene, const
         pass.create("gbuffer.depth", {TextureSize::output(), f.depth, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.clearColor = ClearColor{0, 0, 0, 0};  // alpha 0 in albedo: no surface
-    pass.setState(state);
+    pass.setState(state).setTaps(1);            // the base colour
     if (!prog->usable()) pass.disable("the G-buffer program did not build: " + prog->error());
     return t;
 }

@@ -71,7 +71,7 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const Scen
                           TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.clearColor = ClearColor{0, 0, 0, 0};  // every target; the composite adds the sky once
-    pass.setState(state);
+    pass.setState(state).setTaps(2);            // base colour and emissive textures
     if (!phong_.usable()) pass.disable("the MRT program did not build: " + phong_.error());
     return t;
 }
@@ -82,7 +82,7 @@ TextureHandle LectureMrt::declareComposite(FrameGraph& graph, const Scene& scene
         setSky(composite->program(), scene);
         composite->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state());
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state()).setTaps(3);
     return pass.create("mrt.sum", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -93,7 +93,8 @@ SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene,
         setSky(sharpen->program(), scene);
         sharpen->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state());
+    // The diffuse term and its four neighbours (identity minus the Laplacian), then specular and ambient.
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state()).setTaps(7);
     SharpenTargets s;
     s.clipped = pass.create("sharpen.rgba8", {TextureSize::output(), TextureFormat::RGBA8, 1},
                             TextureUsage::ColorAttachment);
@@ -107,7 +108,7 @@ TextureHandle LectureMrt::declareRangeView(FrameGraph& graph, const SharpenTarge
     Pass& pass = graph.addPass("sharpen range", [range, s](PassContext& ctx) {
         range->draw({ctx.native(s.clipped), ctx.native(s.kept)});
     });
-    pass.read(s.clipped).read(s.kept).setState(FullscreenPass::state());
+    pass.read(s.clipped).read(s.kept).setState(FullscreenPass::state()).setTaps(2);
     return pass.create("sharpen.range", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

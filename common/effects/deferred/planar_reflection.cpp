@@ -101,7 +101,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
     pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
-    pass.setState(state);
+    pass.setState(state).setTaps(1);   // the base colour; the lights come from a buffer
     needs(pass, SceneFeature::mirror);
     if (!reflect_.usable()) pass.disable("the reflection program did not build: " + reflect_.error());
 
@@ -134,6 +134,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
                    .faceCulling = true,
                    .cullFace = CullFace::Back,
                    .colorMask = ColorMask{}});
+    over.setTaps(2);  // the G-buffer's depth, then the reflection
     needs(over, SceneFeature::mirror);
     if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
     if (!surface_.usable()) over.disable("the mirror-surface program did not build: " + surface_.error());

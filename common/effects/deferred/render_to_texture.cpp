@@ -130,7 +130,7 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
     PassState state = hdrSceneState(scene);
     state.clearColor.reset();  // cleared in the body, on the recipe's framebuffer
     state.clearDepth.reset();
-    pass.setState(state);
+    pass.setState(state).setTaps(2);  // base colour and emissive textures (phong.frag)
     if (!program_.usable()) pass.disable("the render-to-texture program did not build: " + program_.error());
     return color;
 }

@@ -116,7 +116,9 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const 
     state.blend = true;
     state.blendFunction = BlendFunction::additive();
     state.clearColor = ClearColor{0.0f, 0.0f, 0.0f, 0.0f};
-    pass.setState(state);
+    // Per sample: the scene's two material textures, then the sum's one (its scratch targets are its own,
+    // outside the graph and the traffic model).
+    pass.setState(state).setTaps(3.0 * std::max(s.samples, 1));
     if (!usable()) pass.disable("the dof reference programs did not build: " + error());
     return {pass, out};
 }

@@ -124,7 +124,7 @@ DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, T
     });
     TextureHandle graded =
         declared.create("colour.graded", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    declared.read(input).setState(FullscreenPass::state());
+    declared.read(input).setState(FullscreenPass::state()).setTaps(1);
     if (!pass_.usable()) declared.disable("the colour matrix program did not build: " + pass_.error());
     return {declared, graded};
 }

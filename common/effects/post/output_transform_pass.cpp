@@ -69,7 +69,9 @@ Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
     });
     declared.read(linear);
     if (view) declared.read(view->before);
-    declared.writeColor(graph.output()).setState(FullscreenPass::state());
+    declared.writeColor(graph.output())
+        .setState(FullscreenPass::state())
+        .setTaps(1);  // one texel, either side
     if (!pass->usable()) declared.disable("the output transform program did not build: " + pass->error());
     return declared;
 }

@@ -90,7 +90,7 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     });
     TextureHandle result =
         blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    blurPass.read(input).setState(FullscreenPass::state());
+    blurPass.read(input).setState(FullscreenPass::state()).setTaps(params.length > 0.0f ? params.samples : 1);
     if (!blur_.usable()) blurPass.disable("the radial blur program did not build: " + blur_.error());
 
     const FullscreenPass* offsets = &offsets_;
@@ -100,7 +100,7 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     });
     TextureHandle offset = offsetPass.create("blur.offset", {TextureSize::output(), TextureFormat::RG16F, 1},
                                              TextureUsage::ColorAttachment);
-    offsetPass.setState(FullscreenPass::state());
+    offsetPass.setState(FullscreenPass::state()).setTaps(0);
     if (!offsets_.usable())
         offsetPass.disable("the radial blur offsets program did not build: " + offsets_.error());
     return {{blurPass, result}, {offsetPass, offset}};

@@ -49,7 +49,7 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, con
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene));
+    pass.setState(hdrSceneState(scene)).setTaps(2);  // the material's base colour and emissive textures
     if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
     return targets;
 }

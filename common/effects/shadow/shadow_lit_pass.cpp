@@ -37,6 +37,11 @@ void drawShadowed(GLuint program, const Scene& scene, const SceneMeshes& meshes,
     drawWithPlacements(program, scene, meshes, seconds, placements);
 }
 
+// Texture lookups per shaded pixel of shadowed_scene.frag: base colour, emissive, and the PCF taps.
+int shadowedSceneTaps(const ShadowLookup& lookup, bool hasMap) {
+    return 2 + (hasMap ? shadowLookupTaps(lookup) : 0);
+}
+
 }  // namespace
 
 ShadowLitPass ShadowLitPass::create() {
@@ -68,7 +73,7 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene));
+    pass.setState(hdrSceneState(scene)).setTaps(shadowedSceneTaps(lookup, hasMap));
     if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
     return targets;
 }
@@ -100,7 +105,7 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
                 TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
-    pass.setState(state);
+    pass.setState(state).setTaps(shadowedSceneTaps(lookup, hasMap));
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");
     if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
     return color;

@@ -86,6 +86,10 @@ OperationCount operationCount(SkinningProduct product) {
     return product == SkinningProduct::parenthesised ? OperationCount{32, 24} : OperationCount{80, 60};
 }
 
+int shadowLookupTaps(const ShadowLookup& lookup) {
+    return lookup.enabled ? std::clamp(lookup.filterTaps, 1, kShadowMaxFilterTaps) : 0;
+}
+
 ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light, float filterRadiusMetres) {
     ShadowLookup lookup;
     lookup.light = light;
@@ -252,6 +256,7 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
         // The chapter's bug: depth test, depth write and blend are whatever the previous pass left.
         pass.setState({.faceCulling = false, .clearDepth = 1.0f});
     }
+    pass.setTaps(1);  // the base colour's alpha, for the cutoff
     if (!usable()) pass.disable("a shadow program did not build: " + error());
     return out;
 }
@@ -280,6 +285,7 @@ TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShado
                    .blend = false,
                    .faceCulling = false,
                    .colorMask = ColorMask{}});
+    pass.setTaps(1);
     if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
     if (!depthView_.usable()) pass.disable("the depth view program did not build: " + depthView_.error());
     return out;

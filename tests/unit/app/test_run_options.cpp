@@ -148,13 +148,14 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
             << flag << ": " << (o.ok() ? "" : o.error());
     }
     EXPECT_EQ(inHelp,
-              (std::set<std::string>{
-                  "--headless",     "--size",         "--frames",     "--step",       "--scene",
-                  "--lang",         "--param",        "--preset",     "--capture",    "--capture-float",
-                  "--report",       "--graph",        "--time-step",  "--seed",       "--timing",
-                  "--inspect",      "--overlay",      "--no-overlay", "--bench",      "--knob",
-                  "--bench-frames", "--bench-values", "--bench-out",  "--list-steps", "--list-params",
-                  "--help",         "--press",        "--all-steps",  "--resize",     "--resource-log"}));
+              (std::set<std::string>{"--headless",     "--size",          "--frames",    "--step",
+                                     "--scene",        "--lang",          "--param",     "--preset",
+                                     "--capture",      "--capture-float", "--report",    "--graph",
+                                     "--time-step",    "--seed",          "--timing",    "--inspect",
+                                     "--overlay",      "--no-overlay",    "--bench",     "--knob",
+                                     "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
+                                     "--list-params",  "--help",          "--press",     "--all-steps",
+                                     "--resize",       "--resource-log",  "--cost",      "--dump-shaders"}));
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
@@ -228,6 +229,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFlag{{"--time-step", "nan"}, "--time-step"}, BadFlag{{"--seed", "-3"}, "--seed"},
                       BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
                       BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
+                      BadFlag{{"--cost", "money"}, "--cost: expected one of time, traffic; got \"money\""},
+                      BadFlag{{"--dump-shaders", ""}, "--dump-shaders: needs a path"},
                       BadFlag{{"--frames"}, "--frames: needs a value"},
                       BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
 
@@ -238,6 +241,17 @@ TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto missing = parseRunOptions({"--graph", ""});
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("--graph: needs a path"), std::string::npos) << missing.error();
+}
+
+TEST(RunOptions, DumpShadersTakesAFolderAndCostAnAxis) {
+    auto o = parseRunOptions({"--dump-shaders", "out/shaders", "--bench", "--cost", "traffic"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->shaderDump, "out/shaders");
+    EXPECT_EQ(o->benchCost, fx::BenchCost::traffic);
+    auto plain = parseRunOptions({"--bench"});
+    ASSERT_TRUE(plain.ok()) << plain.error();
+    EXPECT_TRUE(plain->shaderDump.empty());
+    EXPECT_EQ(plain->benchCost, fx::BenchCost::time);
 }
 
 TEST(RunOptions, PressNamesAWindowKeyAndAFrame) {
