@@ -5,6 +5,7 @@
 #include <cstring>
 #include <set>
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -96,13 +97,15 @@ std::vector<std::string> neighbourArguments(const std::vector<std::string>& args
 
 std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& args,
                                               const fs::path& captureDir, int step) {
-    std::vector<std::string> one = without(args, {"--all-steps", "--capture", "--report", "--step"});
+    std::vector<std::string> one =
+        without(args, {"--all-steps", "--capture", "--report", "--step", "--graph"});
     // Headless: a fixed time step, the same pictures every time, and a run that ends by itself (a
     // window without --frames would run until closed).
     if (std::find(one.begin(), one.end(), "--headless") == one.end()) one.insert(one.begin(), "--headless");
     const fs::path folder = captureDir / cat("step-", step);
     for (std::string a : {std::string("--step"), cat(step), std::string("--capture"), folder.string(),
-                          std::string("--report"), (folder / "report.json").string()})
+                          std::string("--report"), (folder / "report.json").string(), std::string("--graph"),
+                          (folder / "graph.dot").string()})
         one.push_back(std::move(a));
     return one;
 }
@@ -114,12 +117,21 @@ Error execLesson(const fs::path& executable, const std::vector<std::string>& arg
     return Error{cat("could not start ", program, ": ", std::strerror(errno))};
 }
 
-Result<int> runAndWait(const fs::path& executable, const std::vector<std::string>& args) {
+Result<int> runAndWait(const fs::path& executable, const std::vector<std::string>& args,
+                       const fs::path& output) {
     std::string program;
     std::vector<char*> v = argv(executable, args, program);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    if (!output.empty()) {
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    }
     pid_t child = 0;
-    if (int error = posix_spawn(&child, program.c_str(), nullptr, nullptr, v.data(), environ); error != 0)
-        return Error{cat("could not start ", program, ": ", std::strerror(error))};
+    int error = posix_spawn(&child, program.c_str(), &actions, nullptr, v.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) return Error{cat("could not start ", program, ": ", std::strerror(error))};
     int status = 0;
     while (waitpid(child, &status, 0) < 0) {
         if (errno != EINTR) return Error{cat("waiting for ", program, ": ", std::strerror(errno))};
