@@ -107,9 +107,12 @@ struct CapturedStep {
     std::string dot;
 };
 
-std::string textureCaption(const json& texture) {
-    return cat(texture.value("name", std::string()), "  ", sizeText(member(texture, "size")), "  ",
-               texture.value("format", std::string()));
+// "bloom.down[1]  160x90  RGBA16F"; a level of a chain says only "[1] 160x90", its strip the rest.
+std::string textureCaption(const json& texture, bool inChain) {
+    const std::string name = texture.value("name", std::string());
+    const std::string size = sizeText(member(texture, "size"));
+    if (inChain) return cat(name.substr(name.find('[')), " ", size);
+    return cat(name, "  ", size, "  ", texture.value("format", std::string()));
 }
 
 // The textures a step's text points at (`bloom.down[0]`) that the step's frame made; a name with an
@@ -124,29 +127,31 @@ std::vector<View> viewsOf(const CapturedStep& step, const std::string& englishTe
     }
     std::vector<View> views;
     std::set<std::string> shown;
-    auto picture = [&](const std::string& name) -> Picture {
+    auto picture = [&](const std::string& name, bool inChain) -> Picture {
         const std::string file = cat("step-", number, "-", captureFileStem(name), ".png");
         if (status) status = moveFile(step.folder / (captureFileStem(name) + ".png"), folder / file);
         shown.insert(name);
         const json& t = *captured.at(name);
         const json& size = member(t, "size");
         const bool sized = size.is_array() && size.size() == 2;
-        return {file, textureCaption(t), sized ? size[0].get<int>() : 0, sized ? size[1].get<int>() : 0};
+        return {file, textureCaption(t, inChain), sized ? size[0].get<int>() : 0,
+                sized ? size[1].get<int>() : 0};
     };
     for (const std::string& name : codeSpans(englishText)) {
         if (!captured.contains(name) || shown.contains(name)) continue;
         const std::size_t bracket = name.find('[');
         if (bracket != std::string::npos && name.back() == ']') {
             const std::string base = name.substr(0, bracket);
-            View chain{cat(base, "[0 .. ]"), {}};
+            View chain;
             for (int k = 0; captured.contains(cat(base, "[", k, "]")); ++k) {
                 if (!shown.contains(cat(base, "[", k, "]")))
-                    chain.pictures.push_back(picture(cat(base, "[", k, "]")));
+                    chain.pictures.push_back(picture(cat(base, "[", k, "]"), true));
             }
-            chain.title = cat(base, "[0 .. ", chain.pictures.size() - 1, "]");
+            chain.title = cat(base, "[0 .. ", chain.pictures.size() - 1, "]  ",
+                              captured.at(name)->value("format", std::string()));
             if (!chain.pictures.empty()) views.push_back(std::move(chain));
         } else {
-            views.push_back({name, {picture(name)}});
+            views.push_back({name, {picture(name, false)}});
         }
     }
     return views;
