@@ -273,8 +273,7 @@ std::string madeWith(const std::string& language, const json& report, int frames
 }
 
 // The bench's results for the lesson, if there are any.
-Result<BenchPart> readBench(const fs::path& benchFolder, const fs::path& folder,
-                            const std::string& language) {
+Result<BenchPart> readBench(const fs::path& benchFolder, const fs::path& folder) {
     BenchPart bench;
     bench.applicable = true;
     std::error_code ec;
@@ -283,10 +282,9 @@ Result<BenchPart> readBench(const fs::path& benchFolder, const fs::path& folder,
     if (!j) return Error{j.error()};
     bench.found = true;
     const double copyMs = j->value("copyMs", 0.0);
-    bench.setting = cat(sizeText(member(*j, "size")), ", ", j->value("timingMethod", std::string()),
-                        copyMs > 0 ? cat(", 1 copy = ", copyMs, " ms") : "");
-    bench.costUnit = language == "ja" ? (copyMs > 0 ? "フレーム（フルスクリーンコピー）" : "フレーム（ms）")
-                                      : (copyMs > 0 ? "frame (full-screen copies)" : "frame (ms)");
+    bench.size = sizeText(member(*j, "size"));
+    bench.timing = j->value("timingMethod", std::string());
+    bench.copyMs = copyMs;
     std::vector<std::string> knobs;
     for (const json& p : member(*j, "points")) {
         const std::string knob = p.value("knob", std::string());
@@ -452,6 +450,13 @@ Result<ContentsEntry> buildLesson(const fs::path& executable, const HandoutOptio
                              logTail(work / "bench.log"))};
     }
 
+    BenchPart bench;
+    if (hasKnobs) {
+        auto found = readBench(benchFolder, folder);
+        if (!found) return Error{cat(name, ": ", found.error())};
+        bench = *found;
+    }
+
     ContentsEntry entry{name, {}, int(captured.size())};
     std::vector<std::pair<std::string, std::string>> pages;
     for (const std::string& l : options.languages) pages.emplace_back(l, pageFileFor(l, options.languages));
@@ -496,11 +501,7 @@ Result<ContentsEntry> buildLesson(const fs::path& executable, const HandoutOptio
                 if (auto s = textPictures.add(p.text, source); !s) return Error{s.error()};
         for (const StepPage& s : page.steps)
             if (auto added = textPictures.add(s.text, source); !added) return Error{added.error()};
-        if (hasKnobs) {
-            auto bench = readBench(benchFolder, folder, language);
-            if (!bench) return Error{cat(name, ": ", bench.error())};
-            page.bench = *bench;
-        }
+        page.bench = bench;
         entry.titles[language] = page.title;
         const std::string html = lessonPageHtml(page, textPictures.source());
         if (auto s = writeFileAtomically(folder / pageFileFor(language, options.languages), html); !s)

@@ -146,10 +146,13 @@ std::string benchHtml(const BenchPart& bench, const Words& words) {
         "<section class=\"part bench\" id=\"bench\">\n<h2>" + escapeHtml(words.bench) + "</h2>\n";
     if (!bench.found)
         return out + "<p class=\"note\">" + escapeHtml(words.benchMissing) + "</p>\n</section>\n";
-    out += "<p>" + escapeHtml(words.benchMeasured + bench.setting) + "</p>\n";
+    std::string setting = bench.size + ", " + bench.timing;
+    if (bench.copyMs > 0) setting += ", 1 copy = " + number(bench.copyMs) + " ms";
+    out += "<p>" + escapeHtml(words.benchMeasured + setting) + "</p>\n";
     for (const Picture& p : bench.plots) out += pictureHtml(p, "plot");
     out += "<table class=\"bench-table\">\n<thead><tr><th>" + escapeHtml(words.knob) + "</th><th>" +
-           escapeHtml(words.value) + "</th><th>" + escapeHtml(bench.costUnit) +
+           escapeHtml(words.value) + "</th><th>" +
+           escapeHtml(bench.copyMs > 0 ? words.costCopies : words.costMs) +
            "</th><th>RMSE</th></tr></thead>\n<tbody>\n";
     for (const BenchRow& r : bench.rows) {
         std::string value = escapeHtml(r.value);

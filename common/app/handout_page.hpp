@@ -54,10 +54,10 @@ struct BenchRow {
 };
 
 struct BenchPart {
-    bool applicable = false;  // the lesson has quality knobs to sweep
-    bool found = false;       // and the bench's results were there
-    std::string setting;      // "1280x720, fenced timing, 1 copy = 3.4 ms"
-    std::string costUnit;
+    bool applicable = false;   // the lesson has quality knobs to sweep
+    bool found = false;        // and the bench's results were there
+    std::string size, timing;  // "1280x720", "glFinish + wall clock"
+    double copyMs = 0;         // one full-screen copy, the unit of the cost column; 0: the cost is in ms
     std::vector<Picture> plots;
     std::vector<BenchRow> rows;
 };

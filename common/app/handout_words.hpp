@@ -24,6 +24,8 @@ struct Words {
     std::string benchMeasured;     // "Measured by ./fxlab bench at " + size + ...
     std::string benchMissing;      // no bench output: how to make it
     std::string knob, value;       // the bench table's first columns
+    std::string costCopies;        // its cost column: the frame in full-screen copies
+    std::string costMs;            // or in milliseconds, when no copy was timed
     std::string reference;         // the row a knob is compared against
     std::string current;           // the value the lesson starts with
     std::string englishOnly;       // a part of lesson.md that has no translation

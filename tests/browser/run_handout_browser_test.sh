@@ -17,11 +17,13 @@ status=$?
 [ "$status" -eq 77 ] && exit 77
 # Two runs give the same pictures (fixed frame count at the fixed time step, fixed seeds).
 first="$(basename "$1")"; first="${first#fxlab-}"
+made="$work/handouts"
+[ $# -gt 1 ] && made="$work/handouts/$first"  # several lessons: one folder each, beside the contents
 "$tool" --force --out "$work/again" "$1" >/dev/null 2>&1 || { echo "FAIL: fxlab-handout, second run"; exit 1; }
 compared=0
 while IFS= read -r file; do
   rel="${file#"$work/again/"}"
-  if ! cmp -s "$file" "$work/handouts/$first/$rel"; then echo "FAIL: $first/$rel differs between two runs"; status=1; fi
+  if ! cmp -s "$file" "$made/$rel"; then echo "FAIL: $first/$rel differs between two runs"; status=1; fi
   compared=$((compared + 1))
 done < <(find "$work/again" -type f \( -name '*.png' -o -name '*.svg' \))
 [ "$compared" -gt 0 ] || { echo "FAIL: no pictures to compare"; status=1; }

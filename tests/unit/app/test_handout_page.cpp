@@ -108,12 +108,15 @@ TEST(HandoutPage, TheBenchPartSaysWhatItFoundOrHowToMakeIt) {
     std::string html = lessonPageHtml(p, {});
     EXPECT_TRUE(has(html, "No bench results were found for this lesson"));
     p.bench.found = true;
-    p.bench.setting = "1280x720, fenced";
-    p.bench.costUnit = "frame (full-screen copies)";
+    p.bench.size = "1280x720";
+    p.bench.timing = "glFinish + wall clock";
+    p.bench.copyMs = 3.3512;
     p.bench.plots = {{"bench-levels.png", "levels", 0, 0}};
     p.bench.rows = {{"levels", "6", true, true, 9.04, 0.048}};
     html = lessonPageHtml(p, {});
     EXPECT_TRUE(has(html, "<img src=\"bench-levels.png\" alt=\"levels\">"));
+    EXPECT_TRUE(has(html, "Measured by ./fxlab bench at 1280x720, glFinish + wall clock, 1 copy = 3.35 ms"));
+    EXPECT_TRUE(has(html, "<th>frame (full-screen copies)</th>"));
     EXPECT_TRUE(has(html,
                     "<td>6 <span class=\"mark\">(reference)</span> <span class=\"mark\">(default)</span></td>"
                     "<td class=\"number\">9.04</td><td class=\"number\">0.048</td>"));
