@@ -45,7 +45,4 @@ Status writeStyle(const std::filesystem::path& folder);
 Status writeContents(const std::vector<ContentsEntry>& lessons, const std::vector<std::string>& languages,
                      const std::filesystem::path& folder);
 
-// Graphviz's dot on PATH, or empty.
-std::filesystem::path findProgram(const std::string& name);
-
 }  // namespace fx::handout

@@ -21,13 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool isLessonName(const std::string& name) {
-    // fxlab-NN-<slug>
-    return name.size() > 9 && name.rfind("fxlab-", 0) == 0 &&
-           std::isdigit(static_cast<unsigned char>(name[6])) &&
-           std::isdigit(static_cast<unsigned char>(name[7])) && name[8] == '-';
-}
-
 // Flags whose value names something of one lesson, and flags the neighbour gets anew.
 const std::set<std::string> kLessonOwnFlags = {"--step", "--scene", "--param", "--preset", "--inspect",
                                                "--knob", "--press", "--size",  "--resize"};
@@ -58,12 +51,19 @@ std::vector<char*> argv(const fs::path& executable, const std::vector<std::strin
 
 }  // namespace
 
+bool isLessonExecutableName(const std::string& name) {
+    // fxlab-NN-<slug>
+    return name.size() > 9 && name.rfind("fxlab-", 0) == 0 &&
+           std::isdigit(static_cast<unsigned char>(name[6])) &&
+           std::isdigit(static_cast<unsigned char>(name[7])) && name[8] == '-';
+}
+
 std::vector<fs::path> lessonExecutables(const fs::path& folder) {
     std::vector<fs::path> found;
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
         const std::string name = e.path().filename().string();
-        if (!isLessonName(name) || !e.is_regular_file(ec)) continue;
+        if (!isLessonExecutableName(name) || !e.is_regular_file(ec)) continue;
         if ((e.status(ec).permissions() & fs::perms::owner_exec) == fs::perms::none) continue;
         found.push_back(e.path());
     }

@@ -17,6 +17,9 @@
 
 namespace fx {
 
+// Whether a file name is a lesson executable's: fxlab-NN-<name>.
+bool isLessonExecutableName(const std::string& name);
+
 // The lesson executables in `folder` (fxlab-NN-name, executable regular files), in number order.
 std::vector<std::filesystem::path> lessonExecutables(const std::filesystem::path& folder);
 
