@@ -202,11 +202,12 @@ def check_pdf(binary, path, name, page, work, profile):
             if float(x1) > right or float(x0) < PDF_MARGIN_PT - 1:
                 fail(name, f"the word \"{html.unescape(word)}\" runs past the page's margin ({float(x1):.0f} pt)")
                 break
-    # No picture cut by a page break: a cut one is drawn on two pages, one after the other.
+    # No picture cut by a page break: a cut one is drawn on two pages one after the other, at the same
+    # size (the same picture shown twice, at another size, is not cut).
     pages_of = {}
     for line in subprocess.run(["pdfimages", "-list", pdf], capture_output=True, text=True).stdout.splitlines()[2:]:
         fields = line.split()
-        pages_of.setdefault(fields[10], []).append(int(fields[0]))
+        pages_of.setdefault((fields[10], fields[12], fields[13]), []).append(int(fields[0]))
     for pages_drawn in pages_of.values():
         if any(b == a + 1 for a, b in zip(pages_drawn, pages_drawn[1:])):
             fail(name, f"a picture is cut by a page break (pages {pages_drawn[0]} and {pages_drawn[1]})")
@@ -254,7 +255,7 @@ def main():
     if len(sys.argv) != 3:
         print(__doc__)
         return 2
-    handout, work = sys.argv[1], sys.argv[2]
+    handout, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
     binary = shutil.which("chromium") or shutil.which("chromium-browser")
     missing = [tool for tool in ("pdfinfo", "pdftotext", "pdffonts", "pdfimages", "fc-list") if not shutil.which(tool)]
     if not binary or missing:
