@@ -12,6 +12,8 @@ struct Fact {
     std::string value;  // "true" and "false" become JSON booleans in the report
     std::string label;  // the panel's words; empty: the name
     bool shown = true;  // false: for the report and the smoke checks only
+    // The words the panel shows before the value: the label, or the name where there is none.
+    const std::string& shownLabel() const { return label.empty() ? name : label; }
 };
 
 class Facts {

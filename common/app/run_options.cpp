@@ -325,7 +325,7 @@ const std::vector<Flag>& flags() {
          .apply = addResize},
         {.name = "--all-steps",
          .help = "with --capture DIR: capture every step of the lesson, each into DIR/step-K/\n"
-                 "(with its report.json), one run per step",
+                 "(with its report.json and graph.dot), one run per step",
          .apply = set(&RunOptions::allSteps, true)},
         {.name = "--resource-log",
          .value = "FILE",

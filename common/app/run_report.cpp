@@ -122,6 +122,10 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
             facts[k] = v;
     }
     j["facts"] = facts;
+    // The facts the overlay's panel shows, in its order and words (the handout lists them per step).
+    auto shown = nlohmann::ordered_json::array();
+    for (auto& [label, value] : f.shownFacts) shown.push_back({{"label", label}, {"value", value}});
+    j["shownFacts"] = shown;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const ParamFact& p : f.params)
         params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});

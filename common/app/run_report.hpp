@@ -34,6 +34,7 @@ struct RunFacts {
     std::string lastGlError;
     std::vector<std::string> shaderErrors;
     std::vector<std::pair<std::string, std::string>> lessonFacts;
+    std::vector<std::pair<std::string, std::string>> shownFacts;  // label and value, as the panel shows them
     std::vector<ParamFact> params;
 };
 

@@ -60,7 +60,10 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
     facts.shaderErrors = programs.errors();
     Facts lessonFacts;
     s.lesson->facts(lessonFacts, record.lastFrame);
-    for (const Fact& f : lessonFacts.list()) facts.lessonFacts.emplace_back(f.name, f.value);
+    for (const Fact& f : lessonFacts.list()) {
+        facts.lessonFacts.emplace_back(f.name, f.value);
+        if (f.shown) facts.shownFacts.emplace_back(f.shownLabel(), f.value);
+    }
     for (const Param& p : s.params.all())
         facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
 

@@ -36,20 +36,31 @@ std::string_view listMarker(std::string_view line, std::string_view& rest) {
     return {};
 }
 
-// A table row "| a | b |" as text ("a  |  b"); a separator row "|---|---|" as nothing.
-std::string tableRow(std::string_view line) {
-    std::string out;
+bool isTableSeparator(std::string_view line) {
+    return trimmed(line).find_first_not_of("|-: ") == std::string_view::npos;
+}
+
+// The cells of a table row "| a | b |", as written.
+std::vector<std::string_view> tableCells(std::string_view line) {
+    std::vector<std::string_view> cells;
     line = trimmed(line);
-    if (line.find_first_not_of("|-: ") == std::string_view::npos) return out;
     if (startsWith(line, "|")) line.remove_prefix(1);
     if (!line.empty() && line.back() == '|') line.remove_suffix(1);
     std::size_t start = 0;
     while (start <= line.size()) {
         std::size_t bar = line.find('|', start);
         if (bar == std::string_view::npos) bar = line.size();
-        std::string_view cell = trimmed(line.substr(start, bar - start));
-        if (!cell.empty()) out += (out.empty() ? "" : "  |  ") + std::string(cell);
+        cells.push_back(trimmed(line.substr(start, bar - start)));
         start = bar + 1;
+    }
+    return cells;
+}
+
+// A table row as text ("a  |  b"), its empty cells left out.
+std::string tableRow(const std::vector<std::string_view>& cells) {
+    std::string out;
+    for (std::string_view cell : cells) {
+        if (!cell.empty()) out += (out.empty() ? "" : "  |  ") + std::string(cell);
     }
     return out;
 }
@@ -210,6 +221,8 @@ std::vector<Span> parseSpans(std::string_view text) {
                 std::string_view label = text.substr(open + 1, closeBracket - open - 1);
                 if (picture) {
                     emit(Style::Picture, label);
+                    spans.back().target =
+                        std::string(text.substr(closeBracket + 2, closeParen - closeBracket - 2));
                 } else {
                     plain += label;
                 }
@@ -278,9 +291,16 @@ std::vector<Block> parseBlocks(std::string_view text) {
         }
         if (startsWith(line, "|")) {
             close();
-            std::string row = tableRow(line);
+            if (isTableSeparator(line)) {
+                // The row above a separator is the table's header.
+                if (!blocks.empty() && !blocks.back().cells.empty()) blocks.back().tableHeader = true;
+                continue;
+            }
+            const std::vector<std::string_view> cells = tableCells(line);
+            std::string row = tableRow(cells);
             if (!row.empty()) {
                 current.kind = BlockKind::Paragraph;
+                for (std::string_view cell : cells) current.cells.push_back(parseSpans(cell));
                 pending = row;
                 open = true;
                 close();

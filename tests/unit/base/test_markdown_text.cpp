@@ -71,6 +71,30 @@ TEST(Markdown, BlocksOfAStep) {
     EXPECT_EQ(styles(blocks[7].spans), "[P:][  |  c]");
 }
 
+// What the handout needs beyond the overlay: a picture's file, and a table's cells and header row.
+TEST(Markdown, PicturesKeepTheirFileAndTablesTheirCells) {
+    auto spans = parseSpans("see ![Step 1: a](../../docs/images/x.png) and [text](y.md)");
+    ASSERT_EQ(spans.size(), 3u);
+    EXPECT_EQ(spans[1].style, Style::Picture);
+    EXPECT_EQ(spans[1].target, "../../docs/images/x.png");
+    EXPECT_EQ(spans[2].target, "");  // a link keeps its text only, as the overlay shows it
+
+    auto blocks =
+        parseBlocks("| a | `b` |  |\n|---|---|---|\n| ![](p.png) |  | c |\n| d | e | f |\n\nAfter.");
+    ASSERT_EQ(blocks.size(), 4u);
+    EXPECT_TRUE(blocks[0].tableHeader);
+    EXPECT_FALSE(blocks[1].tableHeader);
+    ASSERT_EQ(blocks[0].cells.size(), 3u);  // the empty cell stays: the columns line up
+    EXPECT_EQ(styles(blocks[0].cells[1]), "[C:b]");
+    EXPECT_TRUE(blocks[0].cells[2].empty());
+    ASSERT_EQ(blocks[1].cells.size(), 3u);
+    EXPECT_EQ(blocks[1].cells[0].front().target, "p.png");
+    EXPECT_EQ(styles(blocks[2].cells[2]), "[f]");
+    EXPECT_TRUE(blocks[3].cells.empty());
+    // The overlay still reads each row as one line of text.
+    EXPECT_EQ(styles(blocks[0].spans), "[a  |  ][C:b]");
+}
+
 TEST(Markdown, JapaneseLinesJoinWithoutASpace) {
     auto blocks = parseBlocks("大きい\nレベルに足し込みます。\nRGBA8 に\n書く。\nA\nB");
     ASSERT_EQ(blocks.size(), 1u);
