@@ -126,6 +126,25 @@ char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length) {
     return c;
 }
 
+namespace {
+
+// The index of the `close` that balances the `open` at text[at] (nested pairs counted), or npos.
+std::size_t matchingClose(std::string_view text, std::size_t at, char open, char close) {
+    int depth = 0;
+    for (std::size_t i = at; i < text.size(); ++i) {
+        if (text[i] == '\\' && i + 1 < text.size()) {
+            ++i;  // an escaped bracket counts for nothing
+        } else if (text[i] == open) {
+            ++depth;
+        } else if (text[i] == close && --depth == 0) {
+            return i;
+        }
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace
+
 std::vector<Span> parseSpans(std::string_view text) {
     std::vector<Span> spans;
     std::string plain;
@@ -178,11 +197,14 @@ std::vector<Span> parseSpans(std::string_view text) {
         if (c == '[' || startsWith(rest, "![")) {
             const bool picture = c == '!';
             std::size_t open = i + (picture ? 1 : 0);
-            std::size_t closeBracket = text.find("](", open);
-            std::size_t closeParen =
-                closeBracket == std::string_view::npos ? closeBracket : text.find(')', closeBracket);
-            if (closeParen != std::string_view::npos &&
-                text.substr(open + 1, closeBracket - open - 1).find('[') == std::string_view::npos) {
+            // The label may hold brackets of its own ("[0, 1]"): its "]" is the one that balances the
+            // "[", and the target's ")" the one that balances its "(".
+            std::size_t closeBracket = matchingClose(text, open, '[', ']');
+            std::size_t closeParen = closeBracket != std::string_view::npos &&
+                                             closeBracket + 1 < text.size() && text[closeBracket + 1] == '('
+                                         ? matchingClose(text, closeBracket + 1, '(', ')')
+                                         : std::string_view::npos;
+            if (closeParen != std::string_view::npos) {
                 std::string_view label = text.substr(open + 1, closeBracket - open - 1);
                 if (picture) {
                     emit(Style::Picture, label);
