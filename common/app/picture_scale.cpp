@@ -51,6 +51,8 @@ void PictureScale::setScale(double scale) {
 
 void PictureScale::restart() {
     samples_.clear();
+    measured_.clear();
+    notPixels_ = false;
     settle_ = 1;
 }
 
@@ -69,6 +71,46 @@ std::string PictureScale::cycle() {
                    : cat("picture scale automatic (frame budget ", int(budgetMs_), " ms)");
 }
 
+PictureScale::Cost PictureScale::cost() const {
+    // frame = fixed + pixels * scale^2, fitted by least squares to the scales measured in this step
+    // (one scale alone: all of the frame is taken for pixels, the case a smaller picture helps most).
+    Cost c;
+    const std::size_t n = measured_.size();
+    if (n == 0) return c;
+    if (n == 1) {
+        c.pixels = measured_[0].ms / (measured_[0].scale * measured_[0].scale);
+        return c;
+    }
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const Measured& m : measured_) {
+        const double x = m.scale * m.scale;
+        sx += x, sy += m.ms, sxx += x * x, sxy += x * m.ms;
+    }
+    const double d = double(n) * sxx - sx * sx;
+    c.pixels = d > 0 ? (double(n) * sxy - sx * sy) / d : 0.0;
+    c.fixed = (sy - c.pixels * sx) / double(n);
+    if (c.pixels < 0 || c.fixed < 0) {
+        // Noise larger than what the picture's size changes: read it as a fixed cost, no pixels.
+        c.pixels = std::max(c.pixels, 0.0);
+        c.fixed = std::max(sy / double(n) - c.pixels * sx / double(n), 0.0);
+    }
+    return c;
+}
+
+void PictureScale::remember(double typical) {
+    // The same scale measured again, far from what it took before: the work changed (a parameter,
+    // another inspected texture), and the other scales' times no longer describe it.
+    for (const Measured& m : measured_) {
+        if (std::abs(m.scale - scale_) < 1e-9 && std::abs(typical - m.ms) > 0.3 * std::max(m.ms, 1.0)) {
+            measured_.clear();
+            break;
+        }
+    }
+    std::erase_if(measured_, [this](const Measured& m) { return std::abs(m.scale - scale_) < 1e-9; });
+    measured_.push_back({scale_, typical});
+    if (measured_.size() > 4) measured_.erase(measured_.begin());
+}
+
 void PictureScale::frameTook(double ms) {
     if (pinned_ || !(ms >= 0)) return;
     if (settle_ > 0) {
@@ -76,20 +118,31 @@ void PictureScale::frameTook(double ms) {
         return;
     }
     samples_.push_back(ms);
-    // Far over the budget: give way at once, by the share of pixels that would bring the frame to the
-    // aim if all of it were pixels (it is not, so the next frames may take it down further).
+    // Far over the budget: give way at once; otherwise decide on the median of a few frames.
     const bool farOver = ms > 2.0 * budgetMs_;
     if (!farOver && int(samples_.size()) < kSamples) return;
     const double typical = farOver ? ms : median(samples_);
+    remember(typical);
+    const Cost c = cost();
+    const double aim = kAim * budgetMs_;
+    // The smallest picture worth having: below it the pixels are under a tenth of the frame, and a
+    // frame whose time is not in its pixels would lose its picture for nothing.
+    const double worthwhile = c.pixels > 0 ? std::sqrt(std::min(1.0, 0.1 * c.fixed / c.pixels)) : 1.0;
+    notPixels_ = c.fixed >= aim;
     if (typical > budgetMs_) {
-        const double wanted = scale_ * std::sqrt(kAim * budgetMs_ / typical);
-        setScale(std::min(quantizeDown(wanted), std::max(scale_ - kQuantum, kSmallest)));
+        double wanted = c.fixed < aim && c.pixels > 0 ? std::sqrt((aim - c.fixed) / c.pixels) : worthwhile;
+        wanted = std::max(wanted, worthwhile);
+        // Down by at least one step while the model says it helps; never below the smallest worth having.
+        double next = quantizeDown(wanted);
+        if (next >= scale_ && !notPixels_) next = std::max(scale_ - kQuantum, kSmallest);
+        if (notPixels_) next = std::max(next, quantizeDown(worthwhile));
+        setScale(std::clamp(next, kSmallest, 1.0));
     } else if (scale_ < 1.0) {
-        // Up to the largest scale whose frame, were all of it pixels (the worst case), stays well inside:
-        // a cheap step after a slow one gets its picture back in a frame or two, not fifty.
+        // Up to the largest scale whose frame the model keeps well inside the budget: a cheap step after a
+        // slow one gets its picture back in a frame or two, not fifty.
         double larger = scale_;
         for (double next = std::min(1.0, scale_ + kQuantum); next <= 1.0 + 1e-9; next += kQuantum) {
-            if (typical * (next * next) / (scale_ * scale_) >= kGrowBelow * budgetMs_) break;
+            if (c.fixed + c.pixels * next * next >= kGrowBelow * budgetMs_) break;
             larger = std::min(next, 1.0);
         }
         setScale(larger);
@@ -102,6 +155,11 @@ std::string PictureScale::notice(Size2D place) const {
     const Size2D r = rendered(place);
     const std::string size = cat(place.width, "x", place.height, " (", r.width, "x", r.height, ")");
     if (pinned_) return cat("picture at ", percentText(scale_), " of ", size, ", pinned (F6 changes it)");
+    if (notPixels_)
+        return cat("picture at ", percentText(scale_), " of ", size,
+                   ": slow renderer; most of this step's frame is not in its pixels, so a smaller picture "
+                   "would not bring it within the ",
+                   int(budgetMs_), " ms budget (F6 pins the scale)");
     return cat("picture at ", percentText(scale_), " of ", size, ": slow renderer, frame budget ",
                int(budgetMs_), " ms (F6 pins the scale)");
 }

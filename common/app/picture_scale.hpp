@@ -35,7 +35,10 @@ public:
     std::string cycle();
     // A frame at the current scale took `ms` (its whole work, the overlay included): an automatic
     // scale decides the next frame's size from it. Samples right after a change are not taken
-    // (a new size makes its textures and programs again).
+    // (a new size makes its textures and programs again). The frames at the scales tried are fitted
+    // as a fixed cost plus one that grows with the pixels; when the fixed cost alone is over the
+    // budget (a crowd of skinned meshes, 100,000 particles on a software renderer) the picture stays
+    // as large as is worth having instead of shrinking to nothing for no gain, and the notice says so.
     void frameTook(double ms);
     // The step or the picture's place changed: the next frames are measured afresh (the scale stays).
     void restart();
@@ -43,14 +46,27 @@ public:
     // (358x202): slow renderer, frame budget 200 ms (F6 pins it)"; empty at full size.
     std::string notice(Size2D place) const;
 
+    // The step's frame time as a fixed part and a part that grows with the picture's pixels (ms at
+    // 100%), fitted to the scales measured since the step began.
+    struct Cost {
+        double fixed = 0, pixels = 0;
+    };
+    Cost cost() const;
+
 private:
+    struct Measured {
+        double scale, ms;
+    };
     void setScale(double scale);
+    void remember(double typical);
 
     std::optional<double> pinned_;
     double budgetMs_;
     double scale_ = 1.0;
-    std::vector<double> samples_;  // frames at the current scale, oldest first
-    int settle_ = 1;               // frames still to skip before sampling
+    std::vector<double> samples_;     // frames at the current scale, oldest first
+    std::vector<Measured> measured_;  // the typical frame at the last few scales of this step
+    bool notPixels_ = false;          // the fixed part alone is over the aim: the picture cannot help
+    int settle_ = 1;                  // frames still to skip before sampling
 };
 
 // "40%": a scale as the screen and --help write it.

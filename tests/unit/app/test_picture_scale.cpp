@@ -2,6 +2,9 @@
 // comes back when the frames are cheap; a pinned one never moves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "app/picture_scale.hpp"
 
 namespace fx {
@@ -59,6 +62,40 @@ TEST(PictureScale, DoesNotSwingBetweenTwoScales) {
     int changes = 0;
     for (std::size_t i = 200; i < scales.size(); ++i) changes += scales[i] != scales[i - 1];
     EXPECT_EQ(changes, 0) << "settled at " << s.scale();
+}
+
+TEST(PictureScale, AFrameWhoseTimeIsNotInItsPixelsKeepsItsPicture) {
+    // Lesson 02's crowd on a loaded software renderer: 500 ms of skinning whatever the size, 60 of pixels.
+    PictureScale s;
+    for (int i = 0; i < 80; ++i) s.frameTook(frameMs(s, 500, 60));
+    EXPECT_GE(s.scale(), 0.7) << "a smaller picture would save at most 60 ms of 560";
+    const PictureScale::Cost c = s.cost();
+    EXPECT_NEAR(c.fixed, 500, 5);
+    EXPECT_NEAR(c.pixels, 60, 5);
+    if (s.scale() < 1.0) {
+        EXPECT_NE(s.notice({896, 504}).find("not in its pixels"), std::string::npos) << s.notice({896, 504});
+    }
+    // Half fixed, half pixels: it goes down only as far as the pixels can give.
+    PictureScale half;
+    for (int i = 0; i < 80; ++i) half.frameTook(frameMs(half, 120, 300));
+    const double ms = frameMs(half, 120, 300);
+    EXPECT_LE(ms, kFrameBudgetMs);
+    EXPECT_GT(half.scale(), 0.3) << "120 ms fixed leave room for a third of the pixels";
+}
+
+TEST(PictureScale, NoisyFramesStillSettleWithinTheBudget) {
+    // A shared machine: every frame up to 20% off, the same way each run (a fixed pattern).
+    const double noise[] = {1.0, 1.18, 0.86, 1.05, 0.93, 1.2, 0.82, 1.1, 0.97, 1.14, 0.88};
+    PictureScale s;
+    std::vector<double> frames;
+    for (int i = 0; i < 200; ++i) {
+        const double ms = frameMs(s, 30, 1500) * noise[i % 11];
+        s.frameTook(ms);
+        frames.push_back(frameMs(s, 30, 1500));
+    }
+    std::sort(frames.begin() + 100, frames.end());
+    EXPECT_LE(frames[150], kFrameBudgetMs) << "the median of the second half, without the noise";
+    EXPECT_GT(s.scale(), 0.2);
 }
 
 TEST(PictureScale, PinnedNeverMovesAndTheKeyCycles) {
