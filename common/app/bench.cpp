@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -76,66 +77,83 @@ double frameMs(const RenderedFrame& rendered, const std::string& pass) {
     return p && p->timeMs ? *p->timeMs : 0.0;
 }
 
-// Renders `lesson` `frames` times after a warm-up, each frame after one full-screen copy: copy,
-// setting, copy, setting... A machine whose speed drifts (shared cores, clocks) moves both halves of
-// a pair together, so the per-pair ratio is steadier than either time; the medians keep the same
-// number of samples on both sides.
-Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const FrameInfo& frame, int frames,
-                 const std::vector<std::string>& effectTextures) {
-    // GPU timer results arrive a few frames late: warm up long enough that they belong to this setting.
-    const bool gpu = renderer.timer().method() == TimingMethod::GpuTimestamps;
-    const int warmUp = gpu ? 6 : 2;
-    frames = std::max(frames, 1);
-    Measured m;
-    std::vector<double> times, copies, ratios;
-    std::vector<std::string> passOrder;
-    std::map<std::string, std::vector<double>> passTimes;
-    std::map<std::string, std::pair<std::uint64_t, std::optional<double>>> modelled;  // traffic, taps
-    for (int i = 0; i < warmUp + frames; ++i) {
-        const bool last = i + 1 == warmUp + frames;
-        if (gpu) glFinish();
+// One setting measured a frame at a time: warm-up frames, then `frames` measured frames, each after
+// one full-screen copy: copy, setting, copy, setting... A machine whose speed drifts (shared cores,
+// clocks) moves both halves of a pair together, so the per-pair ratio is steadier than either time;
+// the medians keep the same number of samples on both sides. An app draws its own frames between
+// two of these (the picture holds still meanwhile, so the lesson sees the setting's frames in a row).
+class SettingMeasure {
+public:
+    SettingMeasure(bool gpu, int frames)
+        : gpu_(gpu), warmUp_(gpu ? 6 : 2), frames_(std::max(frames, 1)) {}  // GPU timer results arrive late
+
+    bool done() const { return next_ >= warmUp_ + frames_; }
+    int framesDone() const { return next_; }
+    int framesTotal() const { return warmUp_ + frames_; }
+
+    // Renders the next frame of the setting (and the copy before it).
+    void next(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const FrameInfo& frame,
+              const std::vector<std::string>& effectTextures) {
+        if (done()) return;
+        const int i = next_++;
+        const bool last = done();
+        if (gpu_) glFinish();
         const double copyMs = copy ? frameMs(renderer.render(*copy, frame, {}), "copy") : 0.0;
         FrameRequest request;
         request.readFinal = last;
         if (last) request.readNamed = effectTextures;
-        if (gpu) glFinish();
+        if (gpu_) glFinish();
         RenderedFrame rendered = renderer.render(lesson, frame, request);
-        if (i >= warmUp) {
+        if (i >= warmUp_) {
             const double ms = rendered.passMs;
-            times.push_back(ms);
-            copies.push_back(copyMs);
-            if (copyMs > 0) ratios.push_back(ms / copyMs);  // a copy too fast to time has no ratio
+            times_.push_back(ms);
+            copies_.push_back(copyMs);
+            if (copyMs > 0) ratios_.push_back(ms / copyMs);  // a copy too fast to time has no ratio
             for (const PassRecord& p : rendered.report.passes) {
                 if (!p.timeMs) continue;
-                auto [it, fresh] = passTimes.try_emplace(p.name);
-                if (fresh) passOrder.push_back(p.name);
+                auto [it, fresh] = passTimes_.try_emplace(p.name);
+                if (fresh) passOrder_.push_back(p.name);
                 it->second.push_back(*p.timeMs);
             }
         }
         if (last) {
-            m.image = toFloatImage(rendered.finalImage);
-            m.effect = std::move(rendered.textures);
-            m.traffic = rendered.report.modelledTraffic();
-            m.tapsPerPixel = rendered.report.tapsPerOutputPixel();
+            m_.image = toFloatImage(rendered.finalImage);
+            m_.effect = std::move(rendered.textures);
+            m_.traffic = rendered.report.modelledTraffic();
+            m_.tapsPerPixel = rendered.report.tapsPerOutputPixel();
             for (const PassRecord& p : rendered.report.passes) {
-                if (p.status == PassStatus::Runs) modelled[p.name] = {p.traffic.total(), p.taps};
+                if (p.status == PassStatus::Runs) modelled_[p.name] = {p.traffic.total(), p.taps};
             }
         }
     }
-    m.medianMs = median(times);
-    m.copyMs = median(copies);
-    if (!ratios.empty()) {
-        m.multiple = median(ratios);
-        m.minMultiple = *std::min_element(ratios.begin(), ratios.end());
-        m.maxMultiple = *std::max_element(ratios.begin(), ratios.end());
+
+    // Once done: the medians, the ratios' spread and the last frame's pictures.
+    Measured result() {
+        m_.medianMs = median(times_);
+        m_.copyMs = median(copies_);
+        if (!ratios_.empty()) {
+            m_.multiple = median(ratios_);
+            m_.minMultiple = *std::min_element(ratios_.begin(), ratios_.end());
+            m_.maxMultiple = *std::max_element(ratios_.begin(), ratios_.end());
+        }
+        for (const std::string& name : passOrder_) {
+            const double ms = median(passTimes_[name]);
+            const auto& [traffic, taps] = modelled_[name];
+            m_.passes.push_back({name, ms, m_.copyMs > 0 ? ms / m_.copyMs : 0.0, traffic, taps});
+        }
+        return std::move(m_);
     }
-    for (const std::string& name : passOrder) {
-        const double ms = median(passTimes[name]);
-        const auto& [traffic, taps] = modelled[name];
-        m.passes.push_back({name, ms, m.copyMs > 0 ? ms / m.copyMs : 0.0, traffic, taps});
-    }
-    return m;
-}
+
+private:
+    bool gpu_;
+    int warmUp_, frames_;
+    int next_ = 0;
+    Measured m_;
+    std::vector<double> times_, copies_, ratios_;
+    std::vector<std::string> passOrder_;
+    std::map<std::string, std::vector<double>> passTimes_;
+    std::map<std::string, std::pair<std::uint64_t, std::optional<double>>> modelled_;  // traffic, taps
+};
 
 // A setting's time, its cost in copies, and its error against the reference: the final image, and
 // the lesson's effect texture when both frames captured it.
@@ -193,6 +211,7 @@ struct KnobSweep::Impl {
     std::size_t nextRow = 0;
     bool referenceDone = false;
     Measured reference;
+    std::optional<SettingMeasure> underWay;  // the reference image or row nextRow, a frame at a time
 
     Impl(Lesson& l, ParamSet& p, FrameRenderer& r, SweepOptions o)
         : lesson(l), params(p), renderer(r), options(std::move(o)) {}
@@ -207,7 +226,7 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
     : impl_(std::make_unique<Impl>(lesson, params, renderer, std::move(options))) {
     Impl& s = *impl_;
     result_.lesson = std::move(lessonName);
-    Size2D size = context.framebufferSize();
+    Size2D size = s.options.size.empty() ? context.framebufferSize() : s.options.size;
     result_.width = size.width;
     result_.height = size.height;
     result_.timingMethod = std::string(toString(renderer.timer().method()));
@@ -275,37 +294,48 @@ SweepProgress KnobSweep::progress() const {
         const Row& r = s.rows[s.nextRow];
         p.next = cat(r.knob->name, " = ", r.text);
     }
+    if (s.underWay) {
+        p.frame = s.underWay->framesDone();
+        p.frames = s.underWay->framesTotal();
+    }
     return p;
 }
 
 void KnobSweep::next() {
     Impl& s = *impl_;
     if (done()) return;
-    s.report(progress());
+    const bool gpu = s.renderer.timer().method() == TimingMethod::GpuTimestamps;
+    if (!s.underWay) {
+        s.report(progress());
+        s.underWay.emplace(gpu, result_.frames);
+    }
+    // The setting for this frame only: frames drawn between two slices show the user's settings. A
+    // separate reference algorithm is rendered with every knob at its reference value too.
     setKnobsToReference(s.params);
-    if (!s.referenceDone) {
-        // A separate reference algorithm is rendered with every knob at its reference value too.
-        s.lesson.setBenchReference(!s.lesson.benchReferenceName().empty());
-        s.reference = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
-                              s.effect);
-        s.lesson.setBenchReference(false);
+    const Row* row = s.referenceDone ? &s.rows[s.nextRow] : nullptr;
+    if (row && !row->referenceAlgorithm) row->knob->set(row->value);
+    s.lesson.setBenchReference(row ? row->referenceAlgorithm : !s.lesson.benchReferenceName().empty());
+    s.underWay->next(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, s.effect);
+    s.lesson.setBenchReference(false);
+    s.params.restore(s.saved);
+    if (!s.underWay->done()) return;
+
+    Measured m = s.underWay->result();
+    s.underWay.reset();
+    if (!row) {
+        s.reference = std::move(m);
         s.referenceDone = true;
     } else {
         // Every row, the reference row included, is rendered and timed afresh and compared with the
         // reference image taken first: the reference row's zero error is a measurement (the frame is
         // reproducible), not a copy of the reference's own numbers.
-        const Row& row = s.rows[s.nextRow++];
-        if (!row.referenceAlgorithm) row.knob->set(row.value);
-        s.lesson.setBenchReference(row.referenceAlgorithm);
-        Measured m = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
-                             s.effect);
-        s.lesson.setBenchReference(false);
+        ++s.nextRow;
         SweepPoint point;
-        point.knob = row.knob->name;
-        point.value = row.text;
-        point.reference = row.isReference;
-        point.current = !row.referenceAlgorithm && s.current.contains(row.knob->name) &&
-                        s.current[row.knob->name] == point.value;
+        point.knob = row->knob->name;
+        point.value = row->text;
+        point.reference = row->isReference;
+        point.current = !row->referenceAlgorithm && s.current.contains(row->knob->name) &&
+                        s.current[row->knob->name] == point.value;
         fillMeasurement(point, m, s.reference);
         result_.points.push_back(std::move(point));
         // The unit of the whole run: the median of every row's copies.
@@ -313,7 +343,6 @@ void KnobSweep::next() {
         for (const SweepPoint& p : result_.points) copies.push_back(p.copyMs);
         result_.copyMs = median(copies);
     }
-    s.params.restore(s.saved);
     if (done()) s.report(progress());
 }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "app/lesson_text_files.hpp"
+#include "app/picture_scale.hpp"
 #include "base/log.hpp"
 #include "base/message_text.hpp"
 #include "render/frame_report.hpp"
@@ -137,6 +138,53 @@ Status parseTimeStep(RunOptions& o, const FlagUse& use) {
     return Status::success();
 }
 
+// auto, a percentage (40%) or a share (0.4), from 10% to 100%.
+Status parsePictureScale(RunOptions& o, const FlagUse& use) {
+    std::string v = use.value;
+    if (v == "auto") {
+        o.pictureScale.reset();
+        return Status::success();
+    }
+    const bool percent = !v.empty() && v.back() == '%';
+    if (percent) v.pop_back();
+    char* end = nullptr;
+    double s = std::strtod(v.c_str(), &end);
+    if (percent) s /= 100.0;
+    if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(s) || s < 0.1 || s > 1.0) {
+        return Error{cat(use.flag,
+                         ": expected auto, or a share of the picture from 0.1 to 1 (or 10% to 100%), got \"",
+                         use.value, "\"")};
+    }
+    o.pictureScale = s;
+    return Status::success();
+}
+
+// W:H (16:9, 4:3), a ratio (1.85) or free.
+Status parseAspect(RunOptions& o, const FlagUse& use) {
+    const std::string& v = use.value;
+    if (v == "free") {
+        o.aspect = 0.0;
+        return Status::success();
+    }
+    Error expected{
+        cat(use.flag, ": expected W:H (16:9), a ratio from 0.1 to 10 (1.85) or free, got \"", v, "\"")};
+    const auto colon = v.find(':');
+    double ratio = 0;
+    if (colon != std::string::npos) {
+        auto w = parseWhole(std::string_view(v).substr(0, colon), 1, kMaxSize, use.flag, "a width");
+        auto h = parseWhole(std::string_view(v).substr(colon + 1), 1, kMaxSize, use.flag, "a height");
+        if (!w || !h) return expected;
+        ratio = double(*w) / double(*h);
+    } else {
+        char* end = nullptr;
+        ratio = std::strtod(v.c_str(), &end);
+        if (v.empty() || end != v.c_str() + v.size()) return expected;
+    }
+    if (!std::isfinite(ratio) || ratio < 0.1 || ratio > 10) return expected;
+    o.aspect = ratio;
+    return Status::success();
+}
+
 Status addParam(RunOptions& o, const FlagUse& use) {
     // Only the shape here: names, types and ranges are checked once the lesson's parameters are known.
     if (use.value.find('=') == std::string::npos || use.value.front() == '=') {
@@ -260,8 +308,26 @@ const std::vector<Flag>& flags() {
          .apply = nonEmpty(&RunOptions::shaderDump, "a path")},
         {.name = "--time-step",
          .value = "S",
-         .help = "fixed time step in seconds (headless runs always use one; default 1/60)",
+         .help = "the lesson clock's step in seconds: every frame moves it one step, in a window as\n"
+                 "headless, however long the frame takes (default 1/60)",
          .apply = parseTimeStep},
+        {.name = "--picture-scale",
+         .value = "auto|S",
+         .help = cat("in a window (and with --overlay): render the picture at this share of its place\n"
+                     "(0.1 to 1, or 10% to 100%) instead of the automatic scale that keeps a frame\n"
+                     "within the frame budget (",
+                     int(kFrameBudgetMs), " ms); headless without the overlay: always the size asked"),
+         .apply = parsePictureScale},
+        {.name = "--min-frame-time",
+         .value = "MS",
+         .help = "in a window: every frame takes at least MS milliseconds (it waits the rest), to see\n"
+                 "a lesson as a slow renderer shows it (the lesson clock still moves one step a frame)",
+         .apply = whole(0, 10000, "milliseconds", [](RunOptions& o, long n) { o.minFrameMs = int(n); })},
+        {.name = "--aspect",
+         .value = "W:H|free",
+         .help = "in a window (and with --overlay): the picture's aspect, letterboxed in the space the\n"
+                 "panels leave (default 16:9, the aspect the lessons' text assumes); free: the whole space",
+         .apply = parseAspect},
         {.name = "--seed",
          .value = "N",
          .help = "seed for everything random (default 1)",

@@ -46,7 +46,7 @@ struct RunOptions {
     std::filesystem::path reportFile;  // --report FILE
     std::filesystem::path graphFile;   // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
     std::filesystem::path shaderDump;  // --dump-shaders DIR: every shader as compiled (gl/shader_dump.hpp)
-    std::optional<double> timeStep;    // --time-step S (fixed step; default 1/60 s headless)
+    std::optional<double> timeStep;    // --time-step S (the lesson clock's step; default 1/60 s)
     std::uint32_t seed = 1;            // --seed N
     std::vector<std::string> params;   // --param name=value, checked once the lesson is known
     std::filesystem::path presetFile;  // --preset FILE
@@ -63,7 +63,10 @@ struct RunOptions {
     std::vector<ScriptedPress> presses;         // --press KEY@FRAME
     std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
     bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K
-    std::filesystem::path resourceLog;  // --resource-log FILE: memory and GL objects (app/resource_log.hpp)
+    std::filesystem::path resourceLog;   // --resource-log FILE: memory and GL objects (app/resource_log.hpp)
+    std::optional<double> pictureScale;  // --picture-scale S: pinned; nothing: automatic (a window)
+    double aspect = 16.0 / 9.0;          // --aspect W:H: the picture's aspect; 0: free
+    int minFrameMs = 0;                  // --min-frame-time MS: a slow renderer, imitated
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

@@ -86,6 +86,15 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         auto report = buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal);
         if (record.lastLayout)
             report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
+        report["clock"] = {
+            {"seconds", record.clockSeconds}, {"steps", record.clockSteps}, {"paused", record.clockPaused}};
+        if (const auto& p = record.lastPictureScale) {
+            // The picture's place (its aspect kept) and the size the lesson rendered at within it.
+            report["picture"] = {{"place", {p->place.width, p->place.height}},
+                                 {"rendered", {p->rendered.width, p->rendered.height}},
+                                 {"scale", p->scale},
+                                 {"automatic", p->automatic}};
+        }
         auto json = report.dump(2) + "\n";
         if (auto written = writeOutput(plan.reportFile, json); !written) {
             log::error(written.error());

@@ -95,10 +95,12 @@ std::optional<int> loadLessonScene(RunSession& s) {
         std::cerr << s.exe << ": " << applied.error() << "\n";
         return 2;
     }
-    if (auto unused = s.params.unusedSettings(settings); !unused.empty()) {
+    if (auto unused = s.params.unusedSettings(settings, sceneSettingDefaults()); !unused.empty()) {
         std::string list;
         for (const std::string& setting : unused) list += (list.empty() ? "" : ", ") + setting;
-        log::info(sceneFile.filename().string(), ": no parameter of this lesson starts from ", list);
+        log::info(sceneFile.filename().string(),
+                  ": this lesson reads other settings of the same effect, but none of ", list,
+                  " (no parameter of this lesson starts from it)");
     }
     return std::nullopt;
 }

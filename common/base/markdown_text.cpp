@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace fx::markdown {
 namespace {
@@ -137,6 +142,42 @@ char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length) {
     return c;
 }
 
+namespace {
+
+// Every balanced pair of `open` and `close` in a text (nested pairs counted; an escaped bracket
+// counts for nothing), found in one pass and looked up by where it opens. A search from every bracket
+// would read the rest of the text each time: hours for a few megabytes of unclosed "[".
+class BalancedPairs {
+public:
+    BalancedPairs(std::string_view text, char open, char close) {
+        if (text.size() >= std::numeric_limits<std::uint32_t>::max()) return;  // files are far smaller
+        std::vector<std::uint32_t> opened;
+        for (std::size_t i = 0; i < text.size(); ++i) {
+            if (text[i] == '\\' && i + 1 < text.size()) {
+                ++i;
+            } else if (text[i] == open) {
+                opened.push_back(std::uint32_t(i));
+            } else if (text[i] == close && !opened.empty()) {
+                pairs_.push_back({opened.back(), std::uint32_t(i)});
+                opened.pop_back();
+            }
+        }
+        std::sort(pairs_.begin(), pairs_.end());
+    }
+
+    // The index of the `close` that balances the `open` at text[at], or npos.
+    std::size_t closeOf(std::size_t at) const {
+        const auto it =
+            std::lower_bound(pairs_.begin(), pairs_.end(), std::pair{std::uint32_t(at), std::uint32_t(0)});
+        return it != pairs_.end() && it->first == at ? it->second : std::string_view::npos;
+    }
+
+private:
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+};
+
+}  // namespace
+
 std::vector<Span> parseSpans(std::string_view text) {
     std::vector<Span> spans;
     std::string plain;
@@ -148,23 +189,9 @@ std::vector<Span> parseSpans(std::string_view text) {
         flush();
         spans.push_back({style, std::string(s)});
     };
-    // Where the next "](" is, the last "[" before it and the ")" after it: found once and kept while the
-    // reading is before it, so a line of many "[" is read in one pass (searching afresh from every "["
-    // took hours for a few megabytes of them).
-    struct LinkEnd {
-        std::size_t closeBracket = 0, lastOpen = 0, closeParen = 0;
-        bool known = false;
-    } link;
-    // The last search for ")": from `parenFrom` the first one is at `parenAt` (npos: none), which holds
-    // for any search starting between the two.
-    std::size_t parenFrom = std::string_view::npos, parenAt = 0;
-    auto closeParenFrom = [&](std::size_t from) {
-        if (parenFrom == std::string_view::npos || from < parenFrom || from > parenAt) {
-            parenFrom = from;
-            parenAt = text.find(')', from);
-        }
-        return parenAt;
-    };
+    // A link's or picture's label may hold brackets of its own ("[0, 1]"): its "]" is the one that
+    // balances the "[", and the target's ")" the one that balances its "(".
+    std::optional<BalancedPairs> brackets, parens;  // found on the first "[" (most text has none)
     std::size_t i = 0;
     while (i < text.size()) {
         const char c = text[i];
@@ -206,18 +233,17 @@ std::vector<Span> parseSpans(std::string_view text) {
         if (c == '[' || startsWith(rest, "![")) {
             const bool picture = c == '!';
             std::size_t open = i + (picture ? 1 : 0);
-            if (!link.known || (link.closeBracket != std::string_view::npos && link.closeBracket < open)) {
-                link.known = true;
-                link.closeBracket = text.find("](", open);
-                if (link.closeBracket != std::string_view::npos) {
-                    link.lastOpen = text.rfind('[', link.closeBracket);
-                    link.closeParen = closeParenFrom(link.closeBracket);
-                }
+            if (!brackets) {
+                brackets.emplace(text, '[', ']');
+                parens.emplace(text, '(', ')');
             }
-            const std::size_t closeBracket = link.closeBracket, closeParen = link.closeParen;
-            // A label holds no "[": only the last "[" before the "](" opens the link.
-            if (closeBracket != std::string_view::npos && closeParen != std::string_view::npos &&
-                link.lastOpen == open) {
+            const std::size_t closeBracket = brackets->closeOf(open);
+            const std::size_t closeParen = closeBracket != std::string_view::npos &&
+                                                   closeBracket + 1 < text.size() &&
+                                                   text[closeBracket + 1] == '('
+                                               ? parens->closeOf(closeBracket + 1)
+                                               : std::string_view::npos;
+            if (closeParen != std::string_view::npos) {
                 std::string_view label = text.substr(open + 1, closeBracket - open - 1);
                 if (picture) {
                     emit(Style::Picture, label);

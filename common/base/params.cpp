@@ -305,12 +305,21 @@ Status ParamSet::applyScene(const std::vector<SettingText>& settings, const std:
     return Status::success();
 }
 
-std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>& settings) const {
+std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>& settings,
+                                                  const std::vector<SettingText>& defaults) const {
+    // "postEffects.bloom.knee" is in the group "postEffects.bloom".
+    auto group = [](const std::string& setting) { return setting.substr(0, setting.rfind('.')); };
     std::vector<std::string> unused;
     for (const SettingText& s : settings) {
-        bool used = std::any_of(params_.begin(), params_.end(),
-                                [&](const Param& p) { return p.sceneSetting == s.setting; });
-        if (!used) unused.push_back(s.setting);
+        const bool used = std::any_of(params_.begin(), params_.end(),
+                                      [&](const Param& p) { return p.sceneSetting == s.setting; });
+        const bool atDefault = std::any_of(defaults.begin(), defaults.end(), [&](const SettingText& d) {
+            return d.setting == s.setting && d.text == s.text;
+        });
+        const bool groupRead = std::any_of(params_.begin(), params_.end(), [&](const Param& p) {
+            return !p.sceneSetting.empty() && group(p.sceneSetting) == group(s.setting);
+        });
+        if (!used && !atDefault && groupRead) unused.push_back(s.setting);
     }
     return unused;
 }

@@ -232,14 +232,21 @@ std::vector<std::shared_ptr<ReloadableProgram::State>> ProgramRegistry::live() c
     return out;
 }
 
-void ProgramRegistry::reloadAll() {
+int ProgramRegistry::reloadAll() {
     std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
-    for (auto& p : live()) (void)p->reload();
+    int reloaded = 0;
+    for (auto& p : live()) {
+        (void)p->reload();
+        ++reloaded;
+    }
+    return reloaded;
 }
 
-void ProgramRegistry::reloadChanged() {
+int ProgramRegistry::reloadChanged() {
     std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
-    for (auto& p : live()) p->reloadIfChanged();
+    int reloaded = 0;
+    for (auto& p : live()) reloaded += p->reloadIfChanged() ? 1 : 0;
+    return reloaded;
 }
 
 std::vector<std::string> ProgramRegistry::errors() const {

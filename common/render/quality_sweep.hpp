@@ -61,16 +61,23 @@ enum class BenchCost { time, traffic };
 // the next one is.
 struct SweepProgress {
     int done = 0, total = 0;
-    std::string next;  // "levels = 4", empty when done
+    std::string next;           // "levels = 4", empty when done
+    int frame = 0, frames = 0;  // of the row under way: frames rendered, of how many (0 of 0: none)
+    // The share of the whole sweep done, rows and the row under way's frames.
+    double fraction() const {
+        if (total <= 0) return 0.0;
+        return (done + (frames > 0 ? double(frame) / frames : 0.0)) / total;
+    }
 };
 
-// A sweep measured a row at a time, so an app can draw frames (and a progress bar) between rows and
-// stop early: dropping it mid-way puts the parameters back (app/bench.hpp: KnobSweep).
+// A sweep measured a slice at a time (one frame of a row), so an app can draw its own frames (and a
+// progress bar) between slices and stop early: dropping it mid-way puts the parameters back
+// (app/bench.hpp: KnobSweep).
 class SweepRun {
 public:
     virtual ~SweepRun() = default;
     virtual bool done() const = 0;
-    virtual void next() = 0;  // measures one row
+    virtual void next() = 0;  // measures one slice (a row is done after several)
     virtual SweepProgress progress() const = 0;
     virtual const SweepResult& result() const = 0;
 };

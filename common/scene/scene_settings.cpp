@@ -34,13 +34,18 @@ std::vector<SettingText> sceneSettings(const Scene& scene) {
     return settings;
 }
 
-std::vector<std::string> sceneSettingPaths() {
-    std::vector<std::string> paths = postEffectSettingPaths();
+std::vector<SettingText> sceneSettingDefaults() {
     Scene everything;
+    everything.postEffects = {BloomSettings{}, ColorMatrixSettings{}, RadialBlurSettings{},
+                              DepthOfFieldSettings{}, ToneMapSettings{}};
     everything.camera.lens = Lens{};
     everything.clouds.push_back(CloudLayer{});
-    for (SettingText& s : cameraLensSettings(everything.camera.lens)) paths.push_back(std::move(s.setting));
-    for (SettingText& s : cloudLayerSettings(everything.clouds)) paths.push_back(std::move(s.setting));
+    return sceneSettings(everything);
+}
+
+std::vector<std::string> sceneSettingPaths() {
+    std::vector<std::string> paths;
+    for (SettingText& s : sceneSettingDefaults()) paths.push_back(std::move(s.setting));
     return paths;
 }
 

@@ -16,6 +16,8 @@ namespace fx {
 std::vector<SettingText> sceneSettings(const Scene& scene);
 // Every path sceneSettings can name, whether this scene has the setting or not.
 std::vector<std::string> sceneSettingPaths();
+// Every setting at the value a scene file that leaves the field out gets.
+std::vector<SettingText> sceneSettingDefaults();
 
 // The parts: {"camera.lens.focalLength", "50"}...; {"clouds[0].bottom", "0"}, {"clouds[0].steps", "8"}...
 std::vector<SettingText> cameraLensSettings(const std::optional<Lens>& lens);

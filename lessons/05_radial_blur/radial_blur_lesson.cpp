@@ -67,11 +67,13 @@ void RadialBlurLesson::declareParams(ParamSet& params) {
     params
         .addFloat("start", &start_, 0.0f, 2.0f,
                   "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
-        .fromScene("postEffects.radialBlur.start");
+        .fromScene("postEffects.radialBlur.start")
+        .inSteps({ChapterStart, Guarded, SampleCount});
     Param& samples = params.addInt("samples", &samples_, 1, kRadialBlurMaxSamples,
                                    "Step 4: taps per pixel, spread over the chapter's 8-tap streak");
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
     samples.fromScene("postEffects.radialBlur.taps");
+    samples.inSteps({SampleCount});
 }
 
 Status RadialBlurLesson::init(const Scene& scene) {

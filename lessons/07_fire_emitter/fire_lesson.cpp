@@ -60,15 +60,19 @@ void FireLesson::declareParams(ParamSet& params) {
     workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
     params.addFloat("spin", &spin_, -720.0f, 720.0f,
                     "Degrees per second the fire's sprites turn (the chapter's exercise: 120)");
-    params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)");
-    params.addBool("sort", &sort_, "Steps 2 and 3: draw back to front (the fix for the spawn order)");
+    params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)")
+        .inSteps({Hitch});
+    params.addBool("sort", &sort_, "Steps 2 and 3: draw back to front (the fix for the spawn order)")
+        .inSteps({Hitch, Instanced});
     Param& soft =
         params.addFloat("soft_distance", &soft_, 0.01f, 4.0f,
                         "Step 5: the particles fade out over this distance in front of the scene (m)");
     soft.knob = Knob{{0.05, 0.1, 0.3, 1.0}, 0.3, "soft-fade distance (m)"};
+    soft.inSteps({Beyond});
     Param& offscreen = params.addChoice("offscreen", &offscreen_, {"full", "half", "quarter"},
                                         "Step 5: the resolution of the off-screen particle target");
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
+    offscreen.inSteps({Beyond});
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
     params.addFloat("threshold", &threshold_, 0.0f, 16.0f, "Bloom: brightness above which light blooms")
         .fromScene("postEffects.bloom.threshold");
@@ -278,8 +282,9 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("particleBudget", budget_.summary(), "pool slots against the device and the budget");
     out.add("replaced", std::to_string(replaced), "pool full: oldest particles replaced");
     out.add("dropped", std::to_string(system_.droppedCount()), "pool full: new particles dropped");
-    out.add("simulateCpuMs", cat(simulateMs_), "simulation on the CPU (ms)");
-    out.add("drawCpuMs", cat(drawCpuMs_), "issuing the draws on the CPU (ms)");
+    // CPU time inside the calls: on a software renderer that holds the driver's own work too.
+    out.add("simulateCpuMs", cat(simulateMs_), "simulating: CPU time in this frame's simulation calls (ms)");
+    out.add("drawCpuMs", cat(drawCpuMs_), "drawing: CPU time inside the draw calls (ms)");
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
     std::uint64_t bytes = setup_.path == Path::gpu ? gpu_.bytes() : renderer_.instanceBytes();
     out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");

@@ -48,7 +48,7 @@ public:
         bool operator==(const Setup&) const = default;
     };
     Setup setupFor(int step) const;
-    // The 0.5 s long frame of step 2 lands on this frame (the third of a run, then every 120th).
+    // The 0.5 s long frame of step 2 lands on this frame (the lesson clock's third step, then every 120th).
     bool hitchOn(const fx::FrameInfo& frame) const;
 
 private:

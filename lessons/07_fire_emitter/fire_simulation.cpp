@@ -77,7 +77,9 @@ FireLesson::Setup FireLesson::setupFor(int step) const {
 }
 
 bool FireLesson::hitchOn(const FrameInfo& frame) const {
-    return frame.step == Hitch && hitch_ > 0.0f && frame.index % 120 == 2;
+    // Counted on the lesson clock: a paused clock adds no hitch, and a window at any frame rate has its
+    // hitches on the same frames as a headless run (the third step, then every 120th).
+    return frame.step == Hitch && hitch_ > 0.0f && frame.deltaSeconds > 0 && frame.clockSteps % 120 == 3;
 }
 
 void FireLesson::configure(const Setup& setup) {

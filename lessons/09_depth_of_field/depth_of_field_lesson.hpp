@@ -13,6 +13,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "gl/texture.hpp"
 #include "scene/thin_lens.hpp"
 
 namespace lesson09 {
@@ -42,6 +43,11 @@ public:
 
 private:
     bool showsReference(int step) const { return step == Reference || (step == Beyond && benchReference_); }
+    // In a window the reference's samples are spread over frames, as many a frame as the frame budget
+    // holds, summed into referenceSum_ in the order one frame would sum them (the finished picture is
+    // the headless one). Returns the sum; `exposure` is scaled to the mean of the samples so far.
+    fx::TextureHandle declareReferenceOverFrames(fx::FrameGraph& graph, const fx::FrameInfo& frame,
+                                                 fx::DofReferenceSettings settings, float& exposure);
 
     // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
     float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
@@ -60,6 +66,13 @@ private:
     int toneCurve_ = 2;  // fx::ToneCurve::filmic
     float exposure_ = 1.0f;
     bool benchReference_ = false;
+
+    // The reference over frames (a window): its sum, what it is of, how far it is.
+    fx::gl::Texture referenceSum_;
+    std::uint64_t referenceKey_ = 0;
+    int referenceDone_ = 0;
+    int referenceSlice_ = 0;       // samples the last frame added (0: none)
+    double referenceSeconds_ = 0;  // the lesson clock's time the sum shows
 
     const fx::Scene* scene_ = nullptr;
     fx::Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)

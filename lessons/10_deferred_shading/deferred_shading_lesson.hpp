@@ -41,6 +41,7 @@ private:
     fx::GBufferLayout layoutFor(int step) const;
     bool culls(int step) const { return step >= ManyLights; }
     glm::vec3 worldOffsetFor(int step) const;
+    int lightCountFor(int step) const;  // light_count, or the step's own when it is 0
     void uploadLights(const fx::FrameInfo& frame);
     void declareDeferred(fx::FrameGraph& graph, const fx::FrameInfo& frame, fx::TextureHandle& shown,
                          std::optional<fx::SplitView>& split);
@@ -50,9 +51,9 @@ private:
     bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
     int layout_ = 0;           // fx::GBufferLayout
     int originOffset_ = 0;     // index into kOriginOffsets
-    int lightCount_ = fx::kMaxGridLights;
-    int culling_ = 1;         // 0 none, 1 tiled
-    int reflectionSize_ = 1;  // index into kReflectionFractions
+    int lightCount_ = 0;       // 0: the step's own (lightCountFor)
+    int culling_ = 1;          // 0 none, 1 tiled
+    int reflectionSize_ = 1;   // index into kReflectionFractions
     float divider_ = 0.5f;
 
     const fx::Scene* scene_ = nullptr;

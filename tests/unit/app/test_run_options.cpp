@@ -148,14 +148,32 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
             << flag << ": " << (o.ok() ? "" : o.error());
     }
     EXPECT_EQ(inHelp,
-              (std::set<std::string>{"--headless",     "--size",          "--frames",    "--step",
-                                     "--scene",        "--lang",          "--param",     "--preset",
-                                     "--capture",      "--capture-float", "--report",    "--graph",
-                                     "--time-step",    "--seed",          "--timing",    "--inspect",
-                                     "--overlay",      "--no-overlay",    "--bench",     "--knob",
-                                     "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
-                                     "--list-params",  "--help",          "--press",     "--all-steps",
-                                     "--resize",       "--resource-log",  "--cost",      "--dump-shaders"}));
+              (std::set<std::string>{
+                  "--headless",     "--size",           "--frames",       "--step",       "--scene",
+                  "--lang",         "--param",          "--preset",       "--capture",    "--capture-float",
+                  "--report",       "--graph",          "--time-step",    "--seed",       "--timing",
+                  "--inspect",      "--overlay",        "--no-overlay",   "--bench",      "--knob",
+                  "--bench-frames", "--bench-values",   "--bench-out",    "--list-steps", "--list-params",
+                  "--help",         "--press",          "--all-steps",    "--resize",     "--picture-scale",
+                  "--aspect",       "--min-frame-time", "--resource-log", "--cost",       "--dump-shaders"}));
+}
+
+TEST(RunOptions, PictureScaleAspectAndASlowRendererImitated) {
+    auto o = parseRunOptions({"--picture-scale", "40%", "--aspect", "4:3", "--min-frame-time", "150"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_DOUBLE_EQ(*o->pictureScale, 0.4);
+    EXPECT_DOUBLE_EQ(o->aspect, 4.0 / 3.0);
+    EXPECT_EQ(o->minFrameMs, 150);
+    // The defaults: automatic, 16:9, no wait.
+    o = parseRunOptions({});
+    EXPECT_FALSE(o->pictureScale.has_value());
+    EXPECT_DOUBLE_EQ(o->aspect, 16.0 / 9.0);
+    EXPECT_EQ(o->minFrameMs, 0);
+    o = parseRunOptions({"--picture-scale", "0.25", "--aspect", "free"});
+    EXPECT_DOUBLE_EQ(*o->pictureScale, 0.25);
+    EXPECT_EQ(o->aspect, 0.0);
+    EXPECT_DOUBLE_EQ(parseRunOptions({"--aspect", "1.85"})->aspect, 1.85);
+    EXPECT_FALSE(parseRunOptions({"--picture-scale", "auto"})->pictureScale.has_value());
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
@@ -213,26 +231,31 @@ TEST_P(RunOptionsErrors, NameTheFlagAndWhatItTakes) {
 
 INSTANTIATE_TEST_SUITE_P(
     All, RunOptionsErrors,
-    ::testing::Values(BadFlag{{"--size", "12"}, "--size: expected WxH with sizes from 0 to 16384"},
-                      BadFlag{{"--size", "-1x5"}, "--size"}, BadFlag{{"--size", "20000x5"}, "16384"},
-                      BadFlag{{"--frames", "0"}, "--frames: expected a frame count from 1"},
-                      BadFlag{{"--frames", "two"}, "--frames"},
-                      BadFlag{{"--step", "6"}, "--step: expected a step number from 1 to 5"},
-                      BadFlag{{"--step", "0"}, "--step: expected a step number from 1 to 5"},
-                      BadFlag{{"--lang", "fr"}, "--lang: expected one of en, ja; got \"fr\""},
-                      BadFlag{{"--graph", ""}, "--graph: needs a path"},
-                      BadFlag{{"--scene", ""}, "--scene: needs a path"},
-                      BadFlag{{"--inspect", ""}, "--inspect: needs a texture name"},
-                      BadFlag{{"--bench-frames", "0"},
-                              "--bench-frames: expected a frame count from 1 to 1000"},
-                      BadFlag{{"--time-step", "0"}, "--time-step: expected seconds greater than 0"},
-                      BadFlag{{"--time-step", "nan"}, "--time-step"}, BadFlag{{"--seed", "-3"}, "--seed"},
-                      BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
-                      BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
-                      BadFlag{{"--cost", "money"}, "--cost: expected one of time, traffic; got \"money\""},
-                      BadFlag{{"--dump-shaders", ""}, "--dump-shaders: needs a path"},
-                      BadFlag{{"--frames"}, "--frames: needs a value"},
-                      BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
+    ::testing::Values(
+        BadFlag{{"--size", "12"}, "--size: expected WxH with sizes from 0 to 16384"},
+        BadFlag{{"--size", "-1x5"}, "--size"}, BadFlag{{"--size", "20000x5"}, "16384"},
+        BadFlag{{"--frames", "0"}, "--frames: expected a frame count from 1"},
+        BadFlag{{"--frames", "two"}, "--frames"},
+        BadFlag{{"--step", "6"}, "--step: expected a step number from 1 to 5"},
+        BadFlag{{"--step", "0"}, "--step: expected a step number from 1 to 5"},
+        BadFlag{{"--lang", "fr"}, "--lang: expected one of en, ja; got \"fr\""},
+        BadFlag{{"--graph", ""}, "--graph: needs a path"}, BadFlag{{"--scene", ""}, "--scene: needs a path"},
+        BadFlag{{"--inspect", ""}, "--inspect: needs a texture name"},
+        BadFlag{{"--bench-frames", "0"}, "--bench-frames: expected a frame count from 1 to 1000"},
+        BadFlag{{"--time-step", "0"}, "--time-step: expected seconds greater than 0"},
+        BadFlag{{"--time-step", "nan"}, "--time-step"},
+        BadFlag{{"--picture-scale", "0.05"}, "--picture-scale: expected auto, or a share"},
+        BadFlag{{"--picture-scale", "150%"}, "--picture-scale"},
+        BadFlag{{"--picture-scale", "half"}, "--picture-scale"},
+        BadFlag{{"--aspect", "16:0"}, "--aspect: expected W:H"}, BadFlag{{"--aspect", "wide"}, "--aspect"},
+        BadFlag{{"--aspect", "0.01"}, "--aspect"},
+        BadFlag{{"--min-frame-time", "-5"}, "--min-frame-time: expected milliseconds"},
+        BadFlag{{"--seed", "-3"}, "--seed"}, BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
+        BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
+        BadFlag{{"--cost", "money"}, "--cost: expected one of time, traffic; got \"money\""},
+        BadFlag{{"--dump-shaders", ""}, "--dump-shaders: needs a path"},
+        BadFlag{{"--frames"}, "--frames: needs a value"},
+        BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
 
 TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto o = parseRunOptions({"--graph", "out/frame.dot"});

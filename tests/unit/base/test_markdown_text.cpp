@@ -50,6 +50,18 @@ TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
     EXPECT_EQ(styles(parseSpans("[b](y) " + labels + "](z)")), "[" + read + "]");
 }
 
+TEST(Markdown, APictureWhoseAltTextHoldsBrackets) {
+    // Lesson 10 step 3's picture: the alt text quotes an interval, the target has parentheses.
+    EXPECT_EQ(
+        styles(parseSpans("![Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8](../x (1).png) "
+                          "after")),
+        "[P:Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8][ after]");
+    EXPECT_EQ(styles(parseSpans("see [the [1] table](t.md)")), "[see the [1] table]");
+    // Unbalanced: left as text, never a crash or a lost tail.
+    EXPECT_EQ(styles(parseSpans("![open [0, 1](p.png")), "[![open [0, 1](p.png]");
+    EXPECT_EQ(styles(parseSpans("[a] (b)")), "[[a] (b)]");
+}
+
 TEST(Markdown, BlocksOfAStep) {
     auto blocks = parseBlocks(
         "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  "

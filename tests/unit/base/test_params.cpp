@@ -140,7 +140,14 @@ TEST(Params, EveryValueKnowsWhereItCameFrom) {
     EXPECT_EQ(source("threshold"), "scene");
     EXPECT_EQ(source("tone_map"), "scene");
     EXPECT_EQ(source("levels"), "default");  // the scene has no levels
-    EXPECT_EQ(params.unusedSettings(scene), std::vector<std::string>{"postEffects.bloom.knee"});
+    // The knee was written (not its default), and the lesson reads the bloom's threshold: a user could
+    // have meant it for this lesson. At its default it may never have been written: no word.
+    const std::vector<fx::SettingText> defaults{{"postEffects.bloom.knee", "0.5"},
+                                                {"postEffects.bloom.levels", "6"}};
+    EXPECT_EQ(params.unusedSettings(scene, defaults), std::vector<std::string>{"postEffects.bloom.knee"});
+    EXPECT_TRUE(params.unusedSettings({{"postEffects.bloom.knee", "0.5"}}, defaults).empty());
+    // A group the lesson reads nothing of (another lesson's effect) is none of its business.
+    EXPECT_TRUE(params.unusedSettings({{"postEffects.radialBlur.length", "0.7"}}, defaults).empty());
     ASSERT_TRUE(params.fromJson(R"({"levels": "4"})", "p.json").ok());
     EXPECT_EQ(source("levels"), "preset");
     ASSERT_TRUE(params.assign("threshold=3").ok());
