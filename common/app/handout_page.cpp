@@ -170,8 +170,41 @@ std::string pageFileFor(const std::string& language, const std::vector<std::stri
     return languages.empty() || languages.front() == language ? "index.html" : "index." + language + ".html";
 }
 
-std::string passTableHtml(const json& passes, const std::string& language) {
+namespace {
+
+// The report's cost model (trafficBytes1080p's read and written bytes, taps) as the overlay's pass
+// table words it, in one narrow column: "37.3/9" (MB at 1920x1080 / taps per pixel written). Raw
+// byte counts in two columns made a printed page wider than A4.
+json withModelColumn(const json& passes) {
+    json out = json::array();
+    for (const json& p : passes) {
+        json row = json::object();
+        for (auto it = p.begin(); it != p.end(); ++it) {
+            if (it.key() == "taps") continue;
+            if (it.key() != "trafficBytes1080p") {
+                row[it.key()] = it.value();
+                continue;
+            }
+            const json& t = it.value();
+            const bool runs = p.value("status", std::string()) == "runs";
+            if (!runs || !t.is_object()) continue;
+            const std::uint64_t bytes =
+                t.value("read", std::uint64_t(0)) + t.value("written", std::uint64_t(0));
+            const json taps = p.value("taps", json());
+            char mb[32];
+            std::snprintf(mb, sizeof mb, "%.1f", double(bytes) / 1e6);
+            row["modelledMbTaps"] = std::string(mb) + "/" + (taps.is_number() ? valueText(taps) : "-");
+        }
+        out.push_back(std::move(row));
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string passTableHtml(const json& reportPasses, const std::string& language) {
     const Words& words = wordsFor(language);
+    const json passes = withModelColumn(reportPasses);
     // The columns: every key any pass has, in the order the report writes them. "executed" says
     // again what "status" says.
     std::vector<std::string> keys;
@@ -212,6 +245,8 @@ std::string passTableHtml(const json& passes, const std::string& language) {
         out += "</tr>\n";
     }
     out += "</tbody>\n</table>\n";
+    if (std::find(columns.begin(), columns.end(), "modelledMbTaps") != columns.end())
+        out += "<p class=\"table-note\">" + escapeHtml(words.modelledColumn) + "</p>\n";
     if (!same.empty()) {
         out += "<p class=\"table-note\">" + escapeHtml(words.sameForAllPasses) + ": ";
         for (std::size_t i = 0; i < same.size(); ++i) out += (i ? "; " : "") + escapeHtml(same[i]);

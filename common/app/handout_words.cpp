@@ -19,6 +19,9 @@ const Words kEnglish{
     .sameFrame = "The frame graph and the passes are those of step ",
     .sameFrameEnd = ".",
     .sameForAllPasses = "for every pass",
+    .modelledColumn =
+        "MB/taps: the cost model's memory traffic at 1920x1080 in MB / texture lookups per "
+        "pixel written (docs/frame-graph.md)",
     .bench = "What accuracy costs, measured by the bench",
     .benchMeasured = "Measured by ./fxlab bench at ",
     .benchMissing =
@@ -51,6 +54,10 @@ const Words kJapanese{
     .sameFrame = "フレームグラフとパスはステップ ",
     .sameFrameEnd = " と同じです。",
     .sameForAllPasses = "すべてのパスで同じ",
+    .modelledColumn =
+        "MB/タップ：コストモデルによる 1920x1080 でのメモリ転送量（MB）／書き込む 1 "
+        "ピクセルあたりのテクスチャ参照数"
+        "（docs/frame-graph.md）",
     .bench = "精度のコスト（ベンチの計測）",
     .benchMeasured = "./fxlab bench による計測：",
     .benchMissing =
@@ -87,6 +94,7 @@ std::string columnName(const std::string& key, const std::string& language) {
         {"writes", {"writes", "書くテクスチャ"}},
         {"stateLeft", {"state left for the next pass", "次のパスに残したステート"}},
         {"stateInherited", {"state inherited", "引き継いだステート"}},
+        {"modelledMbTaps", {"MB/taps", "MB/タップ"}},
     };
     if (auto it = known.find(key); it != known.end())
         return language == "ja" ? it->second.second : it->second.first;

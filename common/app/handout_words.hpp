@@ -20,6 +20,7 @@ struct Words {
     std::string sameFrame;         // "The frame graph and the passes are those of step " + N
     std::string sameFrameEnd;      // after the number
     std::string sameForAllPasses;  // a column whose value is the same in every row: "for every pass"
+    std::string modelledColumn;    // what the pass table's MB/taps column is
     std::string bench;             // the bench's section
     std::string benchMeasured;     // "Measured by ./fxlab bench at " + size + ...
     std::string benchMissing;      // no bench output: how to make it
