@@ -72,17 +72,12 @@ TEST_F(CloudsOnGl, TheObjectShadowDarkensByHalfOfMinSOneAndOffTheMapCountsAsLit)
     EXPECT_NEAR(lightAt(cameraAt({400.0f, 12.0f, 400.0f}, 0, -89.9f), 8, thin), 1.0f, 1e-3f);
 }
 
-class CloudDrift : public CloudsOnGl {
+class CloudDrift : public CloudsWithTheGeneratedTexture {
 protected:
     void SetUp() override {
-        CloudsOnGl::SetUp();
-        auto loaded = CloudDensityTexture::load((resourceDir() / "textures/cloud_density.png").string());
-        ASSERT_TRUE(loaded) << loaded.error();
-        texture = std::move(*loaded);
-        SceneLoadOptions options;
-        options.assetRoot = resourceDir();
-        auto scene = loadScene(resourceDir() / "scenes/08_clouds.json", options);
-        ASSERT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error());
+        CloudsWithTheGeneratedTexture::SetUp();
+        auto scene = lessonScene();
+        ASSERT_TRUE(scene.ok());
         ASSERT_FALSE(scene->clouds.empty());
         layer = scene->clouds.front();
     }
@@ -95,7 +90,6 @@ protected:
         return run(s, kW, kH, texture);
     }
     static constexpr int kW = 32, kH = 20;
-    CloudDensityTexture texture;
     CloudLayer layer;
 };
 

@@ -129,17 +129,6 @@ TEST_F(CloudsOnGl, TheSunStraightOverheadShadowsTheCloudUnderAPillar) {
     EXPECT_GT(light(w - 3, h - 3), 0.95f);
 }
 
-class CloudsWithTheGeneratedTexture : public CloudsOnGl {
-protected:
-    void SetUp() override {
-        CloudsOnGl::SetUp();
-        auto loaded = CloudDensityTexture::load((resourceDir() / "textures/cloud_density.png").string());
-        ASSERT_TRUE(loaded) << loaded.error();
-        texture = std::move(*loaded);
-    }
-    CloudDensityTexture texture;
-};
-
 TEST_F(CloudsWithTheGeneratedTexture, ACamera10KmFromTheOriginSeesTheSameClouds) {
     // 1/256 and 1/128 repeats per metre: 10.24 km is a whole number of repeats of both layers.
     const int w = 24, h = 16;

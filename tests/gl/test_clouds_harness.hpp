@@ -121,15 +121,21 @@ protected:
         return gl::readTexture(color);
     }
 
+    // Lesson 08's scene as shipped (a failed load fails the test).
+    static Result<Scene> lessonScene() {
+        SceneLoadOptions options;
+        options.assetRoot = resourceDir();
+        auto loaded = loadScene(resourceDir() / "scenes/08_clouds.json", options);
+        EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
+        return loaded;
+    }
+
     // The pass with object shadows from lesson 08's scene, its sun turned straight down (hard case 14),
     // over a colour target cleared to 0 and sky depth (1) everywhere. kPillar stands in the slab.
     static constexpr glm::vec3 kPillar{3.0f, 0.0f, -6.0f};  // "pillar 1": 1.2 m square, 5 m tall
     FloatImage runUnderTheSun(const CloudFrameSettings& settings, int width, int height,
                               const CloudDensityTexture& density) {
-        SceneLoadOptions options;
-        options.assetRoot = resourceDir();
-        auto loaded = loadScene(resourceDir() / "scenes/08_clouds.json", options);
-        EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
+        auto loaded = lessonScene();
         if (!loaded.ok()) return {};
         Scene scene = std::move(*loaded);
         scene.lights.at(0).direction = {0.0f, -1.0f, 0.0f};
@@ -176,6 +182,18 @@ protected:
     TexturePool pool{allocator};
     PassTimer timer{TimingMode::Off, ""};
     GlPassExecutor executor{timer, {0, true}};
+};
+
+// The cloud density texture the lessons ship (res/textures/cloud_density.png).
+class CloudsWithTheGeneratedTexture : public CloudsOnGl {
+protected:
+    void SetUp() override {
+        CloudsOnGl::SetUp();
+        auto loaded = CloudDensityTexture::load((resourceDir() / "textures/cloud_density.png").string());
+        ASSERT_TRUE(loaded) << loaded.error();
+        texture = std::move(*loaded);
+    }
+    CloudDensityTexture texture;
 };
 
 }  // namespace fx::test
