@@ -71,7 +71,7 @@ private:
     fx::gl::Texture referenceSum_;
     std::uint64_t referenceKey_ = 0;
     int referenceDone_ = 0;
-    int referenceSlice_ = 0;      // samples the last frame added (0: none)
+    int referenceSlice_ = 0;       // samples the last frame added (0: none)
     double referenceSeconds_ = 0;  // the lesson clock's time the sum shows
 
     const fx::Scene* scene_ = nullptr;
