@@ -4,6 +4,8 @@
 // evaluation of the same formula; the octahedral code; the position error of the fat and compact
 // layouts 1,000 and 10,000 m from the origin. Framebuffers that would lose writes silently and the
 // lecture's targets are in test_deferred_targets.cpp.
+#include "effects/deferred/light_evaluations.hpp"
+#include "effects/deferred/tiled_culling.hpp"
 #include "test_deferred_harness.hpp"
 
 using namespace fx;
@@ -175,4 +177,37 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     EXPECT_LT(compact0, 0.01f);
     EXPECT_LT(compact1k, fat1k / 10);
     EXPECT_LT(compact10k, fat10k / 10);
+}
+
+// Hard case 20 on the lesson's scene (step 6: 1024 lamps of radius 1.1 m over the yard) at 320 x 180:
+// without culling every pixel evaluates every light, W x H x N = 59 million; the tiles' lists, read back
+// from cull.heat, leave a few lights a pixel.
+TEST_F(DeferredHardCases, ManyLightsCostWidthTimesHeightTimesLightsUnlessCulled) {
+    auto scene = loadShippedScene();
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    SceneMeshes meshes(*scene);
+    GBufferPass gbuffer = GBufferPass::create();
+    TiledCulling culling = TiledCulling::create();
+    ASSERT_TRUE(culling.usable());
+    lights.upload(gpuPointLights(allLights(*scene), kMaxGridLights));
+    ASSERT_EQ(lights.count(), 1024);
+    const Size2D size{320, 180};
+    GraphRunner runner(size.width, size.height);
+    FloatImage heat = runner.run(size, [&](FrameGraph& graph) {
+        GBufferTargets g = gbuffer.declare(graph, *scene, meshes, 0.0, {GBufferLayout::compact, false, {}});
+        return culling.declare(graph, *scene, g, lights).heat;
+    });
+    ASSERT_FALSE(heat.empty());
+    ASSERT_EQ(heat.width, tileCount(size).width);
+    std::vector<float> perTile;
+    for (int y = 0; y < heat.height; ++y)
+        for (int x = 0; x < heat.width; ++x) perTile.push_back(heat.texel(x, y, 0));
+    const std::int64_t naive = naiveLightEvaluations(size, lights.count());
+    const std::int64_t tiled = tiledLightEvaluations(size, perTile);
+    std::printf(
+        "light evaluations at 320 x 180 with 1024 lights: %lld without culling, %lld tiled (%.1f a pixel)\n",
+        (long long)naive, (long long)tiled, double(tiled) / (size.width * size.height));
+    EXPECT_EQ(naive, 320LL * 180 * 1024);
+    EXPECT_GT(tiled, 0);
+    EXPECT_LT(tiled * 20, naive);  // the lamps reach 1.1 m: a tile sees a few dozen at most
 }
