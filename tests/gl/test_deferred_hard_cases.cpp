@@ -88,6 +88,45 @@ TEST_F(DeferredHardCases, LightingMatchesTheFormulaForEveryKindOfNormal) {
     EXPECT_EQ(texel(out, 5), glm::vec3(0));  // ... and a missing normal is not lit at all
 }
 
+// Hard case 3: shininess 0 and huge. Pixel 1 faces away from the eye with its light straight out along
+// the normal, so the half vector l + v is zero and n.h is 0: pow(0, 0), which GLSL leaves undefined
+// (llvmpipe's NaN turns the pixel black once the pass maps NaN to 0). The shader takes an exponent of 0 as
+// a flat highlight (1 everywhere, the limit of x^s for s -> 0) and a huge one underflows to the limit, 0
+// below n.h = 1; both match the CPU formula at every kind of normal.
+TEST_F(DeferredHardCases, ShininessZeroAndHugeMatchTheirLimits) {
+    Scene scene = darkScene();
+    std::vector<glm::vec2> codes;
+    std::vector<GpuPointLight> pointLights;
+    std::vector<glm::vec3> normals;
+    for (int x = 0; x < kW; ++x) {
+        glm::vec3 toEye = glm::normalize(scene.camera.position - worldAt(scene, x));
+        glm::vec3 n = x == 1   ? -toEye
+                      : x == 2 ? glm::vec3(0, 1, 0)
+                      : x == 3 ? glm::normalize(glm::vec3(1, 0, 1))
+                               : toEye;
+        normals.push_back(n);
+        codes.push_back(octahedralEncode(n));
+        pointLights.push_back({glm::vec4(worldAt(scene, x) + 0.4f * n, 1.0f), glm::vec4(2, 1, 0.5f, 0)});
+    }
+    for (float shininess : {0.0f, 1e30f}) {
+        lighting = DeferredLighting::create(shininess);
+        FloatImage out = light(scene, codes, pointLights);
+        ASSERT_FALSE(out.empty());
+        ASSERT_TRUE(finite(out));
+        for (int x = 0; x < kW; ++x) {
+            glm::vec2 code = codes[std::size_t(x)];
+            glm::vec3 stored = octahedralDecode({glm::unpackHalf1x16(glm::packHalf1x16(code.x)),
+                                                 glm::unpackHalf1x16(glm::packHalf1x16(code.y))});
+            glm::vec3 want(0);
+            for (const GpuPointLight& l : pointLights)
+                want += expectedLight(scene, worldAt(scene, x), stored, l, shininess);
+            expectNear(texel(out, x), want, cat("shininess ", shininess, ", pixel ", x).c_str());
+        }
+        // Pixel 1 (n.h = 0): lit, with the flat highlight at exponent 0 and none at a huge one.
+        EXPECT_GT(texel(out, 1).r, 0.1f) << "shininess " << shininess;
+    }
+}
+
 TEST_F(DeferredHardCases, RadiusZeroAddsNothingAndALightInsideTheSurfaceIsBounded) {
     Scene scene = darkScene();
     std::vector<glm::vec2> codes(kW, octahedralEncode(glm::vec3(0, 1, 0)));
