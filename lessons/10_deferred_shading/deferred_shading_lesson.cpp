@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
+#include "effects/deferred/light_evaluations.hpp"
 
 namespace lesson10 {
 
@@ -293,6 +294,8 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         Size2D tiles = tileCount(frame.size);
         out.add("tiles", cat(tiles.width, " x ", tiles.height),
                 cat("tiles of ", kTileSize, " x ", kTileSize));
+        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_.count())),
+                "light evaluations without culling (W x H x N)");
     }
     if (frame.previousFrame) {
         out.add("lightingMs", cat(lightingGroup_.timeMs(*frame.previousFrame)), "lighting pass (ms)");

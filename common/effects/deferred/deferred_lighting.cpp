@@ -1,6 +1,7 @@
 #include "effects/deferred/deferred_lighting.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -26,15 +27,18 @@ int gbufferTaps(const GBufferTargets& g) {
 
 }  // namespace
 
-DeferredLighting DeferredLighting::create() {
-    return DeferredLighting();
+DeferredLighting DeferredLighting::create(float shininess) {
+    DeferredLighting lighting;
+    lighting.shininess_ = shininess;
+    return lighting;
 }
 
 const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
     const int n = static_cast<int>(layout);
     std::optional<FullscreenPass>& slot = passes_[n * 2 + (tiled ? 1 : 0)];
     if (!slot) {
-        std::string defines = cat("#define LAYOUT ", n, "\n");
+        std::string defines =
+            cat("#define LAYOUT ", n, "\n#define SHININESS ", std::to_string(shininess_), "\n");
         if (tiled)
             defines += cat("#define TILED 1\n#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ",
                            kMaxTileLights, "\n");

@@ -76,9 +76,10 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
     const MirrorPlane m = mirror.value_or(MirrorPlane{});
     Pass& pass =
         graph.addPass("planar reflection", [reflect, buffer, &scene, &meshes, seconds, m](PassContext& ctx) {
-            // The same projection as the camera's (the same aspect: the target is a fraction of the output),
-            // the view mirrored in the plane.
-            Size2D size = ctx.targetSize();
+            // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
+            // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
+            // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
+            Size2D size = ctx.outputSize();
             CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
             glm::mat4 r = reflectionMatrix(m.plane);
             camera.view = camera.view * r;

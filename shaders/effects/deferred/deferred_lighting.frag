@@ -23,7 +23,7 @@ layout(location = 24) uniform int tilesX;
 layout(location = 0) out vec4 color;
 
 const float kSpecular = 0.3;
-const float kShininess = 40.0;
+const float kShininess = SHININESS;  // 40 in the lessons (DeferredLighting::create)
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
