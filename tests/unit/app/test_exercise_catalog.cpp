@@ -1,0 +1,158 @@
+// The exercises' data and the student's side of them, without GL: every shipped exercise loads, a
+// bad exercise.json names its file and field, start copies a starter and never overwrites work, the
+// progress file round-trips, and the watchdog ends a child that does not finish.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <thread>
+
+#include "app/child_watchdog.hpp"
+#include "app/exercise_catalog.hpp"
+#include "base/file_io.hpp"
+
+using namespace fx;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+    fs::path path =
+        fs::temp_directory_path() /
+        ("fx_exercises_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+         "_" + std::to_string(::getpid()));
+    TempDir() {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+void writeText(const fs::path& file, const std::string& text) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << text;
+}
+
+std::string readText(const fs::path& file) {
+    auto text = readTextFile(file);
+    return text ? *text : "";
+}
+
+}  // namespace
+
+TEST(Exercises, EveryShippedExerciseLoadsWithItsFilesAndHints) {
+    auto all = loadExercises(exerciseRoot());
+    ASSERT_TRUE(all.ok()) << all.error();
+    ASSERT_GE(all->size(), 4u);
+    for (const Exercise& e : *all) {
+        SCOPED_TRACE(e.id());
+        EXPECT_TRUE(fs::is_regular_file(e.folder / e.file));
+        EXPECT_TRUE(fs::is_regular_file(exerciseRoot() / "solutions" / e.id() / e.file)) << "no solution";
+        EXPECT_NE(e.reference, e.folder / e.file) << "the starter cannot be the reference";
+        int wrongAnswers = 0;
+        for (const ExerciseHint& hint : e.hints) wrongAnswers += hint.when == "matches" ? 1 : 0;
+        EXPECT_GE(wrongAnswers, 1) << "every exercise has a typical wrong answer with its hint";
+        bool oddSize = false;
+        for (const ExerciseCase& c : e.cases)
+            oddSize = oddSize || c.size.width % 2 == 1 || c.size.height % 2 == 1;
+        EXPECT_TRUE(oddSize) << "every exercise is checked at an odd size too";
+    }
+}
+
+TEST(Exercises, ABadExerciseNamesTheFileTheFieldAndTheReason) {
+    TempDir dir;
+    const fs::path folder = dir.path / "04-7";
+    writeText(folder / "a.glsl", "float f() { return 0.0; }\n");
+    writeText(folder / "probe.frag", "#version 450 core\n");
+    const std::string good = R"({"lesson": 4, "number": 7, "title": "t", "file": "a.glsl",
+        "replaces": "shaders/effects/dof/coc.glsl", "probe": "probe.frag", "measures": "m",
+        "tolerance": 0.001, "cases": [{"size": [3, 3]}]})";
+    writeText(folder / "exercise.json", good);
+    auto loaded = loadExercise(folder);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(loaded->id(), "04-7");
+
+    auto fails = [&](const std::string& from, const std::string& to, const std::string& field) {
+        std::string text = good;
+        text.replace(text.find(from), from.size(), to);
+        writeText(folder / "exercise.json", text);
+        auto bad = loadExercise(folder);
+        ASSERT_FALSE(bad.ok()) << text;
+        EXPECT_NE(bad.error().find("04-7/exercise.json"), std::string::npos) << bad.error();
+        EXPECT_NE(bad.error().find(field), std::string::npos) << bad.error();
+    };
+    fails("\"tolerance\": 0.001", "\"tolerance\": -1", "tolerance");
+    fails("[3, 3]", "[0, 3]", "cases[0].size[0]");
+    fails("\"a.glsl\"", "\"../a.glsl\"", "file");
+    fails("\"probe.frag\"", "\"nowhere.frag\"", "probe");
+    fails("\"number\": 7", "\"number\": 8", "folder must be named 04-8");
+    fails("\"cases\": [{\"size\": [3, 3]}]", "\"cases\": []", "cases");
+    fails("\"title\": \"t\"", "\"title\": \"t\", \"toleranse\": 1", "toleranse");
+}
+
+TEST(Exercises, StartCopiesTheStarterAndNeverOverwritesWork) {
+    TempDir dir;
+    auto all = loadExercises(exerciseRoot());
+    ASSERT_TRUE(all.ok() && !all->empty());
+    const Exercise& e = all->front();
+    auto file = startExercise(e, dir.path);
+    ASSERT_TRUE(file.ok()) << file.error();
+    EXPECT_EQ(*file, dir.path / e.id() / e.file);
+    EXPECT_EQ(readText(*file), readText(e.folder / e.file));
+    writeText(*file, "my work\n");
+    ASSERT_TRUE(startExercise(e, dir.path).ok());
+    EXPECT_EQ(readText(*file), "my work\n");
+    // Something that is not a regular file is not replaced.
+    fs::remove(*file);
+    fs::create_directories(*file);
+    auto refused = startExercise(e, dir.path);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().find("not a regular file"), std::string::npos) << refused.error();
+}
+
+TEST(Exercises, ProgressIsKeptPerExerciseBesideTheWork) {
+    TempDir dir;
+    auto empty = readProgress(dir.path);
+    ASSERT_TRUE(empty.ok());
+    EXPECT_TRUE(empty->empty());
+    ASSERT_TRUE(recordProgress(dir.path, "05-1", {false, "NaN"}).ok());
+    ASSERT_TRUE(recordProgress(dir.path, "04-1", {true, "ok"}).ok());
+    ASSERT_TRUE(recordProgress(dir.path, "05-1", {true, "fixed"}).ok());
+    auto book = readProgress(dir.path);
+    ASSERT_TRUE(book.ok()) << book.error();
+    ASSERT_EQ(book->size(), 2u);
+    EXPECT_TRUE(book->at("05-1").passed);
+    EXPECT_EQ(book->at("05-1").message, "fixed");
+    writeText(dir.path / "progress.json", "{\"05-1\": {\"passed\": 3}}");
+    auto bad = readProgress(dir.path);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().find("05-1.passed"), std::string::npos) << bad.error();
+    EXPECT_FALSE(recordProgress(dir.path, "04-1", {true, ""}).ok()) << "a bad file is not written over";
+}
+
+TEST(Exercises, TheWatchdogEndsAChildThatDoesNotFinish) {
+    const auto start = std::chrono::steady_clock::now();
+    ChildOutcome hung = runInChildWithin(
+        [] {
+            for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+            return std::string();
+        },
+        0.5);
+    EXPECT_EQ(hung.kind, ChildOutcome::Kind::timedOut);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+
+    ChildOutcome done = runInChildWithin([] { return std::string("verdict"); }, 10.0);
+    EXPECT_EQ(done.kind, ChildOutcome::Kind::finished);
+    EXPECT_EQ(done.answer, "verdict");
+
+    ChildOutcome crashed = runInChildWithin(
+        [] {
+            std::raise(SIGSEGV);
+            return std::string();
+        },
+        10.0);
+    EXPECT_EQ(crashed.kind, ChildOutcome::Kind::crashed);
+    EXPECT_NE(crashed.reason.find("signal"), std::string::npos);
+}
