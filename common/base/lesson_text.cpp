@@ -38,7 +38,8 @@ std::string joinedText(const std::vector<std::string_view>& lines) {
 
 }  // namespace
 
-Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file) {
+Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file,
+                                                   std::string_view word) {
     std::vector<StepSection> sections;
     std::vector<std::string_view> body;
     bool inStep = false, inCode = false;
@@ -63,9 +64,9 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
         }
         close();
         std::string_view heading = trimmed(line.substr(line.find(' ') + 1));
-        if (startsWith(line, "## ") && startsWith(heading, "Step")) {
+        if (startsWith(line, "## ") && startsWith(heading, word)) {
             // "## Step N: title"
-            std::string_view rest = heading.substr(4);
+            std::string_view rest = heading.substr(word.size());
             std::size_t colon = rest.find(':');
             std::string_view number =
                 colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(0, colon));
@@ -76,7 +77,8 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
             if (rest.empty() || rest.front() != ' ' || number.empty() || ec != std::errc() ||
                 ptr != number.data() + number.size() || n < 1 || title.empty()) {
                 return Error{cat(file, ":", lineNumber, ": \"", trimmed(line),
-                                 "\" is not a step heading; write \"## Step N: title\" (N from 1)")};
+                                 "\" is not a heading of its kind; write \"## ", word,
+                                 " N: title\" (N from 1)")};
             }
             sections.push_back({n, std::string(title), {}, lineNumber});
             inStep = true;

@@ -11,7 +11,9 @@
 
 #include "app/child_watchdog.hpp"
 #include "app/exercise_catalog.hpp"
+#include "app/exercise_session.hpp"
 #include "base/file_io.hpp"
+#include "base/paths.hpp"
 
 using namespace fx;
 namespace fs = std::filesystem;
@@ -155,4 +157,28 @@ TEST(Exercises, TheWatchdogEndsAChildThatDoesNotFinish) {
         10.0);
     EXPECT_EQ(crashed.kind, ChildOutcome::Kind::crashed);
     EXPECT_NE(crashed.reason.find("signal"), std::string::npos);
+}
+
+// The overlay shows an exercise's text from its lesson's lesson.md and lesson.ja.md, like a step's.
+TEST(Exercises, EveryExerciseHasItsTextInBothLanguages) {
+    auto all = loadExercises(exerciseRoot());
+    ASSERT_TRUE(all.ok()) << all.error();
+    for (const Exercise& e : *all) {
+        SCOPED_TRACE(e.id());
+        fs::path folder;
+        for (const auto& entry : fs::directory_iterator(projectRoot() / "lessons"))
+            if (entry.path().filename().string().starts_with(e.id().substr(0, 2) + "_"))
+                folder = entry.path();
+        ASSERT_FALSE(folder.empty());
+        for (const char* name : {"lesson.md", "lesson.ja.md"}) {
+            auto text = exerciseSectionText(readText(folder / name), name, e.number);
+            ASSERT_TRUE(text.ok()) << text.error();
+            EXPECT_NE(text->find("### Checked exercise"), std::string::npos);
+            EXPECT_GT(text->size(), 200u) << *text;
+        }
+    }
+    auto missing = exerciseSectionText("## Step 1: a\n\ntext\n", "lesson.md", 1);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().find("lesson.md: no section \"## Checked exercise 1"), std::string::npos)
+        << missing.error();
 }
