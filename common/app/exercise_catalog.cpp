@@ -107,25 +107,45 @@ Result<Exercise> loadExercise(const fs::path& folder) {
         const fs::path starter = folder / exercise.file;
         if (std::error_code ec; !fs::is_regular_file(starter, ec))
             in.fail("file", cat("no starter ", starter.string()));
-        exercise.replaces = projectFile(in, "replaces", projectRoot());
-        exercise.reference =
-            in.has("reference") ? projectFile(in, "reference", projectRoot()) : exercise.replaces;
-        exercise.probe = projectFile(in, "probe", folder);
-        in.forEachObject("cases", kMaxCases,
-                         [&](JsonFieldReader& c) { exercise.cases.push_back(readCase(c)); });
-        if (exercise.cases.empty()) in.fail("cases", "an exercise needs at least one case");
-        exercise.measure = in.text("measure", "maxAbs");
-        if (exercise.measure != "maxAbs" && exercise.measure != "rmse")
-            in.fail("measure", cat("unknown measure \"", exercise.measure, "\" (maxAbs or rmse)"));
-        exercise.tolerance = in.requiredNumber("tolerance", NumberRange::aboveZero(1e6));
-        exercise.measures = in.requiredText("measures");
+        exercise.kind = in.text("kind", "probe");
+        if (exercise.kind == "scene") {
+            // The student's scene is checked by simulating it: no probe, no reference, no cases.
+            exercise.replaces = exercise.reference = starter.lexically_normal();
+            exercise.budget = in.integer("budget", 0, NumberRange::closed(1, 100000));
+            if (!in.has("budget")) in.fail("budget", "missing (a scene exercise's most particles alive)");
+            exercise.seconds = in.number("seconds", 10.0f, NumberRange::closed(0.1, 60.0));
+            exercise.measure = "liveParticles";
+            exercise.tolerance = exercise.budget;
+            exercise.measures = in.requiredText("measures");
+        } else if (exercise.kind == "probe") {
+            exercise.replaces = projectFile(in, "replaces", projectRoot());
+            exercise.reference =
+                in.has("reference") ? projectFile(in, "reference", projectRoot()) : exercise.replaces;
+            exercise.probe = projectFile(in, "probe", folder);
+            in.forEachObject("cases", kMaxCases,
+                             [&](JsonFieldReader& c) { exercise.cases.push_back(readCase(c)); });
+            if (exercise.cases.empty()) in.fail("cases", "an exercise needs at least one case");
+            exercise.measure = in.text("measure", "maxAbs");
+            if (exercise.measure != "maxAbs" && exercise.measure != "rmse")
+                in.fail("measure", cat("unknown measure \"", exercise.measure, "\" (maxAbs or rmse)"));
+            exercise.tolerance = in.requiredNumber("tolerance", NumberRange::aboveZero(1e6));
+            exercise.measures = in.requiredText("measures");
+        } else {
+            in.fail("kind", cat("unknown value \"", exercise.kind, "\" (probe or scene)"));
+        }
         in.forEachObject("hints", kMaxHints, [&](JsonFieldReader& h) {
             ExerciseHint hint;
             hint.when = h.requiredText("when");
-            if (hint.when == "matches")
-                hint.file = projectFile(h, "file", exerciseRoot());
-            else if (hint.when != "nonFinite" && hint.when != "fails")
-                h.fail("when", cat("unknown value \"", hint.when, "\" (nonFinite, matches or fails)"));
+            const bool scene = exercise.kind == "scene";
+            const bool known =
+                hint.when == "nonFinite" || hint.when == "fails" || (!scene && hint.when == "matches") ||
+                (scene && (hint.when == "invalid" || hint.when == "noEmitter" || hint.when == "overBudget"));
+            if (!known)
+                h.fail("when", cat("unknown value \"", hint.when, "\" (",
+                                   scene ? "nonFinite, invalid, noEmitter, overBudget or fails"
+                                         : "nonFinite, matches or fails",
+                                   ")"));
+            if (hint.when == "matches" || h.has("file")) hint.file = projectFile(h, "file", exerciseRoot());
             hint.text = h.requiredText("text");
             h.reportUnknown();
             exercise.hints.push_back(std::move(hint));

@@ -33,14 +33,19 @@ struct ExerciseCase {
 };
 
 // A hint for a failing result: "nonFinite" when it has NaN or Inf, "matches" when it equals what a
-// typical wrong answer (`file`) gives, "fails" for any other failure.
+// typical wrong answer (`file`) gives, "fails" for any other failure. A scene exercise's hints may also
+// be "invalid" (the scene does not load), "noEmitter" or "overBudget".
 struct ExerciseHint {
     std::string when;
-    std::filesystem::path file;  // "matches" only: absolute
+    std::filesystem::path
+        file;  // the typical wrong answer the hint is written for (absolute); "matches" needs one
     std::string text;
 };
 
 struct Exercise {
+    // "probe": the student's shader is rendered by the probe and compared with the reference.
+    // "scene": the student's file is a scene whose emitters are simulated (app/exercise_scene_check.hpp).
+    std::string kind = "probe";
     int lesson = 0;  // 4
     int number = 0;  // 2
     std::string title;
@@ -55,6 +60,9 @@ struct Exercise {
     double tolerance = 1e-5;
     std::string measures;  // what the probe's numbers are, for the message ("the tap offset of every pixel")
     std::vector<ExerciseHint> hints;
+    // "scene" only: the most particles alive at once, and how long the emitters are simulated.
+    int budget = 0;
+    double seconds = 10.0;
 
     std::string id() const;  // "04-2"
 };

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/child_watchdog.hpp"
+#include "app/exercise_scene_check.hpp"
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/framebuffer.hpp"
@@ -170,6 +171,7 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
         verdict.message = verdict.error;
         return verdict;
     }
+    if (exercise.kind == "scene") return checkSceneExercise(exercise, studentFile);
     const ProbeRun reference = renderProbe(exercise, exercise.reference);
     if (!reference.error.empty()) {
         verdict.error = cat("the exercise's reference did not build (a bug in fxlab): ", reference.error);

@@ -28,6 +28,8 @@ public:
     int step() const { return exercise_.step - 1; }  // 0-based
     const ExerciseVerdict& verdict() const { return verdict_; }
     const std::filesystem::path& studentFile() const { return file_; }
+    // A scene exercise: the student's file is a scene the lesson runs with (when it loads).
+    bool studentFileIsAScene() const { return exercise_.kind == "scene"; }
 
     // Checks again (on the current GL context) when the student's file changed since the last check,
     // and says the verdict in the log when it changed. True when it checked.

@@ -178,6 +178,15 @@ int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
         s.step = std::min(s.exercise->step(), int(lesson.steps().size()) - 1);
     }
     if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
+    if (s.exercise && s.exercise->studentFileIsAScene() && s.options.scene.empty()) {
+        // The lesson runs with the student's scene; one that does not load leaves the lesson's own, and
+        // the exercise's verdict shows the loader's message.
+        s.options.scene = s.exercise->studentFile();
+        if (loadLessonScene(s)) {
+            log::warning(s.exe, ": exercise: your scene did not load; running with the lesson's own");
+            s.options.scene.clear();
+        }
+    }
     if (auto failed = loadLessonScene(s)) return *failed;
     if (auto failed = setParameters(s)) return *failed;
     if (s.options.listParams) {

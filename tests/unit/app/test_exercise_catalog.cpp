@@ -11,6 +11,7 @@
 
 #include "app/child_watchdog.hpp"
 #include "app/exercise_catalog.hpp"
+#include "app/exercise_scene_check.hpp"
 #include "app/exercise_session.hpp"
 #include "base/file_io.hpp"
 #include "base/paths.hpp"
@@ -52,10 +53,14 @@ TEST(Exercises, EveryShippedExerciseLoadsWithItsFilesAndHints) {
         SCOPED_TRACE(e.id());
         EXPECT_TRUE(fs::is_regular_file(e.folder / e.file));
         EXPECT_TRUE(fs::is_regular_file(exerciseRoot() / "solutions" / e.id() / e.file)) << "no solution";
-        EXPECT_NE(e.reference, e.folder / e.file) << "the starter cannot be the reference";
         int wrongAnswers = 0;
-        for (const ExerciseHint& hint : e.hints) wrongAnswers += hint.when == "matches" ? 1 : 0;
+        for (const ExerciseHint& hint : e.hints) wrongAnswers += hint.file.empty() ? 0 : 1;
         EXPECT_GE(wrongAnswers, 1) << "every exercise has a typical wrong answer with its hint";
+        if (e.kind == "scene") {
+            EXPECT_GT(e.budget, 0);
+            continue;  // simulated, not rendered: no sizes
+        }
+        EXPECT_NE(e.reference, e.folder / e.file) << "the starter cannot be the reference";
         bool oddSize = false;
         for (const ExerciseCase& c : e.cases)
             oddSize = oddSize || c.size.width % 2 == 1 || c.size.height % 2 == 1;
@@ -181,4 +186,38 @@ TEST(Exercises, EveryExerciseHasItsTextInBothLanguages) {
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("lesson.md: no section \"## Checked exercise 1"), std::string::npos)
         << missing.error();
+}
+
+// Exercise 07-2 is a scene: a rate past the scene format's limits fails with the loader's message (the
+// student's file, the field, the limit) and the hint for it; one within the limits but over the
+// exercise's budget says how many particles were alive against the budget; no emitter is named.
+TEST(Exercises, ASceneExerciseFailsPastTheLimitsOverTheBudgetAndWithoutAnEmitter) {
+    auto all = loadExercises(exerciseRoot());
+    ASSERT_TRUE(all.ok()) << all.error();
+    auto e = findExercise(*all, 7, 2);
+    ASSERT_TRUE(e.ok()) << e.error();
+    ASSERT_EQ(e->kind, "scene");
+    const fs::path wrong = exerciseRoot() / "solutions" / "07-2";
+
+    const ExerciseVerdict limits = checkSceneExercise(*e, wrong / "wrong-past-limits.json");
+    EXPECT_FALSE(limits.passed);
+    EXPECT_NE(limits.message.find("wrong-past-limits.json"), std::string::npos) << limits.message;
+    EXPECT_NE(limits.message.find("emitters[0].rate"), std::string::npos) << limits.message;
+    EXPECT_NE(limits.hint.find("did not load"), std::string::npos) << limits.hint;
+
+    const ExerciseVerdict over = checkSceneExercise(*e, wrong / "wrong-over-budget.json");
+    EXPECT_FALSE(over.passed);
+    EXPECT_GT(over.measured, 2000.0);
+    EXPECT_NE(over.message.find("needs <= 2000"), std::string::npos) << over.message;
+    EXPECT_NE(over.hint.find("Too many particles"), std::string::npos) << over.hint;
+
+    const ExerciseVerdict starter = checkSceneExercise(*e, e->folder / e->file);
+    EXPECT_FALSE(starter.passed);
+    EXPECT_NE(starter.message.find("no particle emitter"), std::string::npos) << starter.message;
+
+    const ExerciseVerdict solution = checkSceneExercise(*e, wrong / e->file);
+    EXPECT_TRUE(solution.passed) << solution.message;
+    EXPECT_GT(solution.measured, 0.0);
+    EXPECT_LE(solution.measured, 2000.0);
+    EXPECT_EQ(solution.nonFiniteTexels, 0);
 }
