@@ -143,8 +143,10 @@ TEST(Exercises, TheWatchdogEndsAChildThatDoesNotFinish) {
     const auto start = std::chrono::steady_clock::now();
     ChildOutcome hung = runInChildWithin(
         [] {
-            for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
-            return std::string();
+            // Far longer than the watchdog's half second, but finite: with the watchdog broken the
+            // test fails in 20 s (finished, too late) instead of hanging until CTest's timeout.
+            for (int second = 0; second < 20; ++second) std::this_thread::sleep_for(std::chrono::seconds(1));
+            return std::string("finished too late");
         },
         0.5);
     EXPECT_EQ(hung.kind, ChildOutcome::Kind::timedOut);
