@@ -2,6 +2,7 @@
 
 #include "base/log.hpp"
 #include "base/paths.hpp"
+#include "gl/context_guard.hpp"
 #include "gl/shader_dump.hpp"
 #include "gl/shader_source.hpp"
 #include "gl/shader_substitutes.hpp"
@@ -73,6 +74,14 @@ Result<Program> Program::build(const ProgramSources& sources) {
         for (auto& [stage, path] : stages) {
             program.label_ += (program.label_.empty() ? "" : " + ") + path.generic_string();
         }
+    }
+
+    // The Shader effects chapter's lifetime pitfall, the other end: a program made before the context
+    // (a global, or an object built before the window) would call GL through null function pointers.
+    if (!contextAlive()) {
+        return Error{cat("cannot build program ", program.label_,
+                         ": no GL context is current on this thread (create the window or headless context "
+                         "first)")};
     }
 
     std::vector<CompiledStage> compiled;

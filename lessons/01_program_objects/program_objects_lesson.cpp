@@ -12,6 +12,7 @@
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
 #include "gl/debug_output.hpp"
 #include "raw_programs.hpp"
 
@@ -26,12 +27,9 @@ std::string shader(const char* name) {
     return std::string(kDir) + name;
 }
 
-// The chapter's operation counts per vertex (section 2.2).
-struct ProductCost {
-    int mul, add;
-};
-constexpr ProductCost kGrouped{80, 60};        // (T*J)*p: mat4*mat4, then mat4*vec4
-constexpr ProductCost kParenthesised{32, 24};  // T*(J*p): two mat4*vec4
+// The chapter's operation counts per vertex (section 2.2), the ones lesson 02 shows.
+const OperationCount kGrouped = operationCount(SkinningProduct::grouped);              // (T*J)*p
+const OperationCount kParenthesised = operationCount(SkinningProduct::parenthesised);  // T*(J*p)
 
 }  // namespace
 

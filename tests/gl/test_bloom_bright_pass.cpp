@@ -2,6 +2,7 @@
 // chapters' hue-preserving ratio from a per-channel subtraction, nor the brightest channel from
 // luminance; these vectors can (Shader effects §3.7.1 and its test table, Bloom §1.5 and hard cases 5
 // and 6).
+#include <algorithm>
 #include <cmath>
 
 #include "gl_test.hpp"
@@ -151,4 +152,45 @@ TEST_F(BloomBrightPass, ColouredAreaComesBackWithItsHueThroughTheWholeChain) {
     // The reference Gaussian glow shares the bright pass: 4 levels at weight 1/4 add E once.
     FloatImage ref = runReference(big, effects, in, beyondChapters(4), {128, 64}, 0.25f);
     EXPECT_TRUE(everyTexelIs(ref, {3.0f, 0.75f, 0.0f}, 1e-3f)) << big.lastErrors;
+}
+
+TEST_F(BloomBrightPass, ANegativeThresholdBloomsAsThresholdZeroWithoutNanOrNegativeLight) {
+    // Shader effects, hard case 9, clamped in the effect (bloom_common.glsl), not only by lesson 06's
+    // slider: a scene file or another caller can still pass -1. Unclamped, (b + 1) / b scales
+    // (0.3, 0.1, 0.05) to (1.3, 0.43, 0.22) and a near-black 1e-4 to about 1: every pixel blooms, the
+    // darkest most. Clamped, each chain's bright pass and lesson 06 step 3's whole chain give what
+    // threshold 0 gives: finite, never negative.
+    const Rgb colours[] = {{0.0f, 0.0f, 0.0f}, {1e-4f, 0.0f, 0.0f}, {0.3f, 0.1f, 0.05f}, {2.0f, 0.5f, 0.0f}};
+    BloomChainSettings knee = chapter001Bloom(-1.0f, 1);
+    knee.knee = 0.5f;
+    for (BloomChainSettings s : {chapter000Bloom(-1.0f, 2.0f, 1), chapter001Bloom(-1.0f, 1), knee}) {
+        for (const Rgb& c : colours) {
+            Rgb expected = {c[0] * s.extractScale, c[1] * s.extractScale, c[2] * s.extractScale};
+            EXPECT_TRUE(everyTexelIs(brightPass(s, c), expected, 1e-4f * s.extractScale))
+                << "threshold -1, colour (" << c[0] << ", " << c[1] << ", " << c[2] << ")"
+                << runner.lastErrors;
+        }
+    }
+
+    // Step 3's chain and composite over a ramp from black to 4: the same picture as at threshold 0.
+    EffectRunner big(128, 64);
+    FloatImage ramp = makeImage(128, 64, [](int x, int y) {
+        float v = (y < 32 ? 1e-3f : 4.0f / 127.0f) * float(x);
+        return std::array<float, 4>{v, 0.5f * v, 0.25f * v, 1.0f};
+    });
+    auto stepThree = [&](float threshold) {
+        return runBloom(big, effects, ramp, TextureFormat::RGBA16F, chapter000Bloom(threshold, 2.0f, 6),
+                        chapter000CompositeScale(6));
+    };
+    FloatImage negative = stepThree(-1.0f), zero = stepThree(0.0f);
+    ASSERT_FALSE(negative.empty()) << big.lastErrors;
+    ASSERT_EQ(negative.texels.size(), zero.texels.size());
+    EXPECT_TRUE(allFinite(negative));
+    float lowest = 0.0f, worst = 0.0f;
+    for (std::size_t i = 0; i < negative.texels.size(); ++i) {
+        lowest = std::min(lowest, negative.texels[i]);
+        worst = std::max(worst, std::abs(negative.texels[i] - zero.texels[i]));
+    }
+    EXPECT_GE(lowest, 0.0f) << "negative light";
+    EXPECT_LE(worst, 1e-3f) << "threshold -1 differs from threshold 0";
 }

@@ -344,3 +344,78 @@ TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
     ASSERT_FALSE(naiveSky.empty()) << lastErrors;
     EXPECT_GT(worstChange(naiveSky), 0.1f);
 }
+
+TEST_F(DepthOfFieldOnGl, ASharpForegroundLeaksIntoABlurredBackgroundOnlyWithTheChaptersTaps) {
+    // Hard case 10, the other direction: left a red object at the focus (2 m, sharp), right a blue
+    // background at 50 m (a 12 px CoC, radius 6 px). The chapter's taps are scaled by the centre's CoC
+    // alone, so background pixels beside the edge gather the sharp red: a red halo in the blur. The
+    // gather counts a tap only as far as its own blur reaches (and, with the fields separated, the
+    // smaller of its own and the centre's), so the red has nowhere to go, and it stays sharp itself.
+    const int w = 64, h = 8;
+    ThinLensInput in = chapterCamera(CocConvention::corrected, 32.0f);
+    in.lens.focusDistanceM = 2.0f;
+    ThinLensModel model = thinLensModel(in);
+    ASSERT_GT(signedCocPixels(model, 50.0), 10.0);
+    DofLensUniforms lens = dofLensUniforms(model);
+    const float focusDepth = float(windowDepth(2.0, 0.5, 500.0));
+    const float backgroundDepth = float(windowDepth(50.0, 0.5, 500.0));
+    FloatImage split = makeImage(w, h, [](int x, int) {
+        return x < 32 ? std::array<float, 4>{1, 0, 0, 1} : std::array<float, 4>{0, 0, 1, 1};
+    });
+    auto depth = [&](int x, int) { return x < 32 ? focusDepth : backgroundDepth; };
+    FloatImage chapter = run(w, h, split, depth, [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+        return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
+    });
+    ASSERT_FALSE(chapter.empty()) << lastErrors;
+    float leak = 0.0f;
+    for (int x = 32; x < 38; ++x) leak = std::max(leak, chapter.texel(x, h / 2, 0));
+    EXPECT_GT(leak, 0.05f) << "the chapter's taps should carry the sharp red into the blurred background";
+
+    for (bool separate : {true, false}) {
+        FloatImage gathered = run(w, h, split, depth, [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
+            TextureHandle coc = effect.declareCoc(g, d, lens).output;
+            return effect.declareGather(g, c, coc, lens, {43, false, separate, 0.0f}).result;
+        });
+        ASSERT_FALSE(gathered.empty()) << lastErrors;
+        ASSERT_TRUE(allFinite(gathered));
+        for (int x = 32; x < w; ++x)
+            EXPECT_LE(gathered.texel(x, h / 2, 0), 1e-3f) << "separate " << separate << ": red at x " << x;
+        for (int x = 0; x < 32; ++x) {
+            EXPECT_NEAR(gathered.texel(x, h / 2, 0), 1.0f, 1e-3f) << "separate " << separate << ", x " << x;
+            EXPECT_LE(gathered.texel(x, h / 2, 2), 1e-3f) << "separate " << separate << ": blue at x " << x;
+        }
+    }
+}
+
+TEST_F(DepthOfFieldOnGl, NearAndFarThatDisagreeWithTheProjectionMoveTheFocus) {
+    // Hard case 7: the depth was written by a projection with near 0.5 m and far 500 m, and the CoC
+    // pass is told near 0.6 m. Every depth then reads as another distance, and the focus moves: the
+    // object at the focus distance (5 m) blurs by 0.82 px at 1280 px wide, and the one the shader
+    // reads as 5 m, 4.17 m away, is sharp. The shader's CoC is the CPU's for the same depth read with
+    // the wrong planes.
+    ThinLensInput in = chapterCamera(CocConvention::corrected);
+    in.lens.focusDistanceM = 5.0f;
+    const ThinLensModel agreeing = thinLensModel(in);
+    in.nearM = 0.6f;
+    const ThinLensModel disagreeing = thinLensModel(in);
+    const double movedFocus = linearDepthM(windowDepth(5.0, 0.6, 500.0), 0.5, 500.0);
+    ASSERT_NEAR(movedFocus, 4.17, 0.01);
+    const double distances[] = {2.0, movedFocus, 5.0, 10.0, 50.0};
+    std::vector<float> depths;
+    for (double d : distances) depths.push_back(float(windowDepth(d, 0.5, 500.0)));
+    auto depthAt = [&](int x, int) { return depths[std::size_t(x)]; };
+    FloatImage right = coc(5, 1, agreeing, depthAt);
+    FloatImage wrong = coc(5, 1, disagreeing, depthAt);
+    ASSERT_FALSE(right.empty() || wrong.empty()) << lastErrors;
+    for (int x = 0; x < 5; ++x) {
+        const float d = depths[std::size_t(x)];
+        EXPECT_NEAR(right.texel(x, 0, 0), signedCocPixelsFromDepth(agreeing, d), 1e-3)
+            << distances[x] << " m";
+        EXPECT_NEAR(wrong.texel(x, 0, 0), signedCocPixelsFromDepth(disagreeing, d), 1e-3)
+            << distances[x] << " m";
+    }
+    EXPECT_LT(std::abs(right.texel(2, 0, 0)), 1e-3f) << "in focus at 5 m when the planes agree";
+    EXPECT_GT(std::abs(right.texel(1, 0, 0)), 0.5f) << "and blurred at " << movedFocus << " m";
+    EXPECT_GT(std::abs(wrong.texel(2, 0, 0)), 0.5f) << "with the wrong near plane the object at 5 m blurs";
+    EXPECT_LT(std::abs(wrong.texel(1, 0, 0)), 1e-2f) << "and the one at " << movedFocus << " m is sharp";
+}

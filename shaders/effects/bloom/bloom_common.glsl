@@ -14,7 +14,11 @@ vec3 finiteClamp(vec3 c, float lo, float hi) {
 // knee > 0 rounds the corner at the threshold into a parabola (the quadratic soft knee), so a surface
 // that creeps over the threshold fades in instead of switching on; knee 0 is the chapters' hard cut.
 // The input must be >= 0: a negative channel would be scaled too and make a dark halo.
+// A threshold below 0 counts as 0 here, in the effect and not only in a lesson's slider (Shader effects,
+// hard case 9): unclamped, (b - threshold) / b exceeds 1 and grows without bound as b falls, so every
+// pixel blooms and near-black ones most. Written as a comparison so a NaN threshold is 0 as well.
 vec3 brightPart(vec3 c, float threshold, float knee) {
+    threshold = threshold > 0.0 ? threshold : 0.0;
     float b = max(c.r, max(c.g, c.b));
     float hard = max(b - threshold, 0.0);
     float k = max(knee * threshold, 0.0);

@@ -80,5 +80,40 @@ TEST_F(ContextGuard, IsPerThread) {
     EXPECT_FALSE(seenElsewhere);
 }
 
+int creates = 0;
+GLuint GLAD_API_PTR countCreateShader(GLenum) {
+    ++creates;
+    return 0;
+}
+GLuint GLAD_API_PTR countCreateProgram() {
+    ++creates;
+    return 0;
+}
+
+TEST_F(ContextGuard, AProgramBuiltBeforeTheContextIsAClearErrorAndCallsNoGl) {
+    // The other end of the lifetime pitfall: a program made before the window (a global, a member built
+    // too early) would call GL through glad's null pointers. The build refuses with a message naming
+    // the program and the reason, and a ReloadableProgram made then is unusable and says why.
+    setContextAlive(false);
+    auto savedShader = glad_glCreateShader;
+    auto savedProgram = glad_glCreateProgram;
+    glad_glCreateShader = countCreateShader;
+    glad_glCreateProgram = countCreateProgram;
+    creates = 0;
+    const ProgramSources sources{
+        "common/fullscreen.vert", "effects/post/output_transform.frag", {}, {}, "early program"};
+    auto built = Program::build(sources);
+    ReloadableProgram reloadable(sources);
+    glad_glCreateShader = savedShader;
+    glad_glCreateProgram = savedProgram;
+
+    ASSERT_FALSE(built.ok());
+    EXPECT_NE(built.error().find("early program"), std::string::npos) << built.error();
+    EXPECT_NE(built.error().find("no GL context is current"), std::string::npos) << built.error();
+    EXPECT_FALSE(reloadable.usable());
+    EXPECT_NE(reloadable.error().find("no GL context is current"), std::string::npos) << reloadable.error();
+    EXPECT_EQ(creates, 0) << "GL was called without a context";
+}
+
 }  // namespace
 }  // namespace fx::gl
