@@ -7,8 +7,18 @@
 // still current, on every way out of the run, so GL objects held in members (RAII) need no
 // shutdown code. Every gl::ReloadableProgram the lesson or its effects build joins the run's
 // gl::ProgramRegistry, which the runner reloads, checks after init and shows errors from.
+//
+// A lesson is made before the GL context exists (its steps and parameters are needed for --help,
+// --list-params and the scene's settings), so the effects it draws with are Gpu<T> members: the
+// runner builds them once the context is current and the scene is loaded, before init().
+#include <concepts>
 #include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "app/lesson_facts.hpp"
@@ -52,7 +62,10 @@ struct FrameInfo {
 
 class Lesson {
 public:
-    virtual ~Lesson() = default;
+    Lesson();  // its Gpu<T> members join it while it is made
+    virtual ~Lesson();
+    Lesson(const Lesson&) = delete;
+    Lesson& operator=(const Lesson&) = delete;
 
     virtual LessonInfo info() const = 0;
     // The steps' titles, in the chapter's order. The steps drive the code, so the list lives here;
@@ -62,9 +75,13 @@ public:
     // Called once before the context exists, so --param and --list-params work without GL.
     virtual void declareParams(ParamSet& params) { (void)params; }
 
-    // The GL context is current and the scene loaded; create programs, meshes, buffers. A program
-    // that does not build fails the run after init, with its error; no need to check here.
-    virtual Status init(const Scene& scene) = 0;
+    // The GL context is current, the scene loaded and every Gpu<T> member built: what the chapter
+    // decides once (a light list, a shadow setting from the scene). A program that does not build
+    // fails the run after init, with its error; no need to check here.
+    virtual Status init(const Scene& scene) {
+        (void)scene;
+        return Status::success();
+    }
 
     // The per-frame simulations the lesson runs (skinning, particles, clouds), each under the scene
     // feature it exists for: work.onUpdate(Simulation::animation, "skinning", ...). The runner calls
@@ -98,6 +115,83 @@ public:
     // row per knob. Empty (the default): the reference is the knobs' reference setting.
     virtual std::string benchReferenceName() const { return {}; }
     virtual void setBenchReference(bool on) { (void)on; }
+
+    // The runner: builds every Gpu<T> member, in the order they are declared, with the context current
+    // and `scene` loaded. Once only.
+    void buildGpuMembers(const Scene& scene);
+
+private:
+    template <class T>
+    friend class Gpu;
+    // The lesson whose constructor runs on this thread (set by Lesson(), cleared once its members are
+    // built or it goes): where a Gpu<T> member registers.
+    static Lesson*& underConstruction();
+    std::vector<std::function<void(const Scene&)>> gpuMembers_;
+    bool gpuMembersBuilt_ = false;
+};
+
+// Stops the program with `what` (a Gpu<T> used before the runner built it, or made outside a lesson):
+// a mistake in the lesson's code, not in its input.
+[[noreturn]] void gpuMemberMisuse(const char* what);
+
+// A member of a lesson that needs the GL context: an effect, a mesh, a buffer. The runner builds it
+// right before init(), with the context current:
+//
+//   fx::Gpu<fx::BloomChain> chain_;                      // BloomChain()
+//   fx::Gpu<fx::PlanarReflection> reflection_;           // PlanarReflection(scene): it takes the scene
+//   fx::Gpu<fx::FullscreenPass> copy_{"common/copy.frag", "copy"};   // these arguments, kept until then
+//   fx::Gpu<fx::GpuParticles> pool_{[this](const fx::Scene&) { return fx::GpuParticles(system_); }};
+//
+// and the lesson uses it like a pointer: chain_->declare(graph, ...). It goes with the lesson, while
+// the context is still current. Only a lesson's members can be Gpu<T> (they join the lesson being made).
+template <class T>
+class Gpu {
+public:
+    // T(scene) when T is made from the scene, T() otherwise.
+    Gpu() {
+        join([this](const Scene& scene) {
+            if constexpr (std::is_constructible_v<T, const Scene&>)
+                value_.emplace(scene);
+            else
+                value_.emplace();
+        });
+    }
+    // T made by `make(scene)`, called when the runner builds it (members declared before this one are
+    // built already).
+    template <class Make>
+    requires std::is_invocable_r_v<T, Make, const Scene&>
+    explicit Gpu(Make make) {
+        join([this, make](const Scene& scene) { value_.emplace(make(scene)); });
+    }
+    // T(args...), with copies of the arguments kept until then.
+    template <class First, class... Rest>
+    requires(!std::is_invocable_v<First, const Scene&> &&
+             std::is_constructible_v<T, First, Rest...>) explicit Gpu(First first, Rest... rest) {
+        join([this, first, rest...](const Scene&) { value_.emplace(first, rest...); });
+    }
+    Gpu(const Gpu&) = delete;
+    Gpu& operator=(const Gpu&) = delete;
+
+    T* operator->() { return &get(); }
+    const T* operator->() const { return &get(); }
+    T& operator*() { return get(); }
+    const T& operator*() const { return get(); }
+
+private:
+    void join(std::function<void(const Scene&)> build) {
+        Lesson* lesson = Lesson::underConstruction();
+        if (!lesson) gpuMemberMisuse("a Gpu<T> made outside a lesson's constructor");
+        lesson->gpuMembers_.push_back(std::move(build));
+    }
+    T& get() {
+        if (!value_) gpuMemberMisuse("a Gpu<T> used before the runner built it");
+        return *value_;
+    }
+    const T& get() const {
+        if (!value_) gpuMemberMisuse("a Gpu<T> used before the runner built it");
+        return *value_;
+    }
+    std::optional<T> value_;
 };
 
 }  // namespace fx

@@ -24,8 +24,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// init, then the check that every program it built (the lesson's and its effects') is usable.
+// The lesson's Gpu<T> members (its effects), init, then the check that every program they built is
+// usable.
 Status initLesson(RunSession& s, const gl::ProgramRegistry& programs) {
+    s.lesson->buildGpuMembers(s.scene);
     if (Status status = s.lesson->init(s.scene); !status) return status;
     if (auto error = programs.firstUnusable()) return Error{*error};
     return Status::success();

@@ -76,9 +76,6 @@ void ProgramObjectsLesson::declareParams(ParamSet& params) {
 
 Status ProgramObjectsLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    gridBox_ = GpuMesh(makeBox({0.18f, 0.18f, 0.18f}), "grid box");
-    emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
 
     lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
     unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
@@ -87,7 +84,6 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
         gl::ReloadableProgram({shader("skinning.vert"), shader("lit.frag"), {}, {}, "skinning (T*J)*p"});
     skinParenthesised_ = gl::ReloadableProgram(
         {shader("skinning.vert"), shader("lit.frag"), {}, "#define PARENTHESISED 1", "skinning T*(J*p)"});
-    copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "copy"});
     return Status::success();
 }
 
@@ -138,23 +134,23 @@ void ProgramObjectsLesson::drawThreePrograms(GLuint lit, GLuint unlit, GLuint no
     auto named = [](const char* name) { return [name](const SceneObject& o) { return o.name == name; }; };
     MeshDrawOptions rest;
     rest.only = [](const SceneObject& o) { return o.name != kUnlitObject && o.name != kNormalsObject; };
-    meshes_.draw(lit, *scene_, frame.seconds, rest);
+    meshes_->draw(lit, *scene_, frame.seconds, rest);
     MeshDrawOptions box;
     box.only = named(kUnlitObject);
-    meshes_.draw(unlit, *scene_, frame.seconds, box);
+    meshes_->draw(unlit, *scene_, frame.seconds, box);
     // glUseProgram with a program that did not link fails and leaves the program bound before it in
     // use: what the object looks like then depends on what ran last (the chapter's engine drew it
     // black). Unbinding first makes it the same every frame: no program, nothing drawn.
     glUseProgram(0);
     MeshDrawOptions sphere;
     sphere.only = named(kNormalsObject);
-    meshes_.draw(normals, *scene_, frame.seconds, sphere);
+    meshes_->draw(normals, *scene_, frame.seconds, sphere);
 }
 
 void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
     CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
     SceneMeshes::setFrameUniforms(program, *scene_, camera);
-    meshes_.draw(program, *scene_, frame.seconds);
+    meshes_->draw(program, *scene_, frame.seconds);
 }
 
 void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
@@ -183,7 +179,7 @@ void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
             glProgramUniformMatrix4fv(program, modelLocation, 1, GL_FALSE, glm::value_ptr(model));
             glProgramUniform3fv(program, colorLocation, 1, glm::value_ptr(color));
             glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
-            gridBox_.draw();
+            gridBox_->draw();
         }
     }
     lookupMsLastFrame_ = lookupSeconds * 1000.0;
@@ -243,17 +239,12 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         graph.inspect("skinning.parenthesised.color");
     }
     TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
-    graph
-        .addPass("present",
-                 [this, shown](PassContext& ctx) {
-                     glBindTextureUnit(0, ctx.native(shown));
-                     glUseProgram(copy_.name());
-                     glBindVertexArray(emptyVao_.name());
-                     glDrawArrays(GL_TRIANGLES, 0, 3);
-                 })
+    const FullscreenPass* present = &*present_;
+    present_
+        ->addPass(graph, "present",
+                  [present, shown](PassContext& ctx) { present->draw({ctx.native(shown)}); })
         .read(shown)
-        .writeColor(graph.output())
-        .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false});
+        .writeColor(graph.output());
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/lesson.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/gpu_mesh.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "gl/program.hpp"
@@ -36,8 +37,8 @@ private:
     int spheres_ = 16;      // instances for step 4
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::GpuMesh gridBox_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::GpuMesh> gridBox_{fx::makeBox({0.18f, 0.18f, 0.18f}), "grid box"};
     fx::GpuMesh denseSphere_;
     int denseSphereDetail_ = 0;
 
@@ -51,8 +52,7 @@ private:
     fx::gl::ReloadableProgram brokenAttempt_;
     int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
     fx::gl::ReloadableProgram skinGrouped_, skinParenthesised_;
-    fx::gl::ReloadableProgram copy_;
-    fx::gl::VertexArrayName emptyVao_;
+    fx::Gpu<fx::FullscreenPass> present_{"common/copy.frag", "copy"};
 
     // Step 3's measurements (CPU side, per frame).
     int lookupsLastFrame_ = 0;

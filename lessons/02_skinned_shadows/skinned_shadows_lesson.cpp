@@ -60,10 +60,6 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
 Status SkinnedShadowsLesson::init(const Scene& scene) {
     scene_ = &scene;
     if (const Light* light = shadowCastingLight(scene)) sceneShadow_ = light->shadow;
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    lit_ = ShadowLitPass::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
@@ -110,7 +106,7 @@ ShadowPassOptions SkinnedShadowsLesson::shadowOptionsForStep(int step, bool benc
 void SkinnedShadowsLesson::simulations(SceneWork& work) {
     // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
     work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
+                  [this](const SimulationStep& s) { meshes_->update(s.seconds); });
 }
 
 void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -121,7 +117,7 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
     settings.filterTaps = filterTaps_;
 
     ShadowPassOptions options = shadowOptionsForStep(frame.step, frame.benchmark);
-    DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap map = shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, options);
     if (map.pass) map.pass->joinGroup(shadowPass_);
 
     // Step 3: the other product draws the same crowd into its own map, so both times stand side by
@@ -134,14 +130,15 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         other.textureName = "shadow.map_other_product";
         other.stats = &otherStats_;
         DeclaredShadowMap compared =
-            shadows_.declare(graph, scene, meshes_, frame.seconds, settings, map.lookup.light, other);
+            shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, map.lookup.light, other);
         if (compared.pass) compared.pass->keepAlive().joinGroup(otherProductPass_);
     }
 
-    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
-    shadows_.declareDepthView(graph, map);
-    lit_.declareLightView(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
-    present_.declare(graph, hdr.color);
+    HdrSceneTargets hdr =
+        lit_->declare(graph, scene, *meshes_, frame.seconds, map, options.skinnedPlacements);
+    shadows_->declareDepthView(graph, map);
+    lit_->declareLightView(graph, scene, *meshes_, frame.seconds, map, options.skinnedPlacements);
+    present_->declare(graph, hdr.color);
 }
 
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {

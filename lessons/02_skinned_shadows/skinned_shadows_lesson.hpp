@@ -43,10 +43,10 @@ private:
 
     const fx::Scene* scene_ = nullptr;
     fx::ShadowSettings sceneShadow_;
-    fx::SceneMeshes meshes_;
-    fx::ShadowMap shadows_;
-    fx::ShadowLitPass lit_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::ShadowMap> shadows_;
+    fx::Gpu<fx::ShadowLitPass> lit_;
+    fx::Gpu<fx::OutputTransformPass> present_;
 
     // Filled while the frame executes (the pass bodies write them), read by the panel and report.
     mutable fx::ShadowPassStats stats_;

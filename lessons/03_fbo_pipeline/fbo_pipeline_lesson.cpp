@@ -58,12 +58,6 @@ void FboPipelineLesson::declareParams(ParamSet& params) {
 
 Status FboPipelineLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    litScene_ = LitScenePass::create();
-    copyToWindow_ = FullscreenPass("common/copy.frag", "to the window");
-    outputTransform_ = OutputTransformPass::create();
-    uiQueue_ = UiQueuePass::create();
     noShadowReason_ =
         shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
     return Status::success();
@@ -72,7 +66,7 @@ Status FboPipelineLesson::init(const Scene& scene) {
 void FboPipelineLesson::simulations(SceneWork& work) {
     // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
     work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
+                  [this](const SimulationStep& s) { meshes_->update(s.seconds); });
 }
 
 void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -87,12 +81,12 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
         setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
         DeclaredShadowMap shadow =
-            shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+            shadows_->declare(graph, *scene_, *meshes_, frame.seconds, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
         return;
     }
-    DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap shadow = shadows_->declare(graph, *scene_, *meshes_, frame.seconds, settings, options);
     if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
@@ -112,8 +106,8 @@ void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameIn
     // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
     scene.declaresState = frame.step >= EachPassSetsItsState;
     scene.clears = frame.step >= EachPassSetsItsState;
-    litScene_.declareIntoWindow(graph, *scene_, meshes_, frame.seconds, shadow, scene);
-    uiQueue_.declare(graph, frame.size);
+    litScene_->declareIntoWindow(graph, *scene_, *meshes_, frame.seconds, shadow, scene);
+    uiQueue_->declare(graph, frame.size);
 }
 
 void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
@@ -127,17 +121,18 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
         sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
-        HdrSceneTargets main = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
-                                                            sceneOptions, "scene");
-        const FullscreenPass* copy = &copyToWindow_;
+        HdrSceneTargets main = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds, shadow,
+                                                             sceneOptions, "scene");
+        const FullscreenPass* copy = &*copyToWindow_;
         TextureHandle color = main.color;
-        graph.addPass("to the window", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
+        copyToWindow_
+            ->addPass(graph, "to the window",
+                      [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
             .read(color)
-            .writeColor(graph.output())
-            .setState(FullscreenPass::state());
+            .writeColor(graph.output());
     } else {
-        HdrSceneTargets linear = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
-                                                              sceneOptions, "scene");
+        HdrSceneTargets linear = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds,
+                                                               shadow, sceneOptions, "scene");
         std::optional<SplitView> split;
         if (washoutSplit_ > 0.0f) {
             // The same scene, its shader still encoding: what the chapter saw before the fix. Only
@@ -145,13 +140,13 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
             LitSceneOptions washedOut;
             washedOut.passName = "scene (shader encodes too)";
             washedOut.encodeForDisplay = true;
-            HdrSceneTargets encoded = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds,
-                                                                   shadow, washedOut, "scene_encoded");
+            HdrSceneTargets encoded = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds,
+                                                                    shadow, washedOut, "scene_encoded");
             split = SplitView{encoded.color, washoutSplit_};
         }
-        outputTransform_.declare(graph, linear.color, split);
+        outputTransform_->declare(graph, linear.color, split);
     }
-    uiQueue_.declare(graph, frame.size);
+    uiQueue_->declare(graph, frame.size);
 }
 
 std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* report) const {

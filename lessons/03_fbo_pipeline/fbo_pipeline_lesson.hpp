@@ -36,12 +36,12 @@ private:
     bool viewportBug_ = false;
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::ShadowMap shadows_;
-    LitScenePass litScene_;
-    fx::FullscreenPass copyToWindow_;
-    fx::OutputTransformPass outputTransform_;
-    fx::UiQueuePass uiQueue_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::ShadowMap> shadows_;
+    fx::Gpu<LitScenePass> litScene_;
+    fx::Gpu<fx::FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};
+    fx::Gpu<fx::OutputTransformPass> outputTransform_;
+    fx::Gpu<fx::UiQueuePass> uiQueue_;
 
     fx::PassGroup shadowPass_;    // the shadow map pass: what state it inherited last frame
     std::string noShadowReason_;  // why there is no shadow pass, if there is none

@@ -4,6 +4,7 @@
 
 #include "effects/scene/camera_matrices.hpp"
 #include "image/view_transform.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace lesson03 {
 
@@ -24,16 +25,6 @@ PassState sceneDrawState(const Scene& scene) {
 }
 
 }  // namespace
-
-LitScenePass LitScenePass::create() {
-    LitScenePass pass;
-    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
-                                           "lessons/03_fbo_pipeline/scene_lit.frag",
-                                           {},
-                                           {},
-                                           "scene (lit, shadowed)"});
-    return pass;
-}
 
 ClearColor LitScenePass::windowClearColor(const Scene& scene) {
     auto encode = [](float c) { return float(encodeSrgb(std::clamp(double(c), 0.0, 1.0))); };
@@ -64,7 +55,7 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const Scene& scene, const SceneMe
         if (options.viewport) state.viewport = *options.viewport;
         pass.setState(state);
     }
-    if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
+    runsWith(pass, program_);
     return pass;
 }
 

@@ -95,10 +95,6 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
 
 Status ColourMatrixLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    grading_ = ColourMatrixPass::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
@@ -147,12 +143,12 @@ void ColourMatrixLesson::update(const FrameInfo& frame) {
 
 void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // Exercise 02: the lesson chooses a transform value and hands it to the one setter.
-    grading_.setTransform(blendFromIdentity(selected(frame.step), amount_));
+    grading_->setTransform(blendFromIdentity(selected(frame.step), amount_));
 
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
     DeclaredPass graded = [&] {
         PassGroup::Scope in(graph, gradingGroup_);  // runs only when the scene asks for a colour matrix
-        return grading_.declare(graph, hdr.color);
+        return grading_->declare(graph, hdr.color);
     }();
     const bool calledFor = !lacks(graph, SceneFeature::colorMatrix);
     TextureHandle shown = calledFor ? graded.output : hdr.color;
@@ -160,10 +156,10 @@ void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // The matrix's picture goes left of the divider, where the scene's red box, green sphere and blue
     // cylinder stand (the objects the steps' text talks about); the untouched frame is on the right.
     if (splitView_ && calledFor && !frame.benchmark) {
-        present_.declare(graph, hdr.color, SplitView{graded.output, divider_});
+        present_->declare(graph, hdr.color, SplitView{graded.output, divider_});
         return;
     }
-    present_.declare(graph, shown);
+    present_->declare(graph, shown);
 }
 
 void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
@@ -207,7 +203,7 @@ void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
 }
 
 void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
-    ColourTransform used = grading_.transform();
+    ColourTransform used = grading_->transform();
     out.add("transform", equations(used));
     out.add("needsOffset", !used.linear(), "needs an offset (not a 3x3 matrix)");
     out.add("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))), "white ->");

@@ -49,10 +49,10 @@ private:
     float divider_ = 0.72f;  // right of the blue cylinder: every object but the capsule is processed
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::ColourMatrixPass grading_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::ColourMatrixPass> grading_;
+    fx::Gpu<fx::OutputTransformPass> present_;
     fx::ColourTransform custom_;  // the matrix edited in the overlay (preset "custom")
     fx::PassGroup gradingGroup_ = fx::groupNeeding(fx::SceneFeature::colorMatrix);
     fx::PointDrag dividerDrag_;

@@ -76,10 +76,6 @@ void RadialBlurLesson::declareParams(ParamSet& params) {
 
 Status RadialBlurLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    blur_ = RadialBlur::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
@@ -118,12 +114,12 @@ void RadialBlurLesson::update(const FrameInfo& frame) {
 }
 
 void RadialBlurLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
     RadialBlur::Declared blurred = [&] {
         PassGroup::Scope in(graph, blurGroup_);  // runs only when the scene asks for a radial blur
-        return blur_.declare(graph, hdr.color, paramsForStep(frame.step));
+        return blur_->declare(graph, hdr.color, paramsForStep(frame.step));
     }();
-    present_.declare(graph, lacks(graph, SceneFeature::radialBlur) ? hdr.color : blurred.blur.output);
+    present_->declare(graph, lacks(graph, SceneFeature::radialBlur) ? hdr.color : blurred.blur.output);
 }
 
 bool RadialBlurLesson::blurRan(const FrameInfo& frame) const {

@@ -35,10 +35,10 @@ private:
     int samples_ = 8;
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::RadialBlur blur_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::RadialBlur> blur_;
+    fx::Gpu<fx::OutputTransformPass> present_;
     fx::PassGroup blurGroup_ = fx::groupNeeding(fx::SceneFeature::radialBlur);
     fx::PointDrag centreDrag_;
 

@@ -142,14 +142,6 @@ void BloomLesson::declareParams(ParamSet& params) {
 
 Status BloomLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    chain_ = BloomChain::create();
-    composite_ = BloomComposite::create();
-    reference_glow_ = BloomReference::create();
-    flicker_ = BloomFlicker::create();
-    present_ = OutputTransformPass::create();
-    wholeFrame_ = WholeFrame::create();
     return Status::success();
 }
 
@@ -199,11 +191,11 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         int n =
             int(bloomLevels(graph.outputSize(), firstLevelDivisor(w.chain.filters), w.chain.levels).size());
         w.compositeScale = compositeScale(step, std::max(n, 1));
-        wholeFrame_.declare(graph, *scene_, meshes_, frame, w, chain_, composite_, present_);
+        wholeFrame_->declare(graph, *scene_, *meshes_, frame, w, *chain_, *composite_, *present_);
         return;
     }
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds, sceneFormat);
+    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds, sceneFormat);
     TextureHandle shown = hdr.color;
     ToneCurve curve = step == Beyond ? static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2)) : ToneCurve::clip;
     float exposure = step == Beyond ? exposure_ : 1.0f;
@@ -229,14 +221,14 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};
             for (const BloomLevel& l : levels)
                 r.sigmas.push_back(bloomLevelSigma(l.index, downOffset_, upOffset_));
-            BloomReference::Declared d = reference_glow_.declare(graph, hdr.color, r);
+            BloomReference::Declared d = reference_glow_->declare(graph, hdr.color, r);
             if (!d.empty()) {
                 DeclaredPass result =
-                    composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
+                    composite_->declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
                 if (calledFor) shown = result.output;
             }
         } else {
-            BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
+            BloomChain::Declared d = chain_->declare(graph, hdr.color, settings);
             if (!d.empty()) {
                 int n = int(d.levels.size());
                 // With the blur done at half size (a chain of two levels or more) one bilinear tap
@@ -245,15 +237,15 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 if (settings.wideTop && n > 1) enlarge.reset();
                 BloomCompositeSettings c{enlarge, settings.upOffset, compositeScale(chainStep, n)};
                 if (!runs) {
-                    DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
+                    DeclaredPass result = composite_->declare(graph, hdr.color, d.glow(), c);
                     for (Pass* p : d.passes) p->disable(off);  // a scene without bloom has said why already
                     result.pass.disable(off);
                 } else if (step == Beyond && fused(finish_)) {
                     // The composite and the output transform in one pass: present_ has nothing left to do.
-                    composite_.declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
+                    composite_->declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
                     presented = true;
                 } else {
-                    shown = composite_.declare(graph, hdr.color, d.glow(), c).output;
+                    shown = composite_->declare(graph, hdr.color, d.glow(), c).output;
                 }
                 if (runs) {
                     // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
@@ -263,7 +255,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                         bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
                         flickerStep_ = step;
                         flickerKaris_ = settings.karisAverage;
-                        flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
+                        flicker_->declare(graph, d.glow(), d.levels.front().size, restart);
                     } else {
                         flickerStep_ = -1;  // the next shown frame starts the comparison over
                     }
@@ -271,7 +263,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             }
         }
     }  // the present pass is no part of the bloom group
-    if (!presented) present_.declare(graph, shown, std::nullopt, curve, exposure);
+    if (!presented) present_->declare(graph, shown, std::nullopt, curve, exposure);
 }
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {
@@ -288,7 +280,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
                 : cat("the brightest emitters are ", brightestEmitters(*scene_, 3), ".").c_str());
         return;
     }
-    if (flicker_.stats().measured && !showsReference(step)) {
+    if (flicker_->stats().measured && !showsReference(step)) {
         ImGui::TextWrapped(
             "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
             "frame's|.%s",
@@ -317,7 +309,7 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("reference", showsReference(step), "showing the reference Gaussian");
         out.add("finish", kFinishNames[std::clamp(finish_, 0, 3)], "how the chain ends");
     }
-    const BloomFlicker::Stats& f = flicker_.stats();
+    const BloomFlicker::Stats& f = flicker_->stats();
     if (f.measured && !showsReference(step) && step != WholeFrameStep) {
         out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
         out.add("glowChangeMaxPercent", cat(f.maxPercent),

@@ -66,16 +66,16 @@ private:
     int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::BloomChain chain_;
-    fx::BloomComposite composite_;
-    fx::BloomReference reference_glow_;
-    fx::BloomFlicker flicker_;  // the glow's frame-to-frame change (bloom.flicker)
-    int flickerStep_ = -1;      // the step and Karis setting the flicker measure last compared
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::BloomChain> chain_;
+    fx::Gpu<fx::BloomComposite> composite_;
+    fx::Gpu<fx::BloomReference> reference_glow_;
+    fx::Gpu<fx::BloomFlicker> flicker_;  // the glow's frame-to-frame change (bloom.flicker)
+    int flickerStep_ = -1;               // the step and Karis setting the flicker measure last compared
     bool flickerKaris_ = false;
-    fx::OutputTransformPass present_;
-    WholeFrame wholeFrame_;  // step 6
+    fx::Gpu<fx::OutputTransformPass> present_;
+    fx::Gpu<WholeFrame> wholeFrame_;  // step 6
     // Every bloom pass (chain, composite, flicker view, reference): its time, and the scene's say.
     fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
 };

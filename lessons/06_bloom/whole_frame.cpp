@@ -83,16 +83,6 @@ bool followsChapterTable(const std::vector<std::string>& executed, std::string* 
     return true;
 }
 
-WholeFrame WholeFrame::create() {
-    WholeFrame w;
-    w.shadows_ = ShadowMap::create();
-    w.lit_ = ShadowLitPass::create();
-    w.blur_ = RadialBlur::create();
-    w.grading_ = ColourMatrixPass::create();
-    w.ui_ = UiQueuePass::create();
-    return w;
-}
-
 void WholeFrame::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
                          const FrameInfo& frame, const WholeFrameSettings& settings, const BloomChain& chain,
                          const BloomComposite& composite, const OutputTransformPass& present) {

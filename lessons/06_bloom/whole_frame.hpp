@@ -55,9 +55,6 @@ struct WholeFrameSettings {
 
 class WholeFrame {
 public:
-    WholeFrame() = default;  // empty: no GL yet
-    static WholeFrame create();
-
     // Declares the frame. `chain`, `composite` and `present` are the lesson's (one program each);
     // `scene` and `meshes` must outlive the frame.
     void declare(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,

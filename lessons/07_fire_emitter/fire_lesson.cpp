@@ -78,13 +78,6 @@ void FireLesson::declareParams(ParamSet& params) {
 
 Status FireLesson::init(const Scene& scene) {
     scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    chain_ = BloomChain::create();
-    bloom_ = BloomComposite::create();
-    present_ = OutputTransformPass::create();
-    composite_ = FullscreenPass("effects/particles/particles_composite.frag", "particles: composite");
-    renderer_ = ParticleRenderer::create();
     // One sprite for every emitter that has one (one texture, one draw); a sprite that cannot be read
     // stops the run with its path.
     const ParticleEmitter* first = nullptr;
@@ -92,7 +85,7 @@ Status FireLesson::init(const Scene& scene) {
         if (e.sprite.empty()) continue;
         if (!first) {
             first = &e;
-            if (Status s = renderer_.loadSprite(e.sprite.resolved); !s) return s;
+            if (Status s = renderer_->loadSprite(e.sprite.resolved); !s) return s;
         } else if (e.sprite.resolved != first->sprite.resolved) {
             log::warning("emitter '", e.name, "' asks for sprite ", e.sprite.path,
                          "; lesson 07 draws every emitter with ", first->sprite.path);
@@ -109,7 +102,7 @@ void FireLesson::update(const FrameInfo& frame) {
 
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
     const bool particles = !lacks(graph, SceneFeature::particles);
 
     // The simulation's setup follows the step and the parameters; a change starts it over. Without an
@@ -201,11 +194,12 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                           .colorMask = ColorMask{},
                                           .clearColor = ClearColor{0, 0, 0, 0}});
             if (particles && !inView) off.notCalledFor(notInView);
-            const FullscreenPass* composite = &composite_;
-            Pass& over = graph.addPass("particles.composite", [composite, color](PassContext& ctx) {
-                glProgramUniform1f(composite->program(), 0, kSceneHdrMax);
-                composite->draw({GLuint(ctx.native(color))});
-            });
+            const FullscreenPass* composite = &*composite_;
+            Pass& over =
+                composite_->addPass(graph, "particles.composite", [composite, color](PassContext& ctx) {
+                    glProgramUniform1f(composite->program(), 0, kSceneHdrMax);
+                    composite->draw({GLuint(ctx.native(color))});
+                });
             PassState state = FullscreenPass::state();
             state.blend = true;
             state.blendFunction = BlendFunction::premultipliedAlpha();
@@ -218,16 +212,16 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     {
         PassGroup::Scope in(graph, bloomGroup_);
         BloomChainSettings settings = chapter000Bloom(threshold_, intensity_, 6);
-        BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
+        BloomChain::Declared d = chain_->declare(graph, hdr.color, settings);
         if (!d.empty()) {
             BloomCompositeSettings c{settings.filters, settings.upOffset,
                                      chapter000CompositeScale(int(d.levels.size()))};
-            DeclaredPass result = bloom_.declare(graph, hdr.color, d.glow(), c);
+            DeclaredPass result = bloom_->declare(graph, hdr.color, d.glow(), c);
             if (!lacks(graph, SceneFeature::bloom)) shown = result.output;
         }
     }
     // Steps 1 and 2 clip like the chapter; from step 3 a filmic curve keeps the flame's colour.
-    present_.declare(graph, shown, std::nullopt, step <= Hitch ? ToneCurve::clip : ToneCurve::filmic, 1.0f);
+    present_->declare(graph, shown, std::nullopt, step <= Hitch ? ToneCurve::clip : ToneCurve::filmic, 1.0f);
 }
 
 void FireLesson::drawPanel(const FrameInfo& frame) {
@@ -264,8 +258,8 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("drawCalls", std::to_string(drawCalls_), "particle draw calls");
     std::uint32_t live = system_.liveCount();
     std::uint64_t replaced = system_.replacedCount();
-    if (setup_.path == Path::gpu && !frame.benchmark) {
-        GpuParticleStats stats = gpu_.readStats();
+    if (setup_.path == Path::gpu && gpu_ && !frame.benchmark) {
+        GpuParticleStats stats = gpu_->readStats();
         live = stats.live;
         replaced = stats.replaced;
     }
@@ -276,7 +270,7 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("simulateCpuMs", cat(simulateMs_), "simulation on the CPU (ms)");
     out.add("drawCpuMs", cat(drawCpuMs_), "issuing the draws on the CPU (ms)");
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
-    std::uint64_t bytes = setup_.path == Path::gpu ? gpu_.bytes() : renderer_.instanceBytes();
+    std::uint64_t bytes = setup_.path == Path::gpu ? (gpu_ ? gpu_->bytes() : 0) : renderer_->instanceBytes();
     out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");
     out.add("buffers",
             setup_.path == Path::gpu

@@ -72,13 +72,14 @@ private:
     float intensity_ = 2.0f;
 
     const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::ParticleRenderer renderer_;
-    fx::FullscreenPass composite_;
-    fx::BloomChain chain_;
-    fx::BloomComposite bloom_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::ParticleRenderer> renderer_;
+    fx::Gpu<fx::FullscreenPass> composite_{"effects/particles/particles_composite.frag",
+                                           "particles: composite"};
+    fx::Gpu<fx::BloomChain> chain_;
+    fx::Gpu<fx::BloomComposite> bloom_;
+    fx::Gpu<fx::OutputTransformPass> present_;
     fx::PassGroup particleGroup_ = fx::groupNeeding(fx::SceneFeature::particles);
     fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
 
@@ -86,7 +87,7 @@ private:
     Setup setup_;
     bool configured_ = false;
     fx::ParticleSystem system_;
-    fx::GpuParticles gpu_;
+    std::optional<fx::GpuParticles> gpu_;   // the GPU path's pool, made when that path is configured
     double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm
     std::vector<fx::GpuParticle> visible_;  // CPU paths: the live particles in draw order
     double pendingDt_ = 0;                  // time since the simulation last ran, for the pass body

@@ -42,7 +42,7 @@ FireLesson::Setup FireLesson::setupFor(int step) const {
     const bool beyond = step == Beyond;
     for (const ParticleEmitter& e : scene_->emitters) {
         if (!beyond && e.kind != EmitterKind::fire) continue;  // smoke and sparks are step 5's
-        EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_.hasSprite()};
+        EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_->hasSprite()};
         if (e.kind == EmitterKind::fire) s.emitter.spinDegreesPerSecond += spin_;
         if (step == Objects) s.rules = {true, true};
         if (step == Hitch) {
@@ -84,14 +84,17 @@ void FireLesson::configure(const Setup& setup) {
     configured_ = true;
     const bool gpu = setup.path == Path::gpu;
     system_ = ParticleSystem(setup.emitters, !gpu);
-    gpu_ = gpu ? GpuParticles::create(system_) : GpuParticles();
+    if (gpu)
+        gpu_.emplace(system_);
+    else
+        gpu_.reset();
     restart();
 }
 
 void FireLesson::restart() {
     const bool gpu = setup_.path == Path::gpu;
     system_ = ParticleSystem(setup_.emitters, !gpu);
-    gpu_.clear();
+    if (gpu_) gpu_->clear();
     // Start from a steady flame. The fixed rules catch up in one step (every spawn owed, born at its
     // time); the chapter's timer needs frame by frame.
     double longest = 0;
@@ -114,9 +117,9 @@ void FireLesson::simulate(double dt) {
     Clock::time_point start = Clock::now();
     dt += std::exchange(firstDt_, 0.0);
     system_.update(dt);
-    renderer_.setEmitters(system_.emitters());
+    renderer_->setEmitters(system_.emitters());
     if (setup_.path == Path::gpu) {
-        gpu_.simulate(system_, dt, renderer_.emitterBuffer());
+        gpu_->simulate(system_, dt, renderer_->emitterBuffer());
         visible_.clear();
     } else {
         system_.collect(visible_);
@@ -152,7 +155,7 @@ void FireLesson::simulate(double dt) {
 
 void FireLesson::drawPoolView(GLuint texture, int rows) const {
     if (setup_.path == Path::gpu) {
-        gpu_.drawPoolView(texture, int(system_.emitters().size()));
+        gpu_->drawPoolView(texture, int(system_.emitters().size()));
     } else {
         std::vector<float> texels = system_.poolViewTexels(rows);
         glTextureSubImage2D(texture, 0, 0, 0, 256, rows, GL_RGBA, GL_FLOAT, texels.data());
@@ -164,13 +167,13 @@ int FireLesson::draw(const ParticleDrawSettings& settings) {
     int calls = 0;
     switch (setup_.path) {
         case Path::objects:
-            calls = renderer_.drawObjects(visible_, settings);
+            calls = renderer_->drawObjects(visible_, settings);
             break;
         case Path::instanced:
-            calls = renderer_.drawInstanced(visible_, settings);
+            calls = renderer_->drawInstanced(visible_, settings);
             break;
         case Path::gpu:
-            calls = renderer_.drawIndirect(gpu_, settings);
+            calls = renderer_->drawIndirect(*gpu_, settings);
             break;
     }
     drawCpuMs_ = msSince(start);

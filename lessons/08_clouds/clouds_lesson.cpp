@@ -123,13 +123,6 @@ Status CloudsLesson::init(const Scene& scene) {
         sceneShadow_ = light->shadow;
         sunDirection_ = light->direction;
     }
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    lit_ = ShadowLitPass::create();
-    clouds_ = CloudPass::create();
-    cloudShadow_ = CloudShadowPass::create();
-    temporal_ = CloudTemporal::create();
-    present_ = OutputTransformPass::create();
     if (!scene.clouds.empty()) {
         // Only a scene with a cloud layer loads the texture: without one, no bytes and no pass.
         const CloudLayer& layer = scene.clouds.front();
@@ -216,8 +209,8 @@ CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const
 void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const Scene& scene = viewScene_;
     ShadowSettings settings = sceneShadow_;
-    DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, {});
-    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map);
+    DeclaredShadowMap map = shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, {});
+    HdrSceneTargets hdr = lit_->declare(graph, scene, *meshes_, frame.seconds, map);
 
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     jitterFrame_ = (jitterFrame_ + 1) % 1024;
@@ -237,18 +230,18 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         if (frame.step == Beyond && cloudShadows_) {
             CloudShadowSettings shadow;
             shadow.toLight = cloudShadowToLight(sunDirection_);
-            cloudShadow_.declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
+            cloudShadow_->declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
         }
         if (temporal) {
             CloudTemporalOptions options{q.accumulate, q.halfResolution};
-            temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
-                              settingsKey(s, frame.step), frame.size);
+            temporal_->declare(graph, *clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
+                               settingsKey(s, frame.step), frame.size);
         } else {
-            clouds_.declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+            clouds_->declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
         }
     }
-    shadows_.declareDepthView(graph, map);
-    present_.declare(graph, hdr.color);
+    shadows_->declareDepthView(graph, map);
+    present_->declare(graph, hdr.color);
 }
 
 std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) const {
@@ -291,8 +284,8 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (frame.step >= ThresholdHeight)
         out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
     if (frame.step == Beyond) {
-        out.add("framesAveraged", std::to_string(temporal_.framesAveraged()), "frames in the average");
-        out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
+        out.add("framesAveraged", std::to_string(temporal_->framesAveraged()), "frames in the average");
+        out.add("historyBytes", std::to_string(temporal_->historyBytes()), "history textures (bytes)");
         out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
         out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
         // The sun's height decides the shadow's path through the slab (thickness / sin, sin held at 0.1 or

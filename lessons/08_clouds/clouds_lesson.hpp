@@ -82,15 +82,15 @@ private:
     const fx::Scene* scene_ = nullptr;
     fx::Scene viewScene_;  // the scene with the camera lifted by camera_lift (the same for every pass)
     fx::ShadowSettings sceneShadow_;
-    fx::SceneMeshes meshes_;
-    fx::ShadowMap shadows_;
-    fx::ShadowLitPass lit_;
-    fx::CloudPass clouds_;
-    fx::CloudShadowPass cloudShadow_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::ShadowMap> shadows_;
+    fx::Gpu<fx::ShadowLitPass> lit_;
+    fx::Gpu<fx::CloudPass> clouds_;
+    fx::Gpu<fx::CloudShadowPass> cloudShadow_;
     glm::vec3 sunDirection_{0.0f, -1.0f, 0.0f};  // where the shadow-casting light travels
     fx::CloudDensityTexture density_;            // loaded only when the scene has a cloud layer
-    fx::OutputTransformPass present_;
-    fx::CloudTemporal temporal_;
+    fx::Gpu<fx::OutputTransformPass> present_;
+    fx::Gpu<fx::CloudTemporal> temporal_;
     int jitterFrame_ = 0;  // counts declared frames: moves IGN and R2 (the bench repeats one frame index)
     fx::CloudScroll scroll_;
     glm::dvec4 scrollSpeed_{0.0};

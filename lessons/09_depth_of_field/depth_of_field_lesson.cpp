@@ -96,11 +96,6 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
 Status DepthOfFieldLesson::init(const Scene& scene) {
     scene_ = &scene;
     view_ = scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    dof_ = DepthOfField::create();
-    reference_ = DofReference::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
@@ -141,7 +136,7 @@ Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
 void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
     view_.camera = cameraFor(step, frame.size);
-    HdrSceneTargets hdr = scenePass_.declare(graph, view_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, view_, *meshes_, frame.seconds);
     const ThinLensModel model = lensModel(frame.size);
     const DofLensUniforms lens = dofLensUniforms(model);
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
@@ -151,15 +146,15 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
         if (step == Naive || step == MovedCamera) {
-            shown = dof_.declareNaive(graph, hdr.color, hdr.depth, {}).output;
+            shown = dof_->declareNaive(graph, hdr.color, hdr.depth, {}).output;
         } else if (step >= PhysicalCamera) {
-            TextureHandle coc = dof_.declareCoc(graph, hdr.depth, lens).output;
+            TextureHandle coc = dof_->declareCoc(graph, hdr.depth, lens).output;
             if (step == PhysicalCamera) {
-                shown = dof_.declareHeatMap(graph, hdr.color, coc, lens).output;
+                shown = dof_->declareHeatMap(graph, hdr.color, coc, lens).output;
                 curve = ToneCurve::clip;  // the heat map's colours are display colours
                 exposure = 1.0f;
             } else if (step == ChapterShader || (step == Beyond && method_ == 0 && !benchReference_)) {
-                shown = dof_.declareChapter(graph, hdr.color, coc, lens).output;
+                shown = dof_->declareChapter(graph, hdr.color, coc, lens).output;
             } else if (showsReference(step)) {
                 DofReferenceSettings r;
                 r.camera = view_.camera;
@@ -168,14 +163,14 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                              r.camera.fovYDegrees, frame.size.height);
                 r.focusM = float(model.focusM);
                 r.samples = referenceSamples_;
-                shown = reference_.declare(graph, view_, meshes_, frame.seconds, r).output;
+                shown = reference_->declare(graph, view_, *meshes_, frame.seconds, r).output;
             } else {
                 DofGatherSettings g{taps_, resolution_ == 1, fields_ == 1, highlight_};
-                shown = dof_.declareGather(graph, hdr.color, coc, lens, g).result;
+                shown = dof_->declareGather(graph, hdr.color, coc, lens, g).result;
             }
         }
     }
-    present_.declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+    present_->declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
 }
 
 void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {

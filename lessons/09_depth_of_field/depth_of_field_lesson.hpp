@@ -63,11 +63,11 @@ private:
 
     const fx::Scene* scene_ = nullptr;
     fx::Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::DepthOfField dof_;
-    fx::DofReference reference_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::SceneMeshes> meshes_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::DepthOfField> dof_;
+    fx::Gpu<fx::DofReference> reference_;
+    fx::Gpu<fx::OutputTransformPass> present_;
     fx::PassGroup dofGroup_ = fx::groupNeeding(fx::SceneFeature::depthOfField);
 };
 

@@ -68,19 +68,8 @@ Status DeferredShadingLesson::init(const Scene& scene) {
     allLights_ = allLights(scene);
     pointLightsInScene_ = int(std::count_if(allLights_.begin(), allLights_.end(),
                                             [](const Light& l) { return l.type == LightType::point; }));
-    meshes_ = SceneMeshes(scene);
-    rtt_ = fx::RenderToTexture::create();
-    rttToScreen_ = FullscreenPass("common/copy.frag", "rtt to screen");
-    mrt_ = LectureMrt::create();
-    gbuffer_ = GBufferPass::create();
-    shadows_ = ShadowMap::create();
-    lights_ = PointLightBuffer::create();
-    lighting_ = DeferredLighting::create();
-    culling_pass_ = TiledCulling::create();
-    reflection_ = PlanarReflection::create(scene);
-    present_ = OutputTransformPass::create();
-    rttAttachments_[0] = rtt_.attachmentsText(RttDepth::renderbuffer);
-    rttAttachments_[1] = rtt_.attachmentsText(RttDepth::texture);
+    rttAttachments_[0] = rtt_->attachmentsText(RttDepth::renderbuffer);
+    rttAttachments_[1] = rtt_->attachmentsText(RttDepth::texture);
     return Status::success();
 }
 
@@ -100,7 +89,7 @@ void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
     glm::vec3 offset = worldOffsetFor(frame.step);
     int count = std::clamp(lightCount_, 1, kMaxGridLights);
     if (offset != uploadedOffset_ || count != uploadedCount_) {
-        lights_.upload(gpuPointLights(allLights_, count, offset));
+        lights_->upload(gpuPointLights(allLights_, count, offset));
         uploadedOffset_ = offset;
         uploadedCount_ = count;
     }
@@ -112,17 +101,17 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     const int step = frame.step;
     DeclaredShadowMap shadow;
     if (const Light* sun = shadowCastingLight(scene))
-        shadow = shadows_.declare(graph, scene, meshes_, frame.seconds, sun->shadow, ShadowPassOptions{});
+        shadow = shadows_->declare(graph, scene, *meshes_, frame.seconds, sun->shadow, ShadowPassOptions{});
 
     GBufferOptions options{layoutFor(step), step == Layout && !frame.benchmark, worldOffsetFor(step)};
-    GBufferTargets g = gbuffer_.declare(graph, scene, meshes_, frame.seconds, options);
-    if (!frame.benchmark) lighting_.declareViews(graph, scene, g);
+    GBufferTargets g = gbuffer_->declare(graph, scene, *meshes_, frame.seconds, options);
+    if (!frame.benchmark) lighting_->declareViews(graph, scene, g);
 
     std::optional<CulledTiles> tiles;
     if (culls(step)) {
         PassGroup::Scope in(graph, cullingGroup_);
-        CulledTiles culled = culling_pass_.declare(graph, scene, g, lights_);
-        if (culling_ == 0) culling_pass_.lastPass()->disable("culling: none (the parameter)");
+        CulledTiles culled = culling_pass_->declare(graph, scene, g, *lights_);
+        if (culling_ == 0) culling_pass_->lastPass()->disable("culling: none (the parameter)");
         // Without many lights the culling pass is not called for (the scene's reason is in the pass
         // table), and every light is evaluated: a handful costs less than a pass that sorts them.
         else if (!lacks(graph, SceneFeature::manyLights))
@@ -131,19 +120,19 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     TextureHandle lit;
     {
         PassGroup::Scope in(graph, lightingGroup_);
-        lit = lighting_.declare(graph, scene, g, lights_, shadow, tiles);
+        lit = lighting_->declare(graph, scene, g, *lights_, shadow, tiles);
     }
     shown = lit;
     if (step == Reflection) {
         PassGroup::Scope in(graph, reflectionGroup_);
-        reflection_.declare(graph, scene, meshes_, frame.seconds, lights_, g, lit,
-                            kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
+        reflection_->declare(graph, scene, *meshes_, frame.seconds, *lights_, g, lit,
+                             kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
         return;
     }
     if (step == Layout && options.referencePosition)
-        split = SplitView{lighting_.declarePositionError(graph, scene, g), divider_};
+        split = SplitView{lighting_->declarePositionError(graph, scene, g), divider_};
     if (tiles && !frame.benchmark)
-        split = SplitView{culling_pass_.declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 32, 8)),
+        split = SplitView{culling_pass_->declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 32, 8)),
                           divider_};
 }
 
@@ -155,34 +144,34 @@ void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame
     switch (frame.step) {
         case RenderToTexture: {
             TextureHandle color =
-                rtt_.declare(graph, scene, meshes_, frame.seconds, static_cast<RttDepth>(rttDepth_ != 0));
+                rtt_->declare(graph, scene, *meshes_, frame.seconds, static_cast<RttDepth>(rttDepth_ != 0));
             // The 512 x 512 texture, stretched over the window: sampled in [0, 1], whatever the sizes.
-            const FullscreenPass* copy = &rttToScreen_;
-            Pass& pass = graph.addPass("rtt to screen",
-                                       [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
-            pass.read(color).setState(FullscreenPass::state());
+            const FullscreenPass* copy = &*rttToScreen_;
+            Pass& pass = rttToScreen_->addPass(
+                graph, "rtt to screen", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
+            pass.read(color);
             shown = pass.create("rtt.shown", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                 TextureUsage::ColorAttachment);
             break;
         }
         case ThreeTargets: {
-            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds,
-                                        slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
-            shown = mrt_.declareComposite(graph, scene, t);
+            MrtTargets t = mrt_->declare(graph, scene, *meshes_, frame.seconds,
+                                         slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
+            shown = mrt_->declareComposite(graph, scene, t);
             break;
         }
         case Sharpen: {
-            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds, MrtOrder::fixed, &mrtStats_);
-            SharpenTargets s = mrt_.declareSharpen(graph, scene, t);
+            MrtTargets t = mrt_->declare(graph, scene, *meshes_, frame.seconds, MrtOrder::fixed, &mrtStats_);
+            SharpenTargets s = mrt_->declareSharpen(graph, scene, t);
             shown = s.clipped;
-            split = SplitView{mrt_.declareRangeView(graph, s), divider_};
+            split = SplitView{mrt_->declareRangeView(graph, s), divider_};
             break;
         }
         default:
             declareDeferred(graph, frame, shown, split);
             break;
     }
-    present_.declare(graph, shown, split);
+    present_->declare(graph, shown, split);
 }
 
 void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
@@ -209,7 +198,7 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("bytesPerPixel", std::to_string(gbufferBytesPerPixel(layout)), "G-buffer bytes per pixel");
     out.add("gbufferMiB", cat(double(pixels * gbufferBytesPerPixel(layout)) / (1024.0 * 1024.0)),
             "G-buffer at this size (MiB)");
-    out.add("pointLights", std::to_string(lights_.count()),
+    out.add("pointLights", std::to_string(lights_->count()),
             cat("point lights (of ", pointLightsInScene_, ")"));
     if (step == Layout) {
         float at = std::abs(worldOffsetFor(step).x) + 10.0f;

@@ -12,13 +12,9 @@
 namespace fx::test {
 
 struct BloomEffects {
-    BloomChain chain = BloomChain::create();
-    BloomComposite composite = BloomComposite::create();
-    BloomReference reference = BloomReference::create();
-    bool usable() const { return chain.usable() && composite.usable() && reference.usable(); }
-    std::string error() const {
-        return !chain.usable() ? chain.error() : !composite.usable() ? composite.error() : reference.error();
-    }
+    BloomChain chain;
+    BloomComposite composite;
+    BloomReference reference;
 };
 
 // What the texture `which` holds after the chain and composite ran: "result" is bloom.result, "glow"

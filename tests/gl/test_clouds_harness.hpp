@@ -79,8 +79,7 @@ class CloudsOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        pass = CloudPass::create();
-        ASSERT_TRUE(pass.usable()) << pass.error();
+        ASSERT_TRUE(programsBuilt());
         constant = CloudDensityTexture::fromImage(constantDensity(188));
         a = 2.0f * srgbDecode(188.0f / 255.0f);
     }

@@ -60,12 +60,10 @@ protected:
         auto loaded = loadScene(resourceDir() / "scenes/02_skinned_shadows.json", options);
         ASSERT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
         scene = std::move(*loaded);
-        shadows = ShadowMap::create();
-        ASSERT_TRUE(shadows.usable()) << shadows.error();
+        ASSERT_TRUE(programsBuilt());
     }
     void TearDown() override {
         meshes.reset();
-        shadows = ShadowMap();
         GlTest::TearDown();
     }
 

@@ -132,7 +132,7 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
-    GBufferPass gbuffer = GBufferPass::create();
+    GBufferPass gbuffer;
     const Size2D size{96, 54};
     GraphRunner runner(size.width, size.height);
     auto measure = [&](GBufferLayout layout, float offset) {

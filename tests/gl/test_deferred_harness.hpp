@@ -111,11 +111,7 @@ inline glm::vec3 expectedLight(const Scene& scene, glm::vec3 p, glm::vec3 n, con
 
 class DeferredHardCases : public GlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        lighting = DeferredLighting::create();
-        lights = PointLightBuffer::create();
-    }
+    void SetUp() override { GlTest::SetUp(); }
 
     // The lesson's own scene, with its assets resolved from res/.
     static Result<Scene> loadShippedScene() {

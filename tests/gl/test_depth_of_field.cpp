@@ -37,8 +37,7 @@ class DepthOfFieldOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        effect = DepthOfField::create();
-        ASSERT_TRUE(effect.usable()) << effect.error();
+        ASSERT_TRUE(programsBuilt());
     }
 
     // Runs `declare` on `colour` (RGBA32F) with a depth texture (R32F) filled by depth(x, y).

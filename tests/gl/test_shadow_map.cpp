@@ -78,15 +78,10 @@ protected:
         GlTest::SetUp();
         scene = loadLessonScene();
         meshes.emplace(scene);
-        shadows = ShadowMap::create();
-        ASSERT_TRUE(shadows.usable()) << shadows.error();
-        lit = ShadowLitPass::create();
-        ASSERT_TRUE(lit.usable()) << lit.error();
+        ASSERT_TRUE(programsBuilt());
     }
     void TearDown() override {
         meshes.reset();
-        shadows = ShadowMap();
-        lit = ShadowLitPass();
         GlTest::TearDown();
     }
 

@@ -51,8 +51,7 @@ protected:
     GpuSkinning skinning;
     void SetUp() override {
         GlTest::SetUp();
-        skinning = GpuSkinning::create();
-        ASSERT_TRUE(skinning.usable()) << skinning.error();
+        ASSERT_TRUE(programsBuilt());
     }
 };
 

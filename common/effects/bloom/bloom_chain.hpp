@@ -15,7 +15,7 @@
 // Sizes follow the output every frame (render/bloom_levels.hpp); a level below one texel is not made,
 // and an output too small for even the first level declares nothing.
 //
-//   BloomChain chain = BloomChain::create();
+//   BloomChain chain;
 //   BloomChain::Declared d = chain.declare(graph, hdr.color, chapter001Bloom());
 //   composite.declare(graph, hdr.color, d, ...);
 #include <string>
@@ -44,25 +44,15 @@ std::string bloomShaderDefines();
 // Whatever a texture's own parameters say, the bloom passes filter the same way.
 class BloomSampler {
 public:
-    BloomSampler() = default;
-    static BloomSampler create();
     void bind() const;
     static void unbind();
 
 private:
-    gl::SamplerName sampler_;
+    gl::SamplerName sampler_ = gl::createLinearClampSampler("bloom (linear, clamp to edge)");
 };
 
 class BloomChain {
 public:
-    BloomChain() = default;  // empty: no GL yet
-    static BloomChain create();
-
-    // Whether the programs for the chapters' default settings built (the others build when a frame
-    // first asks for them, and a pass whose program did not build is switched off with its error).
-    bool usable() const { return error().empty(); }
-    std::string error() const;
-
     struct Declared {
         BloomChainSettings settings;
         std::vector<BloomLevel> levels;   // those that exist at this output size
@@ -73,13 +63,15 @@ public:
         // The top of the accumulated chain (bloom.up[0], or bloom.down[0] for a one-level chain).
         TextureHandle glow() const { return up.empty() ? down.front() : up.front(); }
     };
-    // Declares nothing when no level fits the output.
+    // Declares nothing when no level fits the output. The programs for `settings` build when a frame
+    // first asks for them; when one of them did not build, the whole chain is switched off with its
+    // error.
     Declared declare(FrameGraph& graph, TextureHandle input, const BloomChainSettings& settings) const;
 
 private:
-    FullscreenVariants extract_;
-    FullscreenVariants down_;
-    FullscreenVariants up_;
+    FullscreenVariants extract_{"effects/bloom/extract.frag", "bloom bright pass", bloomShaderDefines()};
+    FullscreenVariants down_{"effects/bloom/downsample.frag", "bloom downsample", bloomShaderDefines()};
+    FullscreenVariants up_{"effects/bloom/upsample.frag", "bloom upsample", bloomShaderDefines()};
     BloomSampler sampler_;
 };
 

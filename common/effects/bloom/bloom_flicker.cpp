@@ -12,12 +12,6 @@ namespace {
 constexpr GLint kHasPrevious = 0;
 }  // namespace
 
-BloomFlicker BloomFlicker::create() {
-    BloomFlicker f;
-    f.pass_ = FullscreenPass("effects/bloom/flicker.frag", "bloom flicker");
-    return f;
-}
-
 DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D size, bool restart) {
     const int mips = fullMipChainLength(size.width, size.height);
     if (size != size_ || !history_[0]) {
@@ -53,7 +47,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
 
     const bool hasPrevious = valid_;
     const FullscreenPass* program = &pass_;
-    Pass& pass = graph.addPass("bloom flicker", [=, this](PassContext& ctx) {
+    Pass& pass = pass_.addPass(graph, "bloom flicker", [=, this](PassContext& ctx) {
         glProgramUniform1i(program->program(), kHasPrevious, hasPrevious ? 1 : 0);
         program->draw({ctx.native(glow), ctx.native(prev)});
         // The glow's energy: the mean of this frame's copy, from its 1x1 mip (one texel read back).
@@ -64,8 +58,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
         valid_ = true;
         ranLastFrame_ = true;
     });
-    pass.read(glow).read(prev).writeColor(out).writeColor(next).setState(FullscreenPass::state());
-    if (!usable()) pass.disable("the flicker program did not build: " + error());
+    pass.read(glow).read(prev).writeColor(out).writeColor(next);
     return {pass, out};
 }
 

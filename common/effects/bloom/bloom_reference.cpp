@@ -1,7 +1,7 @@
 #include "effects/bloom/bloom_reference.hpp"
 
 #include "base/log.hpp"
-#include "effects/post/fullscreen_variants.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -11,25 +11,14 @@ constexpr GLint kDirectionLocation = 0, kSigmaLocation = 1, kScaleLocation = 2;
 
 }  // namespace
 
-BloomReference BloomReference::create() {
-    BloomReference r;
-    // One texel of the same size (filter 2), no Karis average: the bright part exactly, per pixel.
-    r.extract_ =
-        FullscreenPass("effects/bloom/extract.frag", "bloom reference bright pass",
-                       bloomShaderDefines() + shaderDefines({{"BLOOM_FILTERS", 2}, {"BLOOM_KARIS", 0}}));
-    r.gaussian_ = FullscreenPass("effects/bloom/gaussian.frag", "bloom reference Gaussian");
-    return r;
-}
-
 BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandle input,
                                                  const BloomReferenceSettings& settings) const {
     Declared d;
     if (graph.outputSize().empty() || settings.sigmas.empty()) return d;
     const TextureDesc full{TextureSize::output(), TextureFormat::RGBA32F, 1};
-    std::string broken = usable() ? std::string() : "a bloom reference program did not build: " + error();
 
     const FullscreenPass* extract = &extract_;
-    Pass& bright = graph.addPass("bloom reference bright", [=](PassContext& ctx) {
+    Pass& bright = extract_.addPass(graph, "bloom reference bright", [=](PassContext& ctx) {
         GLuint p = extract->program();
         glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
         glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
@@ -38,7 +27,7 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
         extract->draw({ctx.native(input)});
     });
     d.bright = bright.create("bloom.reference.bright", full, TextureUsage::ColorAttachment);
-    bright.read(input).setState(FullscreenPass::state());
+    bright.read(input);
     d.passes.push_back(&bright);
 
     const FullscreenPass* gaussian = &gaussian_;
@@ -53,14 +42,15 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
     for (std::size_t k = 0; k < settings.sigmas.size(); ++k) {
         double sigma = settings.sigmas[k];
         TextureHandle source = d.bright;
-        Pass& x = graph.addPass(cat("bloom reference x ", k),
-                                [=](PassContext& ctx) { blur(ctx.native(source), 1, 0, sigma, 1.0f); });
+        Pass& x = gaussian_.addPass(graph, cat("bloom reference x ", k),
+                                    [=](PassContext& ctx) { blur(ctx.native(source), 1, 0, sigma, 1.0f); });
         TextureHandle blurred =
             x.create(cat("bloom.reference.blur_x[", k, "]"), full, TextureUsage::ColorAttachment);
-        x.read(source).setState(FullscreenPass::state());
+        x.read(source);
         float weight = settings.levelWeight;
-        Pass& y = graph.addPass(cat("bloom reference y ", k),
-                                [=](PassContext& ctx) { blur(ctx.native(blurred), 0, 1, sigma, weight); });
+        Pass& y = gaussian_.addPass(graph, cat("bloom reference y ", k), [=](PassContext& ctx) {
+            blur(ctx.native(blurred), 0, 1, sigma, weight);
+        });
         y.read(blurred);
         PassState state = FullscreenPass::state();
         if (k == 0) {
@@ -76,9 +66,7 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
         d.passes.push_back(&x);
         d.passes.push_back(&y);
     }
-    if (!broken.empty()) {
-        for (Pass* p : d.passes) p->disable(broken);
-    }
+    runTogether(d.passes);
     return d;
 }
 

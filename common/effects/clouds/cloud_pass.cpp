@@ -119,12 +119,6 @@ std::uint64_t CloudDensityTexture::bytes() const {
     return texture_ ? textureBytes(texture_.spec()) : 0;
 }
 
-CloudPass CloudPass::create() {
-    CloudPass p;
-    p.programs_ = FullscreenVariants("effects/clouds/clouds.frag", "clouds");
-    return p;
-}
-
 const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
     const int stage = int(s.stage);
     int features = 0;
@@ -136,15 +130,6 @@ const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
                           {"CLOUD_FEATURES", features},
                           {"CLOUD_DITHER", dither},
                           {"CLOUD_PREMULTIPLY", s.premultiplied ? 1 : 0}});
-}
-
-const FullscreenPass& CloudPass::fullest() const {
-    CloudFrameSettings s;
-    s.stage = CloudStage::march;
-    s.features = kMarchFeatures;
-    s.dither = CloudDither::ign;
-    s.premultiplied = true;
-    return programFor(s);
 }
 
 PassState CloudPass::state() {
@@ -219,7 +204,8 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
     s.premultiplied = false;
     s.depthStride = 1;
     MarchInputs m = marchInputs(inputs, s);
-    Pass& pass = graph.addPass("clouds", marchBody(&programFor(s), s, m, &density));
+    const FullscreenPass& program = programFor(s);
+    Pass& pass = program.addPass(graph, "clouds", marchBody(&program, s, m, &density));
     pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
@@ -233,11 +219,11 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     s.premultiplied = true;
     s.depthStride = divisor;
     MarchInputs m = marchInputs(inputs, s);
-    Pass& pass = graph.addPass("clouds march", marchBody(&programFor(s), s, m, &density));
+    const FullscreenPass& program = programFor(s);
+    Pass& pass = program.addPass(graph, "clouds march", marchBody(&program, s, m, &density));
     TextureHandle layer =
         pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                     TextureUsage::ColorAttachment);
-    pass.setState(FullscreenPass::state());
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
     return layer;

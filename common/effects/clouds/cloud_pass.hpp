@@ -108,14 +108,6 @@ struct CloudInputs {
 
 class CloudPass {
 public:
-    CloudPass() = default;  // empty: no GL yet
-    static CloudPass create();
-
-    // Whether the program that holds the most code builds (the march with every feature, jitter and
-    // premultiplied output); the others differ from it only by #defines.
-    bool usable() const { return fullest().usable(); }
-    const std::string& error() const { return fullest().error(); }
-
     // The program for these settings: the stage, the features that stage reads, the dither and the
     // premultiplied output are #defines (clouds.frag), one program per combination, built on first use.
     const FullscreenPass& programFor(const CloudFrameSettings& settings) const;
@@ -137,9 +129,7 @@ public:
     static PassState state();
 
 private:
-    const FullscreenPass& fullest() const;
-
-    FullscreenVariants programs_;
+    FullscreenVariants programs_{"effects/clouds/clouds.frag", "clouds"};
 };
 
 }  // namespace fx

@@ -33,13 +33,6 @@ glm::vec3 cloudShadowToLight(const glm::vec3& lightDirection) {
     return toLight / length;
 }
 
-CloudShadowPass CloudShadowPass::create() {
-    CloudShadowPass p;
-    p.map_ = FullscreenPass("effects/clouds/cloud_shadow.frag", "cloud shadow map");
-    p.apply_ = FullscreenPass("effects/clouds/cloud_shadow_apply.frag", "cloud shadow apply");
-    return p;
-}
-
 void CloudShadowPass::setMapUniforms(const CloudFrameSettings& s, const CloudShadowSettings& shadow,
                                      Size2D target) const {
     GLuint prog = map_.program();
@@ -69,14 +62,14 @@ TextureHandle CloudShadowPass::declareMap(FrameGraph& graph, TextureHandle depth
                                           const CloudShadowSettings& shadow) const {
     const CloudShadowPass* self = this;
     const CloudDensityTexture* densityTexture = &density;
-    Pass& pass =
-        graph.addPass("cloud shadow map", [self, clouds, shadow, depth, densityTexture](PassContext& ctx) {
-            self->setMapUniforms(clouds, shadow, ctx.targetSize());
-            self->map_.draw({densityTexture->name(), ctx.native(depth)});
-        });
+    Pass& pass = map_.addPass(graph, "cloud shadow map",
+                              [self, clouds, shadow, depth, densityTexture](PassContext& ctx) {
+                                  self->setMapUniforms(clouds, shadow, ctx.targetSize());
+                                  self->map_.draw({densityTexture->name(), ctx.native(depth)});
+                              });
     TextureHandle map = pass.create("clouds.shadow", {TextureSize::output(), TextureFormat::R16F},
                                     TextureUsage::ColorAttachment);
-    pass.read(depth).setState(FullscreenPass::state());
+    pass.read(depth);
     return map;
 }
 
@@ -95,8 +88,8 @@ TextureHandle CloudShadowPass::declare(FrameGraph& graph, const CloudShadowInput
     times.srcAlpha = BlendFactor::Zero;
     times.dstAlpha = BlendFactor::One;
     multiply.blendFunction = times;
-    graph
-        .addPass("cloud shadow apply",
+    apply_
+        .addPass(graph, "cloud shadow apply",
                  [apply, map, sunShare](PassContext& ctx) {
                      glProgramUniform1f(apply->program(), kSunShare, sunShare);
                      apply->draw({ctx.native(map)});

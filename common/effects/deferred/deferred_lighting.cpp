@@ -20,10 +20,6 @@ constexpr GLint kWorldOffsetLocation = 25;
 
 }  // namespace
 
-DeferredLighting DeferredLighting::create() {
-    return DeferredLighting();
-}
-
 const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
     const int n = static_cast<int>(layout);
     std::optional<FullscreenPass>& slot = passes_[n * 2 + (tiled ? 1 : 0)];
@@ -44,8 +40,8 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
     const FullscreenPass* fullscreen = &pass(g.layout, tiles.has_value());
     const PointLightBuffer* buffer = &lights;
     const std::optional<CulledTiles> culled = tiles;
-    Pass& pass =
-        graph.addPass("deferred lighting", [fullscreen, buffer, &scene, g, shadow, culled](PassContext& ctx) {
+    Pass& pass = fullscreen->addPass(
+        graph, "deferred lighting", [fullscreen, buffer, &scene, g, shadow, culled](PassContext& ctx) {
             GLuint program = fullscreen->program();
             CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
             SceneMeshes::setFrameUniforms(program, scene, camera);
@@ -68,11 +64,10 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
             GLuint position = g.position ? ctx.native(*g.position) : 0;
             fullscreen->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
         });
-    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth);
     if (g.position) pass.read(*g.position);
     if (shadow.pass) pass.read(shadow.map);
     if (tiles) pass.read(tiles->heat);
-    if (!fullscreen->usable()) pass.disable("the lighting program did not build: " + fullscreen->error());
     return pass.create("deferred.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -86,7 +81,7 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
                                 cat("#define LAYOUT ", n, "\n"));
     const FullscreenPass* error = &*errorPasses_[n];
     const TextureHandle reference = *g.referencePosition;
-    Pass& pass = graph.addPass("position error", [error, &scene, g, reference](PassContext& ctx) {
+    Pass& pass = error->addPass(graph, "position error", [error, &scene, g, reference](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
         glProgramUniformMatrix4fv(error->program(), kInverseViewProjectionLocation, 1, GL_FALSE,
@@ -95,9 +90,8 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
         error->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth),
                      ctx.native(reference)});
     });
-    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference);
     if (g.position) pass.read(*g.position);
-    if (!error->usable()) pass.disable("the position-error program did not build: " + error->error());
     return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -110,7 +104,7 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
                                cat("gbuffer views (", toString(g.layout), ")"),
                                cat("#define LAYOUT ", n, "\n"));
     const FullscreenPass* views = &*viewPasses_[n];
-    Pass& pass = graph.addPass("gbuffer views", [views, &scene, g, viewRange](PassContext& ctx) {
+    Pass& pass = views->addPass(graph, "gbuffer views", [views, &scene, g, viewRange](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
         GLuint program = views->program();
@@ -121,9 +115,8 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
         GLuint position = g.position ? ctx.native(*g.position) : 0;
         views->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
     });
-    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth);
     if (g.position) pass.read(*g.position);
-    if (!views->usable()) pass.disable("the G-buffer view program did not build: " + views->error());
     const TextureDesc rgba8{TextureSize::output(), TextureFormat::RGBA8, 1};
     pass.create("gbuffer.view_normal", rgba8, TextureUsage::ColorAttachment);
     pass.create("gbuffer.view_depth", rgba8, TextureUsage::ColorAttachment);

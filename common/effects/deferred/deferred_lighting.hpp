@@ -5,7 +5,7 @@
 // ambient light and every point light (or, after tiled culling, only the ones listed for the pixel's
 // tile), into "deferred.color" (RGBA16F, clamped to [0, kSceneHdrMax], NaN to 0).
 //
-//   DeferredLighting lighting = DeferredLighting::create();                  // Lesson::init
+//   DeferredLighting lighting;  // its programs build when a frame first asks for them
 //   TextureHandle lit = lighting.declare(graph, scene, g, lights, shadow, nullptr);
 #include <optional>
 
@@ -28,9 +28,6 @@ inline constexpr int kMaxTileLights = 255;
 
 class DeferredLighting {
 public:
-    DeferredLighting() = default;  // empty: no GL yet
-    static DeferredLighting create();
-
     // Declares "deferred lighting". `scene`, `lights` must outlive the frame's execution; `shadow` may
     // have no pass (no shadow-casting light): the sun then lights without shadow.
     TextureHandle declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,

@@ -5,6 +5,7 @@
 #include "base/log.hpp"
 #include "effects/deferred/output_check.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 
@@ -13,10 +14,6 @@ CameraMatrices offsetCameraMatrices(const Camera& camera, glm::vec3 offset, Size
     moved.position += offset;
     moved.target += offset;
     return cameraMatrices(moved, size.width, size.height);
-}
-
-GBufferPass GBufferPass::create() {
-    return GBufferPass();
 }
 
 const gl::ReloadableProgram& GBufferPass::program(GBufferLayout layout, bool referencePosition) const {
@@ -71,8 +68,7 @@ GBufferTargets GBufferPass::declare(FrameGraph& graph, const Scene& scene, const
         pass.create("gbuffer.depth", {TextureSize::output(), f.depth, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.clearColor = ClearColor{0, 0, 0, 0};  // alpha 0 in albedo: no surface
-    pass.setState(state);
-    if (!prog->usable()) pass.disable("the G-buffer program did not build: " + prog->error());
+    runsWith(pass.setState(state), *prog);
     return t;
 }
 

@@ -2,7 +2,7 @@
 // The G-buffer pass of deferred shading: the scene's geometry once, no light, into several targets at
 // once (gbuffer_layout.hpp says which). The lighting pass then reads them under each pixel.
 //
-//   GBufferPass gbuffer = GBufferPass::create();                     // Lesson::init
+//   GBufferPass gbuffer;  // its programs build when a frame first asks for a layout
 //   GBufferTargets g = gbuffer.declare(graph, scene, meshes, t, {GBufferLayout::compact});
 //
 // A world offset moves the whole scene and its camera away from the origin by that many metres, so
@@ -40,9 +40,6 @@ CameraMatrices offsetCameraMatrices(const Camera& camera, glm::vec3 offset, Size
 
 class GBufferPass {
 public:
-    GBufferPass() = default;  // empty: no GL yet
-    static GBufferPass create();
-
     // Declares "gbuffer". `scene` and `meshes` must outlive the frame's execution.
     GBufferTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
                            const GBufferOptions& options) const;

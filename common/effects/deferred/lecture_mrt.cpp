@@ -6,6 +6,7 @@
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "gl/debug_output.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -23,19 +24,6 @@ void setSky(GLuint program, const Scene& scene) {
 void setLectureLight(GLuint program) {
     glProgramUniform3f(program, uniform_location::lightColor, 1.0f, 1.0f, 1.0f);
     glProgramUniform3f(program, uniform_location::ambient, 0.2f, 0.2f, 0.2f);
-}
-
-LectureMrt LectureMrt::create() {
-    LectureMrt m;
-    m.phong_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
-                                      "effects/deferred/phong.frag",
-                                      {},
-                                      "#define THREE_TARGETS 1",
-                                      "mrt (diffuse, specular, ambient)"});
-    m.composite_ = FullscreenPass("effects/deferred/mrt_composite.frag", "mrt composite");
-    m.sharpen_ = FullscreenPass("effects/deferred/mrt_composite.frag", "mrt sharpen", "#define SHARPEN 1");
-    m.range_ = FullscreenPass("effects/deferred/sharpen_range.frag", "sharpen range");
-    return m;
 }
 
 MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
@@ -71,29 +59,28 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const Scen
                           TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(scene);
     state.clearColor = ClearColor{0, 0, 0, 0};  // every target; the composite adds the sky once
-    pass.setState(state);
-    if (!phong_.usable()) pass.disable("the MRT program did not build: " + phong_.error());
+    runsWith(pass.setState(state), phong_);
     return t;
 }
 
 TextureHandle LectureMrt::declareComposite(FrameGraph& graph, const Scene& scene, const MrtTargets& t) const {
     const FullscreenPass* composite = &composite_;
-    Pass& pass = graph.addPass("mrt composite", [composite, &scene, t](PassContext& ctx) {
+    Pass& pass = composite_.addPass(graph, "mrt composite", [composite, &scene, t](PassContext& ctx) {
         setSky(composite->program(), scene);
         composite->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state());
+    pass.read(t.diffuse).read(t.specular).read(t.ambient);
     return pass.create("mrt.sum", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
 
 SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene, const MrtTargets& t) const {
     const FullscreenPass* sharpen = &sharpen_;
-    Pass& pass = graph.addPass("mrt sharpen", [sharpen, &scene, t](PassContext& ctx) {
+    Pass& pass = sharpen_.addPass(graph, "mrt sharpen", [sharpen, &scene, t](PassContext& ctx) {
         setSky(sharpen->program(), scene);
         sharpen->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state());
+    pass.read(t.diffuse).read(t.specular).read(t.ambient);
     SharpenTargets s;
     s.clipped = pass.create("sharpen.rgba8", {TextureSize::output(), TextureFormat::RGBA8, 1},
                             TextureUsage::ColorAttachment);
@@ -104,10 +91,10 @@ SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene,
 
 TextureHandle LectureMrt::declareRangeView(FrameGraph& graph, const SharpenTargets& s) const {
     const FullscreenPass* range = &range_;
-    Pass& pass = graph.addPass("sharpen range", [range, s](PassContext& ctx) {
+    Pass& pass = range_.addPass(graph, "sharpen range", [range, s](PassContext& ctx) {
         range->draw({ctx.native(s.clipped), ctx.native(s.kept)});
     });
-    pass.read(s.clipped).read(s.kept).setState(FullscreenPass::state());
+    pass.read(s.clipped).read(s.kept);
     return pass.create("sharpen.range", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

@@ -8,6 +8,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "geometry/mesh_data.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -48,23 +49,11 @@ glm::mat4 reflectionMatrix(glm::vec4 plane) {
     return r;
 }
 
-PlanarReflection PlanarReflection::create(const Scene& scene) {
-    PlanarReflection p;
-    p.reflect_ = gl::ReloadableProgram({"effects/deferred/mirrored_scene.vert",
-                                        "effects/deferred/reflection.frag",
-                                        {},
-                                        {},
-                                        "planar reflection (mirrored camera)"});
-    p.surface_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
-                                        "effects/deferred/mirror_surface.frag",
-                                        {},
-                                        {},
-                                        "mirror surface"});
+PlanarReflection::PlanarReflection(const Scene& scene) {
     if (auto mirror = findMirror(scene, 0.0)) {
         const Primitive& plane = *scene.objects[mirror->object].primitive;
-        p.mirrorMesh_ = GpuMesh(makePlane(plane.planeSize.x, plane.planeSize.y), "mirror surface mesh");
+        mirrorMesh_ = GpuMesh(makePlane(plane.planeSize.x, plane.planeSize.y), "mirror surface mesh");
     }
-    return p;
 }
 
 TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
@@ -103,7 +92,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
     state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
     pass.setState(state);
     needs(pass, SceneFeature::mirror);
-    if (!reflect_.usable()) pass.disable("the reflection program did not build: " + reflect_.error());
+    runsWith(pass, reflect_);
 
     const gl::ReloadableProgram* surface = &surface_;
     const GpuMesh* mesh = &mirrorMesh_;
@@ -136,7 +125,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
                    .colorMask = ColorMask{}});
     needs(over, SceneFeature::mirror);
     if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
-    if (!surface_.usable()) over.disable("the mirror-surface program did not build: " + surface_.error());
+    runsWith(over, surface_);
     return color;
 }
 

@@ -30,9 +30,6 @@ std::vector<GpuPointLight> gpuPointLights(const std::vector<Light>& lights, int 
 
 class PointLightBuffer {
 public:
-    PointLightBuffer() = default;  // empty: no GL yet
-    static PointLightBuffer create();
-
     // Replaces the buffer's content (it grows when needed).
     void upload(const std::vector<GpuPointLight>& lights);
     void bind() const;  // to binding 5
@@ -40,7 +37,7 @@ public:
     GLuint name() const { return buffer_.name(); }
 
 private:
-    gl::BufferName buffer_;
+    gl::BufferName buffer_ = gl::createBuffer("deferred.point_lights");
     int count_ = 0;
     std::size_t capacity_ = 0;
 };

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -17,19 +18,6 @@ constexpr GLint kInverseProjectionLocation = 31;
 Size2D tileCount(Size2D size) {
     return {std::max(1, (size.width + kTileSize - 1) / kTileSize),
             std::max(1, (size.height + kTileSize - 1) / kTileSize)};
-}
-
-TiledCulling TiledCulling::create() {
-    TiledCulling c;
-    c.program_ = gl::ReloadableProgram(
-        {{},
-         {},
-         "effects/deferred/tiled_culling.comp",
-         cat("#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ", kMaxTileLights, "\n"),
-         "light culling (tiles)"});
-    c.heatMap_ = FullscreenPass("effects/deferred/heat_map.frag", "cull heat map");
-    c.list_ = gl::createBuffer("cull.tile_lights");
-    return c;
 }
 
 CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
@@ -69,20 +57,20 @@ CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const G
     pass.read(g.depth).writeStorage(out.heat);
     needs(pass, SceneFeature::manyLights);
     lastPass_ = &pass;
-    if (!program_.usable()) pass.disable("the culling program did not build: " + program_.error());
+    runsWith(pass, program_);
     return out;
 }
 
 TextureHandle TiledCulling::declareHeatMap(FrameGraph& graph, const CulledTiles& tiles, TextureHandle lit,
                                            int maxLights) const {
     const FullscreenPass* heat = &heatMap_;
-    Pass& pass = graph.addPass("cull heat map", [heat, tiles, lit, maxLights](PassContext& ctx) {
+    Pass& pass = heatMap_.addPass(graph, "cull heat map", [heat, tiles, lit, maxLights](PassContext& ctx) {
         glProgramUniform1f(heat->program(), 0, float(std::max(maxLights, 1)));
         glProgramUniform1i(heat->program(), 1, kTileSize);
         glProgramUniform1f(heat->program(), 2, float(kMaxTileLights));
         heat->draw({ctx.native(tiles.heat), ctx.native(lit)});
     });
-    pass.read(tiles.heat).read(lit).setState(FullscreenPass::state());
+    pass.read(tiles.heat).read(lit);
     return pass.create("cull.heatmap", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

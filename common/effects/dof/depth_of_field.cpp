@@ -26,13 +26,6 @@ void setRadius(GLuint program, const DofLensUniforms& l) {
                        l.radiusPerDiameter);
 }
 
-Pass& fullscreen(FrameGraph& graph, const char* name, const FullscreenPass& program, Pass::Body body) {
-    Pass& pass = graph.addPass(name, std::move(body));
-    pass.setState(FullscreenPass::state());
-    if (!program.usable()) pass.disable(cat("the ", name, " program did not build: ", program.error()));
-    return pass;
-}
-
 }  // namespace
 
 DofLensUniforms dofLensUniforms(const ThinLensModel& m) {
@@ -47,31 +40,6 @@ DofKernel dofKernelForTaps(int taps) {
     return {16, 2, 5};
 }
 
-DepthOfField DepthOfField::create() {
-    DepthOfField d;
-    d.coc_ = FullscreenPass("effects/dof/coc.frag", "dof coc");
-    d.heat_ = FullscreenPass("effects/dof/heat_map.frag", "dof heat map");
-    d.naive_ = FullscreenPass("effects/dof/naive.frag", "dof naive");
-    d.chapter_ = FullscreenPass("effects/dof/chapter.frag", "dof chapter");
-    d.prefilter_ = FullscreenPass("effects/dof/prefilter.frag", "dof prefilter");
-    d.tileMax_ = FullscreenPass("effects/dof/tile_max.frag", "dof tile max");
-    d.gather_ = FullscreenVariants("effects/dof/gather.frag", "dof gather");
-    d.composite_ = FullscreenPass("effects/dof/composite.frag", "dof composite");
-    return d;
-}
-
-bool DepthOfField::usable() const {
-    return error().empty();
-}
-
-std::string DepthOfField::error() const {
-    // The default gather (near/far) stands for both: the two differ only by a #define.
-    for (const FullscreenPass* p :
-         {&coc_, &heat_, &naive_, &chapter_, &prefilter_, &tileMax_, &gatherProgram(true), &composite_})
-        if (!p->usable()) return p->error();
-    return {};
-}
-
 const FullscreenPass& DepthOfField::gatherProgram(bool separateFields) const {
     return gather_.get({{"DOF_SEPARATE", separateFields ? 1 : 0}});
 }
@@ -79,7 +47,7 @@ const FullscreenPass& DepthOfField::gatherProgram(bool separateFields) const {
 DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
                                       const DofLensUniforms& lens) const {
     const FullscreenPass* program = &coc_;
-    Pass& pass = fullscreen(graph, "dof coc", coc_, [program, depth, lens](PassContext& ctx) {
+    Pass& pass = coc_.addPass(graph, "dof coc", [program, depth, lens](PassContext& ctx) {
         setLens(program->program(), lens);
         program->draw({ctx.native(depth)});
     });
@@ -94,7 +62,7 @@ static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const ch
                                    const FullscreenPass& program, TextureHandle color, TextureHandle coc,
                                    const DofLensUniforms& lens) {
     const FullscreenPass* p = &program;
-    Pass& pass = fullscreen(graph, name, program, [p, color, coc, lens](PassContext& ctx) {
+    Pass& pass = program.addPass(graph, name, [p, color, coc, lens](PassContext& ctx) {
         setRadius(p->program(), lens);
         p->draw({ctx.native(color), ctx.native(coc)});
     });
@@ -112,7 +80,7 @@ DeclaredPass DepthOfField::declareHeatMap(FrameGraph& graph, TextureHandle color
 DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, TextureHandle depth,
                                         const NaiveDofSettings& s) const {
     const FullscreenPass* program = &naive_;
-    Pass& pass = fullscreen(graph, "dof naive", naive_, [program, color, depth, s](PassContext& ctx) {
+    Pass& pass = naive_.addPass(graph, "dof naive", [program, color, depth, s](PassContext& ctx) {
         glProgramUniform2f(program->program(), 0, s.sharpDepth, s.scale);
         program->draw({ctx.native(color), ctx.native(depth)});
     });
@@ -136,19 +104,19 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     const TextureSize gatherSize = TextureSize::outputFraction(1, scale);
 
     const FullscreenPass* prefilter = &prefilter_;
-    Pass& pre = fullscreen(graph, "dof prefilter", prefilter_,
-                           [prefilter, color, coc, lens, scale](PassContext& ctx) {
-                               setRadius(prefilter->program(), lens);
-                               glProgramUniform1i(prefilter->program(), 0, scale);
-                               prefilter->draw({ctx.native(color), ctx.native(coc)});
-                           });
+    Pass& pre =
+        prefilter_.addPass(graph, "dof prefilter", [prefilter, color, coc, lens, scale](PassContext& ctx) {
+            setRadius(prefilter->program(), lens);
+            glProgramUniform1i(prefilter->program(), 0, scale);
+            prefilter->draw({ctx.native(color), ctx.native(coc)});
+        });
     g.prefiltered =
         pre.create("dof.prefiltered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     pre.read(color).read(coc);
 
     const FullscreenPass* tileMax = &tileMax_;
     TextureHandle prefiltered = g.prefiltered;
-    Pass& tiles = fullscreen(graph, "dof tile max", tileMax_, [tileMax, prefiltered, tile](PassContext& ctx) {
+    Pass& tiles = tileMax_.addPass(graph, "dof tile max", [tileMax, prefiltered, tile](PassContext& ctx) {
         glProgramUniform1i(tileMax->program(), 0, tile);
         tileMax->draw({ctx.native(prefiltered)});
     });
@@ -164,29 +132,29 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     // The clamp as a radius in gather texels bounds the kernel and how many tiles it looks across.
     const float maxRadius = lens.maxCocPixels * lens.radiusPerDiameter / float(scale);
     TextureHandle tileTexture = g.tiles;
-    Pass& gath =
-        fullscreen(graph, "dof gather", gatherPass,
-                   [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
-                       GLuint p = gather->program();
-                       glProgramUniform1i(p, 0, kernel.rings);
-                       glProgramUniform1i(p, 1, kernel.tapsPerRing);
-                       glProgramUniform1i(p, 3, tile);
-                       glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
-                       glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
-                       glProgramUniform1i(p, 6, scale);
-                       gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
-                   });
+    Pass& gath = gatherPass.addPass(
+        graph, "dof gather",
+        [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
+            GLuint p = gather->program();
+            glProgramUniform1i(p, 0, kernel.rings);
+            glProgramUniform1i(p, 1, kernel.tapsPerRing);
+            glProgramUniform1i(p, 3, tile);
+            glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
+            glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
+            glProgramUniform1i(p, 6, scale);
+            gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
+        });
     g.gathered =
         gath.create("dof.gathered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     gath.read(g.prefiltered).read(g.tiles);
 
     const FullscreenPass* composite = &composite_;
     TextureHandle gathered = g.gathered;
-    Pass& comp = fullscreen(graph, "dof composite", composite_,
-                            [composite, color, coc, gathered, lens](PassContext& ctx) {
-                                setRadius(composite->program(), lens);
-                                composite->draw({ctx.native(color), ctx.native(coc), ctx.native(gathered)});
-                            });
+    Pass& comp =
+        composite_.addPass(graph, "dof composite", [composite, color, coc, gathered, lens](PassContext& ctx) {
+            setRadius(composite->program(), lens);
+            composite->draw({ctx.native(color), ctx.native(coc), ctx.native(gathered)});
+        });
     g.result = comp.create("dof.result", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                            TextureUsage::ColorAttachment);
     comp.read(color).read(coc).read(g.gathered);

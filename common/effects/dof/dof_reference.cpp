@@ -9,6 +9,7 @@
 #include "gl/framebuffer.hpp"
 #include "gl/texture.hpp"
 #include "render_gl/gl_state.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 
@@ -65,14 +66,7 @@ float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, floa
     return scalePixelsM * radiusPerDiameter / focalPixels;
 }
 
-DofReference DofReference::create() {
-    DofReference r;
-    r.scene_ = gl::ReloadableProgram(
-        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "dof reference scene"});
-    r.accumulate_ = FullscreenPass("effects/dof/accumulate.frag", "dof reference accumulate");
-    r.scratch_ = std::make_shared<Scratch>();
-    return r;
-}
+DofReference::DofReference() : scratch_(std::make_shared<Scratch>()) {}
 
 DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
                                    double seconds, const DofReferenceSettings& s) const {
@@ -116,8 +110,8 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const 
     state.blend = true;
     state.blendFunction = BlendFunction::additive();
     state.clearColor = ClearColor{0.0f, 0.0f, 0.0f, 0.0f};
-    pass.setState(state);
-    if (!usable()) pass.disable("the dof reference programs did not build: " + error());
+    runsWith(pass.setState(state), scene_);
+    runsWith(pass, accumulate_.reloadable());
     return {pass, out};
 }
 

@@ -42,20 +42,16 @@ struct DofReferenceSettings {
 
 class DofReference {
 public:
-    DofReference() = default;  // empty: no GL yet
-    static DofReference create();
-
-    bool usable() const { return scene_.usable() && accumulate_.usable(); }
-    std::string error() const { return scene_.usable() ? accumulate_.error() : scene_.error(); }
-
+    DofReference();  // in the .cpp, where Scratch is complete
     // `scene` and `meshes` must outlive the frame's execution.
     DeclaredPass declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
                          const DofReferenceSettings& settings) const;
 
 private:
     struct Scratch;
-    gl::ReloadableProgram scene_;
-    FullscreenPass accumulate_;
+    gl::ReloadableProgram scene_{
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "dof reference scene"}};
+    FullscreenPass accumulate_{"effects/dof/accumulate.frag", "dof reference accumulate"};
     std::shared_ptr<Scratch> scratch_;
 };
 

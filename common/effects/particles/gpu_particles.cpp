@@ -19,31 +19,22 @@ gl::BufferName buffer(const char* label, GLsizeiptr bytes, GLbitfield flags = GL
 
 }  // namespace
 
-GpuParticles GpuParticles::create(const ParticleSystem& system) {
-    GpuParticles g;
-    g.simulate_ =
-        gl::ReloadableProgram({{}, {}, "effects/particles/simulate.comp", {}, "particles: simulate"});
-    g.compact_ = gl::ReloadableProgram({{}, {}, "effects/particles/compact.comp", {}, "particles: compact"});
-    g.poolView_ =
-        gl::ReloadableProgram({{}, {}, "effects/particles/pool_view.comp", {}, "particles: pool view"});
-    g.capacity_ = std::max(system.capacity(), 1u);
-    g.pool_ = buffer("particles.pool", GLsizeiptr(g.capacity_) * GLsizeiptr(sizeof(GpuParticle)));
-    g.live_ = buffer("particles.live", GLsizeiptr(g.capacity_) * 4);
+GpuParticles::GpuParticles(const ParticleSystem& system) : capacity_(std::max(system.capacity(), 1u)) {
+    pool_ = buffer("particles.pool", GLsizeiptr(capacity_) * GLsizeiptr(sizeof(GpuParticle)));
+    live_ = buffer("particles.live", GLsizeiptr(capacity_) * 4);
     // An empty pool draws nothing until the first compaction writes the count.
     const GLuint command[4] = {4, 0, 0, 0};
-    g.command_ = gl::createBuffer("particles.draw_command");
-    glNamedBufferStorage(g.command_.name(), sizeof(command), command, 0);
-    g.stats_ = buffer("particles.stats", 8);
-    return g;
+    command_ = gl::createBuffer("particles.draw_command");
+    glNamedBufferStorage(command_.name(), sizeof(command), command, 0);
+    stats_ = buffer("particles.stats", 8);
 }
 
 std::uint64_t GpuParticles::bytes() const {
-    if (!pool_) return 0;
     return std::uint64_t(capacity_) * (sizeof(GpuParticle) + 4) + 16 + 8;
 }
 
 void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emitters) const {
-    if (!usable()) return;
+    if (!runnable()) return;
     if (!(dt > 0)) dt = 0;
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pool_.name());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, emitters);
@@ -88,7 +79,7 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
 }
 
 void GpuParticles::drawPoolView(GLuint view, int emitters) const {
-    if (!pool_ || !poolView_.usable() || view == 0) return;
+    if (!poolView_.usable() || view == 0) return;
     const GLuint p = poolView_.name();
     glProgramUniform1ui(p, 0, capacity_);
     glProgramUniform1f(p, 1, emitters > 1 ? 1.0f / float(emitters - 1) : 0.0f);
@@ -102,7 +93,6 @@ void GpuParticles::drawPoolView(GLuint view, int emitters) const {
 }
 
 void GpuParticles::clear() const {
-    if (!pool_) return;
     gl::DebugGroup group("particles: clear the GPU pool");  // a reset happens between frames
     const GLuint zero = 0;
     glClearNamedBufferData(pool_.name(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -117,7 +107,6 @@ void GpuParticles::bindForDraw() const {
 
 GpuParticleStats GpuParticles::readStats() const {
     GpuParticleStats s;
-    if (!stats_) return s;
     GLuint words[2] = {0, 0};
     glGetNamedBufferSubData(stats_.name(), 0, sizeof(words), words);
     s.replaced = words[0];
@@ -127,22 +116,19 @@ GpuParticleStats GpuParticles::readStats() const {
 
 std::vector<GpuParticle> GpuParticles::readPool() const {
     std::vector<GpuParticle> slots(capacity_);
-    if (pool_)
-        glGetNamedBufferSubData(pool_.name(), 0, GLsizeiptr(slots.size() * sizeof(GpuParticle)),
-                                slots.data());
+    glGetNamedBufferSubData(pool_.name(), 0, GLsizeiptr(slots.size() * sizeof(GpuParticle)), slots.data());
     return slots;
 }
 
 std::array<std::uint32_t, 4> GpuParticles::readDrawCommand() const {
     std::array<std::uint32_t, 4> words{};
-    if (command_) glGetNamedBufferSubData(command_.name(), 0, sizeof(words), words.data());
+    glGetNamedBufferSubData(command_.name(), 0, sizeof(words), words.data());
     return words;
 }
 
 std::vector<std::uint32_t> GpuParticles::readLiveList() const {
     std::vector<std::uint32_t> list(readStats().live);
-    if (live_ && !list.empty())
-        glGetNamedBufferSubData(live_.name(), 0, GLsizeiptr(list.size() * 4), list.data());
+    if (!list.empty()) glGetNamedBufferSubData(live_.name(), 0, GLsizeiptr(list.size() * 4), list.data());
     return list;
 }
 

@@ -33,19 +33,15 @@ void ensureBuffer(gl::BufferName& buffer, std::uint64_t& capacity, std::uint64_t
 
 }  // namespace
 
-ParticleRenderer ParticleRenderer::create() {
-    ParticleRenderer r;
-    r.noVertices_ = gl::createVertexArray("particles.no_vertices");
-    r.dot_ = gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite");
+ParticleRenderer::ParticleRenderer()
+    : noVertices_(gl::createVertexArray("particles.no_vertices")),
+      dot_(gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite")) {
     const unsigned char white[4] = {255, 255, 255, 255};
-    glTextureSubImage2D(r.dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
-    (void)r.program(Source::uniforms, ParticleDrawSettings{});  // the chapter's: shows a broken shader now
-    return r;
+    glTextureSubImage2D(dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    (void)program(Source::uniforms, ParticleDrawSettings{});  // the chapter's: shows a broken shader now
 }
 
 const gl::ReloadableProgram& ParticleRenderer::program(Source source, const ParticleDrawSettings& s) const {
-    static const gl::ReloadableProgram kNone;
-    if (!noVertices_) return kNone;  // before create(): no GL
     const int sourceNumber = static_cast<int>(source);
     const bool soft = softFade(s);
     std::optional<gl::ReloadableProgram>& slot =
@@ -67,20 +63,6 @@ int ParticleRenderer::programsBuilt() const {
     int built = 0;
     for (const auto& slot : programs_) built += slot ? 1 : 0;
     return built;
-}
-
-bool ParticleRenderer::usable() const {
-    if (!noVertices_) return false;
-    for (const auto& slot : programs_)
-        if (slot && !slot->usable()) return false;
-    return true;
-}
-
-const std::string& ParticleRenderer::error() const {
-    static const std::string kNoError;
-    for (const auto& slot : programs_)
-        if (slot && !slot->error().empty()) return slot->error();
-    return kNoError;
 }
 
 Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
@@ -162,7 +144,7 @@ int ParticleRenderer::drawInstanced(const std::vector<GpuParticle>& particles,
 }
 
 int ParticleRenderer::drawIndirect(const GpuParticles& pool, const ParticleDrawSettings& s) const {
-    if (!pool.usable()) return 0;
+    // A pool whose programs never built has an instance count of 0: the draw draws nothing.
     if (!bind(program(Source::liveList, s), s)) return 0;
     pool.bindForDraw();
     // The instance count is whatever compact.comp wrote: 0 draws nothing, and is no error.

@@ -104,16 +104,10 @@ ColourTransform blendFromIdentity(const ColourTransform& t, float amount) {
     return out;
 }
 
-ColourMatrixPass ColourMatrixPass::create() {
-    ColourMatrixPass p;
-    p.pass_ = FullscreenPass("effects/post/colour_matrix.frag", "colour matrix");
-    return p;
-}
-
 DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, TextureFormat format) const {
     const FullscreenPass* pass = &pass_;
     ColourTransform t = transform_;  // the transform as it is now, not when the pass runs
-    Pass& declared = graph.addPass("colour matrix", [pass, input, t](PassContext& ctx) {
+    Pass& declared = pass_.addPass(graph, "colour matrix", [pass, input, t](PassContext& ctx) {
         GLuint program = pass->program();
         // Column-major data, no transpose: uploading rows is Shader effects' hard case 7 (a
         // grayscale that comes out tinted).
@@ -124,8 +118,7 @@ DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, T
     });
     TextureHandle graded =
         declared.create("colour.graded", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    declared.read(input).setState(FullscreenPass::state());
-    if (!pass_.usable()) declared.disable("the colour matrix program did not build: " + pass_.error());
+    declared.read(input);
     return {declared, graded};
 }
 

@@ -68,20 +68,12 @@ glm::vec2 radialBlurTapOffset(const RadialBlurParams& asked, Size2D size, glm::v
     return lenA > kRadialBlurCentreEpsilon ? d * (lenB / lenA) * params.length : glm::vec2(0.0f);
 }
 
-RadialBlur RadialBlur::create() {
-    RadialBlur r;
-    r.blur_ = FullscreenPass("effects/post/radial_blur.frag", "radial blur");
-    r.offsets_ = FullscreenPass("effects/post/radial_blur_offset.frag", "radial blur offsets");
-    r.sampler_ = gl::createLinearClampSampler("radial blur (linear, clamp to edge)");
-    return r;
-}
-
 RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
                                          const RadialBlurParams& asked, TextureFormat format) const {
     const RadialBlurParams params = clampedRadialBlurParams(asked);
     const FullscreenPass* blur = &blur_;
     const GLuint sampler = sampler_.name();
-    Pass& blurPass = graph.addPass("radial blur", [blur, input, params, sampler](PassContext& ctx) {
+    Pass& blurPass = blur_.addPass(graph, "radial blur", [blur, input, params, sampler](PassContext& ctx) {
         setUniforms(blur->program(), params, ctx.targetSize());
         glProgramUniform1i(blur->program(), kSamplesLocation, params.samples);
         glBindSampler(0, sampler);
@@ -90,19 +82,15 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     });
     TextureHandle result =
         blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    blurPass.read(input).setState(FullscreenPass::state());
-    if (!blur_.usable()) blurPass.disable("the radial blur program did not build: " + blur_.error());
+    blurPass.read(input);
 
     const FullscreenPass* offsets = &offsets_;
-    Pass& offsetPass = graph.addPass("radial blur offsets", [offsets, params](PassContext& ctx) {
+    Pass& offsetPass = offsets_.addPass(graph, "radial blur offsets", [offsets, params](PassContext& ctx) {
         setUniforms(offsets->program(), params, ctx.targetSize());
         offsets->draw({});
     });
     TextureHandle offset = offsetPass.create("blur.offset", {TextureSize::output(), TextureFormat::RG16F, 1},
                                              TextureUsage::ColorAttachment);
-    offsetPass.setState(FullscreenPass::state());
-    if (!offsets_.usable())
-        offsetPass.disable("the radial blur offsets program did not build: " + offsets_.error());
     return {{blurPass, result}, {offsetPass, offset}};
 }
 

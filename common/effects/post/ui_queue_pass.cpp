@@ -8,12 +8,6 @@ namespace {
 constexpr GLint kPanelLocation = 0;  // shaders/effects/post/ui_badge.frag
 }
 
-UiQueuePass UiQueuePass::create() {
-    UiQueuePass ui;
-    ui.pass_ = FullscreenPass("effects/post/ui_badge.frag", "ui queue");
-    return ui;
-}
-
 Viewport UiQueuePass::panelRect(Size2D size) {
     constexpr int kMargin = 8;
     Viewport rect;
@@ -28,7 +22,7 @@ Viewport UiQueuePass::panelRect(Size2D size) {
 Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
     const FullscreenPass* pass = &pass_;
     Viewport rect = panelRect(size);
-    Pass& ui = graph.addPass("ui queue", [pass, rect](PassContext&) {
+    Pass& ui = pass_.addPass(graph, "ui queue", [pass, rect](PassContext&) {
         glProgramUniform4f(pass->program(), kPanelLocation, float(rect.x), float(rect.y), float(rect.width),
                            float(rect.height));
         pass->draw({});
@@ -42,7 +36,6 @@ Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
                  .blendFunction = BlendFunction::alpha(),
                  .faceCulling = false,
                  .colorMask = ColorMask{}});
-    if (!pass_.usable()) ui.disable("the ui program did not build: " + pass_.error());
     return ui;
 }
 

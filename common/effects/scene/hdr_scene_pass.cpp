@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "effects/scene/camera_matrices.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -26,13 +27,6 @@ PassState hdrSceneState(const Scene& scene) {
             .clearDepth = 1.0f};
 }
 
-HdrScenePass HdrScenePass::create() {
-    HdrScenePass pass;
-    pass.program_ = gl::ReloadableProgram(
-        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "scene (linear HDR)"});
-    return pass;
-}
-
 HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
                                       double seconds, TextureFormat colorFormat) const {
     const gl::ReloadableProgram* program = &program_;
@@ -49,8 +43,7 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, con
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene));
-    if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
+    runsWith(pass.setState(hdrSceneState(scene)), program_);
     return targets;
 }
 

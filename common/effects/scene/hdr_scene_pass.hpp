@@ -7,8 +7,7 @@
 // What is written is clamped to [0, kSceneHdrMax] with NaN turned to 0 (docs/numbers.md), so no
 // infinite or NaN texel can enter the post-processing chain and spread through a blur.
 //
-//   HdrScenePass scenePass;                       // in Lesson::init, with the context current:
-//   scenePass = HdrScenePass::create();
+//   HdrScenePass scenePass;  // builds its program: the context is current
 //   HdrSceneTargets hdr = scenePass.declare(graph, scene, meshes, frame.seconds);
 #include "effects/scene/scene_meshes.hpp"
 #include "gl/program.hpp"
@@ -33,12 +32,6 @@ struct HdrSceneTargets {
 
 class HdrScenePass {
 public:
-    HdrScenePass() = default;  // empty: no GL yet
-    static HdrScenePass create();
-
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
-
     // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
     // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
     // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, Bloom chapter §1.1).
@@ -46,7 +39,8 @@ public:
                             TextureFormat colorFormat = TextureFormat::RGBA16F) const;
 
 private:
-    gl::ReloadableProgram program_;
+    gl::ReloadableProgram program_{
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "scene (linear HDR)"}};
 };
 
 }  // namespace fx

@@ -28,13 +28,11 @@ MeshData meshFor(const Primitive& p) {
 
 }  // namespace
 
-SceneMeshes::SceneMeshes()
-    : textures_(std::make_unique<MaterialTextures>()), skinning_(std::make_unique<GpuSkinning>()) {}
 SceneMeshes::~SceneMeshes() = default;
 SceneMeshes::SceneMeshes(SceneMeshes&&) noexcept = default;
 SceneMeshes& SceneMeshes::operator=(SceneMeshes&&) noexcept = default;
 
-SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
+SceneMeshes::SceneMeshes(const Scene& scene) : textures_(std::make_unique<MaterialTextures>()) {
     bool needsSkinning = false;
     for (const SceneObject& object : scene.objects) {
         ObjectMeshes meshes;
@@ -75,11 +73,7 @@ SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
         objects_.push_back(std::move(meshes));
     }
     // The skinning program exists only when the scene has something to skin.
-    if (needsSkinning) {
-        *skinning_ = GpuSkinning::create();
-        if (!skinning_->usable())
-            log::error("skinned objects are drawn in their bind pose: ", skinning_->error());
-    }
+    if (needsSkinning) skinning_ = std::make_unique<GpuSkinning>();
 }
 
 glm::mat4 SceneMeshes::modelAt(const SceneObject& object, double seconds) {

@@ -69,7 +69,6 @@ struct MeshDrawOptions {
 
 class SceneMeshes {
 public:
-    SceneMeshes();
     explicit SceneMeshes(const Scene& scene);
     ~SceneMeshes();
     SceneMeshes(SceneMeshes&&) noexcept;
@@ -104,7 +103,6 @@ public:
     const GpuModel* model(std::size_t index) const;
     // The clip time object `index` was last posed at.
     float clipTime(std::size_t index) const;
-    const GpuSkinning& skinning() const { return *skinning_; }
     const MaterialTextures& textures() const { return *textures_; }
 
 private:
@@ -119,7 +117,7 @@ private:
     std::vector<std::string> notDrawn_;
     std::map<std::string, std::shared_ptr<const GltfModel>> files_;
     std::unique_ptr<MaterialTextures> textures_;
-    std::unique_ptr<GpuSkinning> skinning_;
+    std::unique_ptr<GpuSkinning> skinning_;  // only when the scene has something to skin
     // draw() is const but poses on demand: the pose is a cache of the time it was computed for.
     mutable std::vector<float> clipTimes_;  // per object
     mutable double posedAt_ = 0.0;

@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "render_gl/program_pass.hpp"
+
 namespace fx {
 namespace {
 
@@ -39,16 +41,6 @@ void drawShadowed(GLuint program, const Scene& scene, const SceneMeshes& meshes,
 
 }  // namespace
 
-ShadowLitPass ShadowLitPass::create() {
-    ShadowLitPass pass;
-    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
-                                           "effects/shadow/shadowed_scene.frag",
-                                           {},
-                                           {},
-                                           "scene with shadows (linear HDR)"});
-    return pass;
-}
-
 HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
                                        double seconds, const DeclaredShadowMap& shadow,
                                        const std::vector<glm::mat4>& skinnedPlacements) const {
@@ -68,8 +60,7 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene));
-    if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
+    runsWith(pass.setState(hdrSceneState(scene)), program_);
     return targets;
 }
 
@@ -102,7 +93,7 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
     pass.setState(state);
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");
-    if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
+    runsWith(pass, program_);
     return color;
 }
 

@@ -21,11 +21,6 @@ namespace fx {
 
 class ShadowLitPass {
 public:
-    ShadowLitPass() = default;  // empty: no GL yet
-    static ShadowLitPass create();
-
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
     GLuint program() const { return program_.name(); }
 
     // Declares "scene" (scene.color RGBA16F, scene.depth Depth32F, the output's size). Skinned objects
@@ -41,7 +36,11 @@ public:
                                    int size = 512) const;
 
 private:
-    gl::ReloadableProgram program_;
+    gl::ReloadableProgram program_{{"effects/shadow/shadowed_scene.vert",
+                                    "effects/shadow/shadowed_scene.frag",
+                                    {},
+                                    {},
+                                    "scene with shadows (linear HDR)"}};
 };
 
 }  // namespace fx

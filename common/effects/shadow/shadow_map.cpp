@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/debug_output.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -127,38 +128,12 @@ ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double s
     return out;
 }
 
-ShadowMap ShadowMap::create() {
-    ShadowMap s;
-    s.static_ = gl::ReloadableProgram(
-        {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"});
-    s.skinned_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                        "effects/shadow/shadow_depth.frag",
-                                        {},
-                                        {},
-                                        "shadow (skinned, T*(J*p))"});
-    s.skinnedGrouped_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                               "effects/shadow/shadow_depth.frag",
-                                               {},
-                                               "#define GROUPED_PRODUCT\n",
-                                               "shadow (skinned, (T*J)*p)"});
-    s.depthView_ = gl::ReloadableProgram(
-        {"common/fullscreen.vert", "effects/shadow/shadow_depth_view.frag", {}, {}, "shadow depth view"});
-    s.emptyVao_ = gl::createVertexArray("shadow depth view (full-screen triangle)");
-    return s;
-}
-
-bool ShadowMap::usable() const {
-    return static_.usable() && skinned_.usable() && skinnedGrouped_.usable() && depthView_.usable();
-}
-
-std::string ShadowMap::error() const {
-    for (const gl::ReloadableProgram* p : {&static_, &skinned_, &skinnedGrouped_, &depthView_})
-        if (!p->usable()) return p->error();
-    return {};
+const gl::ReloadableProgram& ShadowMap::skinnedReloadable(SkinningProduct product) const {
+    return product == SkinningProduct::parenthesised ? skinned_ : skinnedGrouped_;
 }
 
 const gl::Program& ShadowMap::skinnedProgram(SkinningProduct product) const {
-    return product == SkinningProduct::parenthesised ? skinned_.program() : skinnedGrouped_.program();
+    return skinnedReloadable(product).program();
 }
 
 DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
@@ -252,36 +227,27 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
         // The chapter's bug: depth test, depth write and blend are whatever the previous pass left.
         pass.setState({.faceCulling = false, .clearDepth = 1.0f});
     }
-    if (!usable()) pass.disable("a shadow program did not build: " + error());
+    runsWith(pass, static_);
+    runsWith(pass, skinnedReloadable(options.product));
     return out;
 }
 
 TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShadowMap& map, int size) const {
     size = std::max(size, 1);
-    const gl::ReloadableProgram* program = &depthView_;
-    GLuint vao = emptyVao_.name();
+    const FullscreenPass* view = &depthView_;
     TextureHandle input = map.map;
     glm::vec2 range(map.lookup.light.nearDistance, map.lookup.light.farDistance);
-    Pass& pass = graph.addPass("shadow depth view", [program, vao, input, range](PassContext& ctx) {
+    Pass& pass = depthView_.addPass(graph, "shadow depth view", [view, input, range](PassContext& ctx) {
         Size2D target = ctx.targetSize();
-        glProgramUniform2f(program->name(), kDepthRangeLocation, range.x, range.y);
-        glProgramUniform2f(program->name(), kTargetSizeLocation, float(target.width), float(target.height));
-        glBindTextureUnit(0, ctx.native(input));
-        glUseProgram(program->name());
-        glBindVertexArray(vao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glProgramUniform2f(view->program(), kDepthRangeLocation, range.x, range.y);
+        glProgramUniform2f(view->program(), kTargetSizeLocation, float(target.width), float(target.height));
+        view->draw({ctx.native(input)});
     });
     TextureHandle out =
         pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
                     TextureUsage::ColorAttachment);
     if (map.pass) pass.read(map.map);
-    pass.setState({.depthTest = false,
-                   .depthWrite = false,
-                   .blend = false,
-                   .faceCulling = false,
-                   .colorMask = ColorMask{}});
     if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
-    if (!depthView_.usable()) pass.disable("the depth view program did not build: " + depthView_.error());
     return out;
 }
 

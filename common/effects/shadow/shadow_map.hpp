@@ -21,6 +21,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
@@ -132,12 +133,6 @@ ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double s
 
 class ShadowMap {
 public:
-    ShadowMap() = default;  // empty: no GL yet
-    static ShadowMap create();
-
-    bool usable() const;
-    std::string error() const;
-
     // Declares the shadow pass. `settings` comes from the light's shadow block (a lesson may override
     // mapSize and filterTaps: mapSize is clamped to [1, 8192], filterTaps to [1, 64]). The light view
     // is fitted to the scene (fitLightFrustum: across the light to the casters, along it to everything).
@@ -165,11 +160,21 @@ public:
     const gl::Program& skinnedProgram(SkinningProduct product) const;
 
 private:
-    gl::ReloadableProgram static_;
-    gl::ReloadableProgram skinned_;
-    gl::ReloadableProgram skinnedGrouped_;
-    gl::ReloadableProgram depthView_;
-    gl::VertexArrayName emptyVao_;
+    const gl::ReloadableProgram& skinnedReloadable(SkinningProduct product) const;
+
+    gl::ReloadableProgram static_{
+        {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"}};
+    gl::ReloadableProgram skinned_{{"effects/shadow/shadow_skinned.vert",
+                                    "effects/shadow/shadow_depth.frag",
+                                    {},
+                                    {},
+                                    "shadow (skinned, T*(J*p))"}};
+    gl::ReloadableProgram skinnedGrouped_{{"effects/shadow/shadow_skinned.vert",
+                                           "effects/shadow/shadow_depth.frag",
+                                           {},
+                                           "#define GROUPED_PRODUCT\n",
+                                           "shadow (skinned, (T*J)*p)"}};
+    FullscreenPass depthView_{"effects/shadow/shadow_depth_view.frag", "shadow depth view"};
 };
 
 }  // namespace fx
