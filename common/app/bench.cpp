@@ -195,6 +195,7 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
     // A fixed frame: same time, same seed, every setting.
     s.frame.index = 1;
     s.frame.seconds = 1.0;
+    s.frame.world = s.renderer.world(s.frame.seconds);
     s.frame.deltaSeconds = 1.0 / 60.0;
     s.frame.size = {size.width, size.height};
     s.frame.step = step;

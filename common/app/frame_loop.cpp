@@ -48,6 +48,8 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
     facts.timingMethod = std::string(toString(renderer.timer().method()));
     facts.timingReason = renderer.timer().reason();
     facts.scene = s_.scene.file.string();
+    // A run whose every frame is minimised still reports the lesson's facts about its scene.
+    record_.lastFrame.world = renderer.world(0.0);
     // The steps' text from lesson.md (or lesson.ja.md), for the overlay; read again when saved.
     if (overlay_) {
         lessonText_.emplace(lessonSourceFolder(s_.lesson->info()), s_.lesson->steps(), s_.options.language);
@@ -98,6 +100,7 @@ void FrameLoop::run() {
         const Size2D extent = window.empty() ? Size2D{} : Size2D{int(place.width), int(place.height)};
         FrameInfo frame = frameInfo(index, delta, extent, place);
         frame.seconds = clock_.seconds();
+        frame.world = renderer_.world(frame.seconds);
         if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, frame.deltaSeconds);
         s_.lesson->update(frame);
         if (extent.empty()) {

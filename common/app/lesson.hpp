@@ -25,6 +25,7 @@
 #include "base/params.hpp"
 #include "base/result.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "effects/scene/world.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/scene.hpp"
 
@@ -49,6 +50,9 @@ struct Pointer {
 struct FrameInfo {
     std::uint64_t index = 0;
     double seconds = 0;  // scene time, wrapped by lessons that feed it to shaders
+    // The scene, its meshes on the GPU (posed at `seconds`) and the time, as one value for the effects
+    // that draw the scene (effects/scene/world.hpp). The runner makes the meshes and skins them.
+    World world;
     double deltaSeconds = 0;
     Size2D size;
     int step = 0;  // 0-based

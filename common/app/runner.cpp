@@ -48,6 +48,9 @@ int run(RunSession& s) {
     // From here on every way out destroys the lesson first, while the context is still current;
     // the renderer (executor, pool) and the overlay, declared later, go before it.
     LessonRelease release(s);
+    // The scene's meshes on the GPU, drawn by every pass that draws the scene (FrameInfo::world); they
+    // go before the lesson, with the context current.
+    SceneMeshes meshes(s.scene);
     if (Status ready = initLesson(s, programs); !ready) {
         log::error(s.exe, ": ", ready.error());
         return 1;
@@ -55,6 +58,10 @@ int run(RunSession& s) {
     SceneWork work(s.scene);
     FrameRenderer renderer(*context, o.timing, !o.bench);
     renderer.setSceneWork(&work);
+    renderer.setScene(s.scene, meshes);
+    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
+    work.onUpdate(Simulation::animation, "skinning",
+                  [&meshes](const SimulationStep& step) { meshes.update(step.seconds); });
     s.lesson->simulations(work);
     if (o.bench) return runBenchMode(s, renderer, *context);
 

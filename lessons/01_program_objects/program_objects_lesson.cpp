@@ -74,9 +74,7 @@ void ProgramObjectsLesson::declareParams(ParamSet& params) {
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
-Status ProgramObjectsLesson::init(const Scene& scene) {
-    scene_ = &scene;
-
+Status ProgramObjectsLesson::init(const Scene&) {
     lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
     unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
     normals_ = gl::ReloadableProgram({shader("lit.vert"), shader("normals.frag"), {}, {}, "normals"});
@@ -129,33 +127,33 @@ void ProgramObjectsLesson::updateBrokenAttempt(int step) {
 
 void ProgramObjectsLesson::drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals,
                                              const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, frame.world.scene(), camera);
     auto named = [](const char* name) { return [name](const SceneObject& o) { return o.name == name; }; };
     MeshDrawOptions rest;
     rest.only = [](const SceneObject& o) { return o.name != kUnlitObject && o.name != kNormalsObject; };
-    meshes_->draw(lit, *scene_, frame.seconds, rest);
+    frame.world.draw(lit, rest);
     MeshDrawOptions box;
     box.only = named(kUnlitObject);
-    meshes_->draw(unlit, *scene_, frame.seconds, box);
+    frame.world.draw(unlit, box);
     // glUseProgram with a program that did not link fails and leaves the program bound before it in
     // use: what the object looks like then depends on what ran last (the chapter's engine drew it
     // black). Unbinding first makes it the same every frame: no program, nothing drawn.
     glUseProgram(0);
     MeshDrawOptions sphere;
     sphere.only = named(kNormalsObject);
-    meshes_->draw(normals, *scene_, frame.seconds, sphere);
+    frame.world.draw(normals, sphere);
 }
 
 void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    SceneMeshes::setFrameUniforms(program, *scene_, camera);
-    meshes_->draw(program, *scene_, frame.seconds);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
+    frame.world.draw(program);
 }
 
 void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    SceneMeshes::setFrameUniforms(program, *scene_, camera);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
     glUseProgram(program);
     int n = gridSize_;
     lookupsLastFrame_ = 0;
@@ -193,8 +191,9 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
     TextureDesc colorDesc{TextureSize::output(), TextureFormat::RGBA8, 1};
     TextureDesc depthDesc{TextureSize::output(), TextureFormat::Depth32F, 1};
     auto drawSphere = [this, frame](GLuint program) {
-        CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-        SceneMeshes::setFrameUniforms(program, *scene_, camera);
+        CameraMatrices camera =
+            cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+        SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
         // Four joints swaying with time (wrapped, so the angle stays small after hours).
         float phase = float(std::fmod(frame.seconds, 4.0) / 4.0 * 6.2831853);
         glm::mat4 joints[4];
@@ -215,7 +214,7 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         denseSphere_.draw(row * row);
     };
     // The opaque scene's state, on a near-black background of its own so the two products stand out.
-    PassState sceneState = hdrSceneState(*scene_);
+    PassState sceneState = hdrSceneState(frame.world.scene());
     sceneState.clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f};
     TextureHandle grouped[2], parenthesised[2];
     auto& a = graph
@@ -254,7 +253,7 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         return;
     }
     if (frame.step == CopyPasted) updateRawPrograms();
-    PassState sceneState = hdrSceneState(*scene_);
+    PassState sceneState = hdrSceneState(frame.world.scene());
     graph
         .addPass(
             "scene",

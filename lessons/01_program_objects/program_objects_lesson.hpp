@@ -36,8 +36,6 @@ private:
     int meshDetail_ = 128;  // sphere segments for step 4
     int spheres_ = 16;      // instances for step 4
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::GpuMesh> gridBox_{fx::makeBox({0.18f, 0.18f, 0.18f}), "grid box"};
     fx::GpuMesh denseSphere_;
     int denseSphereDetail_ = 0;

@@ -58,7 +58,6 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
 }
 
 Status SkinnedShadowsLesson::init(const Scene& scene) {
-    scene_ = &scene;
     if (const Light* light = shadowCastingLight(scene)) sceneShadow_ = light->shadow;
     return Status::success();
 }
@@ -103,21 +102,14 @@ ShadowPassOptions SkinnedShadowsLesson::shadowOptionsForStep(int step, bool benc
     return o;
 }
 
-void SkinnedShadowsLesson::simulations(SceneWork& work) {
-    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
-    work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_->update(s.seconds); });
-}
-
 void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    const Scene& scene = *scene_;
     ShadowSettings settings = sceneShadow_;
     settings.casts = true;
     settings.mapSize = mapSize_;
     settings.filterTaps = filterTaps_;
 
     ShadowPassOptions options = shadowOptionsForStep(frame.step, frame.benchmark);
-    DeclaredShadowMap map = shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap map = shadows_->declare(graph, frame.world, settings, options);
     if (map.pass) map.pass->joinGroup(shadowPass_);
 
     // Step 3: the other product draws the same crowd into its own map, so both times stand side by
@@ -129,15 +121,13 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         other.passName = "shadow map (other product)";
         other.textureName = "shadow.map_other_product";
         other.stats = &otherStats_;
-        DeclaredShadowMap compared =
-            shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, map.lookup.light, other);
+        DeclaredShadowMap compared = shadows_->declare(graph, frame.world, settings, map.lookup.light, other);
         if (compared.pass) compared.pass->keepAlive().joinGroup(otherProductPass_);
     }
 
-    HdrSceneTargets hdr =
-        lit_->declare(graph, scene, *meshes_, frame.seconds, map, options.skinnedPlacements);
+    HdrSceneTargets hdr = lit_->declare(graph, frame.world, map, options.skinnedPlacements);
     shadows_->declareDepthView(graph, map);
-    lit_->declareLightView(graph, scene, *meshes_, frame.seconds, map, options.skinnedPlacements);
+    lit_->declareLightView(graph, frame.world, map, options.skinnedPlacements);
     present_->declare(graph, hdr.color);
 }
 

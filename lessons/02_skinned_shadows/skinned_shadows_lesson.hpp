@@ -18,7 +18,6 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void simulations(fx::SceneWork& work) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
@@ -41,9 +40,7 @@ private:
     int materialUpload_ = 0;  // 0: always (the chapter's flood), 1: ask the program
     int cutoffUniform_ = 0;   // 0: first program only (the chapter's bug), 1: every program
 
-    const fx::Scene* scene_ = nullptr;
     fx::ShadowSettings sceneShadow_;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::ShadowMap> shadows_;
     fx::Gpu<fx::ShadowLitPass> lit_;
     fx::Gpu<fx::OutputTransformPass> present_;

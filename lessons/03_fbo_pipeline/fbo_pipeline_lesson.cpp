@@ -57,21 +57,14 @@ void FboPipelineLesson::declareParams(ParamSet& params) {
 }
 
 Status FboPipelineLesson::init(const Scene& scene) {
-    scene_ = &scene;
     noShadowReason_ =
         shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
     return Status::success();
 }
 
-void FboPipelineLesson::simulations(SceneWork& work) {
-    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
-    work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_->update(s.seconds); });
-}
-
 void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     ShadowSettings settings;
-    if (const Light* sun = shadowCastingLight(*scene_)) settings = sun->shadow;
+    if (const Light* sun = shadowCastingLight(frame.world.scene())) settings = sun->shadow;
     ShadowPassOptions options;
     // Until section 3.3 the chapter's CreateShadowMap sets no state: it relies on the frame's.
     options.setsItsOwnState = frame.step >= EachPassSetsItsState;
@@ -79,18 +72,17 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (frame.step == StraightToWindow) {
         // The chapter's old order: the draw state is set before the shadow map is created.
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
-        DeclaredShadowMap shadow =
-            shadows_->declare(graph, *scene_, *meshes_, frame.seconds, settings, options);
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene()));
+        DeclaredShadowMap shadow = shadows_->declare(graph, frame.world, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
         return;
     }
-    DeclaredShadowMap shadow = shadows_->declare(graph, *scene_, *meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap shadow = shadows_->declare(graph, frame.world, settings, options);
     if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_));
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene()));
         declareStraightToWindow(graph, frame, shadow);
     } else if (frame.step == EachPassSetsItsState) {
         declareStraightToWindow(graph, frame, shadow);
@@ -106,7 +98,7 @@ void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameIn
     // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
     scene.declaresState = frame.step >= EachPassSetsItsState;
     scene.clears = frame.step >= EachPassSetsItsState;
-    litScene_->declareIntoWindow(graph, *scene_, *meshes_, frame.seconds, shadow, scene);
+    litScene_->declareIntoWindow(graph, frame.world, shadow, scene);
     uiQueue_->declare(graph, frame.size);
 }
 
@@ -121,8 +113,8 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
         sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
-        HdrSceneTargets main = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds, shadow,
-                                                             sceneOptions, "scene");
+        HdrSceneTargets main =
+            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
         const FullscreenPass* copy = &*copyToWindow_;
         TextureHandle color = main.color;
         copyToWindow_
@@ -131,8 +123,8 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
             .read(color)
             .writeColor(graph.output());
     } else {
-        HdrSceneTargets linear = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds,
-                                                               shadow, sceneOptions, "scene");
+        HdrSceneTargets linear =
+            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
         std::optional<SplitView> split;
         if (washoutSplit_ > 0.0f) {
             // The same scene, its shader still encoding: what the chapter saw before the fix. Only
@@ -140,8 +132,8 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
             LitSceneOptions washedOut;
             washedOut.passName = "scene (shader encodes too)";
             washedOut.encodeForDisplay = true;
-            HdrSceneTargets encoded = litScene_->declareIntoTargets(graph, *scene_, *meshes_, frame.seconds,
-                                                                    shadow, washedOut, "scene_encoded");
+            HdrSceneTargets encoded =
+                litScene_->declareIntoTargets(graph, frame.world, shadow, washedOut, "scene_encoded");
             split = SplitView{encoded.color, washoutSplit_};
         }
         outputTransform_->declare(graph, linear.color, split);
@@ -197,7 +189,7 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
         std::string target = cat(frame.size.width, "x", frame.size.height);
         bool bug = viewportBug_ && noShadowReason_.empty();
         int map = 0;
-        if (const Light* sun = shadowCastingLight(*scene_)) map = sun->shadow.mapSize;
+        if (const Light* sun = shadowCastingLight(frame.world.scene())) map = sun->shadow.mapSize;
         out.add(
             "sceneViewport",
             bug ? cat(map, "x", map, " on a ", target, " target (the shadow map's: only a corner is drawn)")

@@ -20,7 +20,6 @@ public:
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
-    void simulations(fx::SceneWork& work) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     void facts(fx::Facts& out, const fx::FrameInfo& frame) const override;
@@ -35,8 +34,6 @@ private:
     // otherwise rules out by setting every pass's viewport from its target).
     bool viewportBug_ = false;
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::ShadowMap> shadows_;
     fx::Gpu<LitScenePass> litScene_;
     fx::Gpu<fx::FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};

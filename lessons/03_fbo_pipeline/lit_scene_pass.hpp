@@ -30,13 +30,11 @@ struct LitSceneOptions {
 
 class LitScenePass {
 public:
-    // Into the graph's output (the window). `scene`, `meshes` and `shadow` must outlive the frame.
-    fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
-                                double seconds, const fx::DeclaredShadowMap& shadow,
-                                const LitSceneOptions& options) const;
+    // Into the graph's output (the window).
+    fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::World& world,
+                                const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options) const;
     // Into `<prefix>.color` (RGBA16F, the output's size) and `<prefix>.depth` (Depth32F), cleared.
-    fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::Scene& scene,
-                                           const fx::SceneMeshes& meshes, double seconds,
+    fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::World& world,
                                            const fx::DeclaredShadowMap& shadow,
                                            const LitSceneOptions& options, const std::string& prefix) const;
 
@@ -50,8 +48,7 @@ private:
                                         {},
                                         "scene (lit, shadowed)"}};
 
-    fx::Pass& addPass(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
-                      double seconds, const fx::DeclaredShadowMap& shadow,
+    fx::Pass& addPass(fx::FrameGraph& graph, const fx::World& world, const fx::DeclaredShadowMap& shadow,
                       const LitSceneOptions& options) const;
 };
 

@@ -93,11 +93,6 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
                     "Where the split view's divider is (drag it with the mouse)");
 }
 
-Status ColourMatrixLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    return Status::success();
-}
-
 ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
     switch (preset) {
         case GrayscalePreset:
@@ -145,7 +140,7 @@ void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // Exercise 02: the lesson chooses a transform value and hands it to the one setter.
     grading_->setTransform(blendFromIdentity(selected(frame.step), amount_));
 
-    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     DeclaredPass graded = [&] {
         PassGroup::Scope in(graph, gradingGroup_);  // runs only when the scene asks for a colour matrix
         return grading_->declare(graph, hdr.color);

@@ -15,7 +15,6 @@ public:
     fx::LessonInfo info() const override;
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
-    fx::Status init(const fx::Scene& scene) override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
@@ -48,8 +47,6 @@ private:
     bool splitView_ = true;
     float divider_ = 0.72f;  // right of the blue cylinder: every object but the capsule is processed
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::ColourMatrixPass> grading_;
     fx::Gpu<fx::OutputTransformPass> present_;

@@ -74,11 +74,6 @@ void RadialBlurLesson::declareParams(ParamSet& params) {
     samples.fromScene("postEffects.radialBlur.taps");
 }
 
-Status RadialBlurLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    return Status::success();
-}
-
 RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
     RadialBlurParams p;
     p.centre = {centreX_, centreY_};
@@ -114,7 +109,7 @@ void RadialBlurLesson::update(const FrameInfo& frame) {
 }
 
 void RadialBlurLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     RadialBlur::Declared blurred = [&] {
         PassGroup::Scope in(graph, blurGroup_);  // runs only when the scene asks for a radial blur
         return blur_->declare(graph, hdr.color, paramsForStep(frame.step));

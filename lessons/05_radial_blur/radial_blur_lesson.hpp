@@ -15,7 +15,6 @@ public:
     fx::LessonInfo info() const override;
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
-    fx::Status init(const fx::Scene& scene) override;
     void update(const fx::FrameInfo& frame) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
@@ -34,8 +33,6 @@ private:
     float start_ = 0.2f;
     int samples_ = 8;
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::RadialBlur> blur_;
     fx::Gpu<fx::OutputTransformPass> present_;

@@ -140,11 +140,6 @@ void BloomLesson::declareParams(ParamSet& params) {
         .inSteps({WholeFrameStep});
 }
 
-Status BloomLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    return Status::success();
-}
-
 BloomChainSettings BloomLesson::chainFor(int step) const {
     TextureFormat format = kChainFormats[std::clamp(format_, 0, 3)];
     if (step == Chapter000 || step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
@@ -191,11 +186,11 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         int n =
             int(bloomLevels(graph.outputSize(), firstLevelDivisor(w.chain.filters), w.chain.levels).size());
         w.compositeScale = compositeScale(step, std::max(n, 1));
-        wholeFrame_->declare(graph, *scene_, *meshes_, frame, w, *chain_, *composite_, *present_);
+        wholeFrame_->declare(graph, frame, w, *chain_, *composite_, *present_);
         return;
     }
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
-    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds, sceneFormat);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world, sceneFormat);
     TextureHandle shown = hdr.color;
     ToneCurve curve = step == Beyond ? static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2)) : ToneCurve::clip;
     float exposure = step == Beyond ? exposure_ : 1.0f;
@@ -277,7 +272,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
             "Inspect scene.color and look at the range: %s",
             step == EightBit
                 ? "nothing above 1."
-                : cat("the brightest emitters are ", brightestEmitters(*scene_, 3), ".").c_str());
+                : cat("the brightest emitters are ", brightestEmitters(frame.world.scene(), 3), ".").c_str());
         return;
     }
     if (flicker_->stats().measured && !showsReference(step)) {
@@ -293,7 +288,8 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (step == WholeFrameStep) wholeFrameFacts(out, frame);
     if (step < Chapter000) {
         out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
-        out.add("brightestEmitters", brightestEmitters(*scene_, 3), "the scene's brightest emitters");
+        out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3),
+                "the scene's brightest emitters");
         return;
     }
     BloomChainSettings s = chainFor(step);

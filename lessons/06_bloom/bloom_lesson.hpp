@@ -23,7 +23,6 @@ public:
     fx::LessonInfo info() const override;
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
-    fx::Status init(const fx::Scene& scene) override;
     void buildFrame(fx::FrameGraph& graph, const fx::FrameInfo& frame) override;
     void drawPanel(const fx::FrameInfo& frame) override;
     int benchStep() const override { return Beyond; }
@@ -65,8 +64,6 @@ private:
     int frameOrder_ = 0;   // step 6: index into effectOrders(), 0 the chapter's
     int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::BloomChain> chain_;
     fx::Gpu<fx::BloomComposite> composite_;

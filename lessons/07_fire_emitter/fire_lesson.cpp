@@ -77,7 +77,6 @@ void FireLesson::declareParams(ParamSet& params) {
 }
 
 Status FireLesson::init(const Scene& scene) {
-    scene_ = &scene;
     // One sprite for every emitter that has one (one texture, one draw); a sprite that cannot be read
     // stops the run with its path.
     const ParticleEmitter* first = nullptr;
@@ -102,12 +101,12 @@ void FireLesson::update(const FrameInfo& frame) {
 
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
-    HdrSceneTargets hdr = scenePass_->declare(graph, *scene_, *meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     const bool particles = !lacks(graph, SceneFeature::particles);
 
     // The simulation's setup follows the step and the parameters; a change starts it over. Without an
     // emitter in the scene nothing is made: no buffer, no dispatch.
-    const Setup wanted = setupFor(step);
+    const Setup wanted = setupFor(frame);
     if (particles && (!configured_ || !(wanted == setup_))) {
         configure(wanted);
     } else if (particles && frame.benchmark) {
@@ -119,11 +118,12 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
     const std::string notInView = "every emitter's bounds are outside the view";
     const bool inView = particles && anyEmitterInView(frame);
-    const Camera& cam = scene_->camera;
+    const Camera cam = frame.world.scene().camera;
     {
         PassGroup::Scope in(graph, particleGroup_);
-        Pass& sim = graph.addPass("particles.simulate",
-                                  [this](PassContext&) { simulate(std::exchange(pendingDt_, 0.0)); });
+        Pass& sim = graph.addPass("particles.simulate", [this, cam](PassContext&) {
+            simulate(std::exchange(pendingDt_, 0.0), cam);
+        });
         sim.keepAlive();
 
         // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the
@@ -248,7 +248,7 @@ void FireLesson::drawPanel(const FrameInfo& frame) {
 }
 
 void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
-    if (!scene_ || scene_->emitters.empty()) {
+    if (frame.world.scene().emitters.empty()) {
         out.add("particles", "none", "the scene has no emitter: no buffer, no dispatch, no particle pass");
         out.add("poolBytes", "0", "particle pool (bytes)");
         return;

@@ -46,15 +46,15 @@ public:
         bool premultiplied = false;  // step 5: one blend for fire and smoke
         bool operator==(const Setup&) const = default;
     };
-    Setup setupFor(int step) const;
+    Setup setupFor(const fx::FrameInfo& frame) const;
     // The 0.5 s long frame of step 2 lands on this frame (the third of a run, then every 120th).
     bool hitchOn(const fx::FrameInfo& frame) const;
 
 private:
     void configure(const Setup& setup);
-    void restart();            // the steady flame again, from the same state (prewarmed)
-    void simulate(double dt);  // the "particles.simulate" pass body
-    int draw(const fx::ParticleDrawSettings& settings);  // the draw pass bodies: draw calls made
+    void restart();  // the steady flame again, from the same state (prewarmed)
+    void simulate(double dt, const fx::Camera& sceneCamera);  // the "particles.simulate" pass body
+    int draw(const fx::ParticleDrawSettings& settings);       // the draw pass bodies: draw calls made
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
     void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
 
@@ -71,8 +71,6 @@ private:
     float threshold_ = 1.0f;  // the chapter's bloom (lesson 06, step 3)
     float intensity_ = 2.0f;
 
-    const fx::Scene* scene_ = nullptr;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::ParticleRenderer> renderer_;
     fx::Gpu<fx::FullscreenPass> composite_{"effects/particles/particles_composite.frag",

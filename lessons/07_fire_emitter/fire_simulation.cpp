@@ -37,10 +37,11 @@ float emitterRadius(const ParticleEmitter& e) {
 
 }  // namespace
 
-FireLesson::Setup FireLesson::setupFor(int step) const {
+FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
+    const int step = frame.step;
     Setup setup;
     const bool beyond = step == Beyond;
-    for (const ParticleEmitter& e : scene_->emitters) {
+    for (const ParticleEmitter& e : frame.world.scene().emitters) {
         if (!beyond && e.kind != EmitterKind::fire) continue;  // smoke and sparks are step 5's
         EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_->hasSprite()};
         if (e.kind == EmitterKind::fire) s.emitter.spinDegreesPerSecond += spin_;
@@ -113,7 +114,7 @@ void FireLesson::restart() {
         system_.update(longest);
 }
 
-void FireLesson::simulate(double dt) {
+void FireLesson::simulate(double dt, const Camera& sceneCamera) {
     Clock::time_point start = Clock::now();
     dt += std::exchange(firstDt_, 0.0);
     system_.update(dt);
@@ -123,7 +124,7 @@ void FireLesson::simulate(double dt) {
         visible_.clear();
     } else {
         system_.collect(visible_);
-        CameraMatrices camera = cameraMatrices(scene_->camera, 1, 1);
+        CameraMatrices camera = cameraMatrices(sceneCamera, 1, 1);
         auto sortedBegin = std::find_if(visible_.begin(), visible_.end(), [this](const GpuParticle& p) {
             return int(p.extra.y) >= setup_.sortedFrom;
         });
@@ -182,7 +183,7 @@ int FireLesson::draw(const ParticleDrawSettings& settings) {
 }
 
 bool FireLesson::anyEmitterInView(const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
     const glm::mat4 m = glm::transpose(camera.viewProjection);
     // The six planes of the view volume (Gribb and Hartmann), each as (normal, distance).
     const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1],

@@ -117,7 +117,6 @@ void CloudsLesson::declareParams(ParamSet& params) {
 }
 
 Status CloudsLesson::init(const Scene& scene) {
-    scene_ = &scene;
     viewScene_ = scene;
     if (const Light* light = shadowCastingLight(scene)) {
         sceneShadow_ = light->shadow;
@@ -143,8 +142,7 @@ void CloudsLesson::simulations(SceneWork& work) {
 }
 
 void CloudsLesson::update(const FrameInfo& frame) {
-    (void)frame;
-    viewScene_.camera = scene_->camera;
+    viewScene_.camera = frame.world.scene().camera;
     viewScene_.camera.position.y += cameraLift_;
     if (viewScene_.camera.aim == CameraAim::target) viewScene_.camera.target.y += cameraLift_;
 }
@@ -208,9 +206,10 @@ CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const
 
 void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const Scene& scene = viewScene_;
+    const World world = frame.world.seenThrough(viewScene_);
     ShadowSettings settings = sceneShadow_;
-    DeclaredShadowMap map = shadows_->declare(graph, scene, *meshes_, frame.seconds, settings, {});
-    HdrSceneTargets hdr = lit_->declare(graph, scene, *meshes_, frame.seconds, map);
+    DeclaredShadowMap map = shadows_->declare(graph, world, settings, {});
+    HdrSceneTargets hdr = lit_->declare(graph, world, map);
 
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     jitterFrame_ = (jitterFrame_ + 1) % 1024;
@@ -274,7 +273,8 @@ void CloudsLesson::drawPanel(const FrameInfo& frame) {
 void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     const bool march = s.stage == CloudStage::march;
-    out.add("cloudLayer", !scene_ || scene_->clouds.empty() ? "none" : "first of the scene's", "cloud layer");
+    out.add("cloudLayer", frame.world.scene().clouds.empty() ? "none" : "first of the scene's",
+            "cloud layer");
     out.add("densityTextureBytes", std::to_string(density_.bytes()), "density texture (bytes, SRGB8_ALPHA8)");
     if (march) {
         out.add("samples", std::to_string(s.march.steps), "samples per ray");

@@ -79,10 +79,8 @@ private:
     // What restarts the running average when it changes (everything but the camera and the jitter).
     std::uint64_t settingsKey(const fx::CloudFrameSettings& s, int step) const;
 
-    const fx::Scene* scene_ = nullptr;
     fx::Scene viewScene_;  // the scene with the camera lifted by camera_lift (the same for every pass)
     fx::ShadowSettings sceneShadow_;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::ShadowMap> shadows_;
     fx::Gpu<fx::ShadowLitPass> lit_;
     fx::Gpu<fx::CloudPass> clouds_;

@@ -94,24 +94,26 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
 }
 
 Status DepthOfFieldLesson::init(const Scene& scene) {
-    scene_ = &scene;
     view_ = scene;
     return Status::success();
 }
 
-ThinLensModel DepthOfFieldLesson::lensModel(Size2D size) const {
+ThinLensModel DepthOfFieldLesson::lensModel(const FrameInfo& frame) const {
+    const Size2D size = frame.size;
     ThinLensInput in;
     in.lens = Lens{focalLengthMm_, sensorWidthMm_, fNumber_, focusM_};
-    in.nearM = scene_ ? scene_->camera.near : 0.1f;
-    in.farM = scene_ ? scene_->camera.far : 500.0f;
+    in.nearM = frame.world.scene().camera.near;
+    in.farM = frame.world.scene().camera.far;
     in.widthPixels = size.width;
     in.maxCocPixels = maxCoc_;
     in.convention = convention();
     return thinLensModel(in);
 }
 
-Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
-    Camera camera = scene_ ? scene_->camera : Camera{};
+Camera DepthOfFieldLesson::cameraFor(const FrameInfo& frame) const {
+    const int step = frame.step;
+    const Size2D size = frame.size;
+    Camera camera = frame.world.scene().camera;
     camera.lens.reset();
     if (step <= Naive) {
         // The chapter's first camera: the same line of sight, 55.9 m from the point it looks at.
@@ -135,9 +137,9 @@ Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
 
 void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
-    view_.camera = cameraFor(step, frame.size);
-    HdrSceneTargets hdr = scenePass_->declare(graph, view_, *meshes_, frame.seconds);
-    const ThinLensModel model = lensModel(frame.size);
+    view_.camera = cameraFor(frame);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world.seenThrough(view_));
+    const ThinLensModel model = lensModel(frame);
     const DofLensUniforms lens = dofLensUniforms(model);
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
@@ -163,7 +165,7 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                              r.camera.fovYDegrees, frame.size.height);
                 r.focusM = float(model.focusM);
                 r.samples = referenceSamples_;
-                shown = reference_->declare(graph, view_, *meshes_, frame.seconds, r).output;
+                shown = reference_->declare(graph, frame.world.seenThrough(view_), r).output;
             } else {
                 DofGatherSettings g{taps_, resolution_ == 1, fields_ == 1, highlight_};
                 shown = dof_->declareGather(graph, hdr.color, coc, lens, g).result;
@@ -182,7 +184,7 @@ void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {
 
 void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
-    const Camera camera = cameraFor(step, frame.size);
+    const Camera camera = cameraFor(frame);
     out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
     out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
             "vertical field of view");
@@ -192,7 +194,7 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
                 "raw depth at the target (sharp at 0.935)");
         return;
     }
-    const ThinLensModel m = lensModel(frame.size);
+    const ThinLensModel m = lensModel(frame);
     out.add("convention", chapterCompatible_ ? "chapter-compatible" : "corrected", "convention");
     out.add("focus", cat(m.focusM), "focus distance used (m)");
     out.add("focalLength", cat(m.focalMm), "focal length F (mm)");

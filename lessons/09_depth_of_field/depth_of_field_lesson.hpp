@@ -32,10 +32,10 @@ public:
 
     enum Step { Framebuffer, Naive, MovedCamera, PhysicalCamera, ChapterShader, Beyond, Reference };
 
-    // The camera a step draws with (position and projection) at a target of `size`.
-    fx::Camera cameraFor(int step, fx::Size2D size) const;
-    // The thin-lens model of the current parameters at a target of `size`.
-    fx::ThinLensModel lensModel(fx::Size2D size) const;
+    // The camera the frame's step draws with (position and projection) at the frame's size.
+    fx::Camera cameraFor(const fx::FrameInfo& frame) const;
+    // The thin-lens model of the current parameters at the frame's size.
+    fx::ThinLensModel lensModel(const fx::FrameInfo& frame) const;
     fx::CocConvention convention() const {
         return chapterCompatible_ ? fx::CocConvention::chapter : fx::CocConvention::corrected;
     }
@@ -61,9 +61,7 @@ private:
     float exposure_ = 1.0f;
     bool benchReference_ = false;
 
-    const fx::Scene* scene_ = nullptr;
     fx::Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::DepthOfField> dof_;
     fx::Gpu<fx::DofReference> reference_;

@@ -64,7 +64,6 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
 }
 
 Status DeferredShadingLesson::init(const Scene& scene) {
-    scene_ = &scene;
     allLights_ = allLights(scene);
     pointLightsInScene_ = int(std::count_if(allLights_.begin(), allLights_.end(),
                                             [](const Light& l) { return l.type == LightType::point; }));
@@ -97,14 +96,14 @@ void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
 
 void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
                                             std::optional<SplitView>& split) {
-    const Scene& scene = *scene_;
+    const Scene& scene = frame.world.scene();
     const int step = frame.step;
     DeclaredShadowMap shadow;
     if (const Light* sun = shadowCastingLight(scene))
-        shadow = shadows_->declare(graph, scene, *meshes_, frame.seconds, sun->shadow, ShadowPassOptions{});
+        shadow = shadows_->declare(graph, frame.world, sun->shadow, ShadowPassOptions{});
 
     GBufferOptions options{layoutFor(step), step == Layout && !frame.benchmark, worldOffsetFor(step)};
-    GBufferTargets g = gbuffer_->declare(graph, scene, *meshes_, frame.seconds, options);
+    GBufferTargets g = gbuffer_->declare(graph, frame.world, options);
     if (!frame.benchmark) lighting_->declareViews(graph, scene, g);
 
     std::optional<CulledTiles> tiles;
@@ -125,7 +124,7 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     shown = lit;
     if (step == Reflection) {
         PassGroup::Scope in(graph, reflectionGroup_);
-        reflection_->declare(graph, scene, *meshes_, frame.seconds, *lights_, g, lit,
+        reflection_->declare(graph, frame.world, *lights_, g, lit,
                              kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
         return;
     }
@@ -137,14 +136,13 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
 }
 
 void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    const Scene& scene = *scene_;
+    const Scene& scene = frame.world.scene();
     uploadLights(frame);
     TextureHandle shown;
     std::optional<SplitView> split;
     switch (frame.step) {
         case RenderToTexture: {
-            TextureHandle color =
-                rtt_->declare(graph, scene, *meshes_, frame.seconds, static_cast<RttDepth>(rttDepth_ != 0));
+            TextureHandle color = rtt_->declare(graph, frame.world, static_cast<RttDepth>(rttDepth_ != 0));
             // The 512 x 512 texture, stretched over the window: sampled in [0, 1], whatever the sizes.
             const FullscreenPass* copy = &*rttToScreen_;
             Pass& pass = rttToScreen_->addPass(
@@ -155,13 +153,13 @@ void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame
             break;
         }
         case ThreeTargets: {
-            MrtTargets t = mrt_->declare(graph, scene, *meshes_, frame.seconds,
+            MrtTargets t = mrt_->declare(graph, frame.world,
                                          slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
             shown = mrt_->declareComposite(graph, scene, t);
             break;
         }
         case Sharpen: {
-            MrtTargets t = mrt_->declare(graph, scene, *meshes_, frame.seconds, MrtOrder::fixed, &mrtStats_);
+            MrtTargets t = mrt_->declare(graph, frame.world, MrtOrder::fixed, &mrtStats_);
             SharpenTargets s = mrt_->declareSharpen(graph, scene, t);
             shown = s.clipped;
             split = SplitView{mrt_->declareRangeView(graph, s), divider_};
@@ -205,8 +203,9 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("halfFloatStep", cat(halfFloatSpacing(at)), cat("a half float's step at ", at, " m (m)"));
     }
     if (step == Reflection) {
-        auto mirror = findMirror(*scene_, frame.seconds);
-        out.add("mirror", mirror ? scene_->objects[mirror->object].name : std::string("none"), "mirror");
+        auto mirror = findMirror(frame.world.scene(), frame.seconds);
+        out.add("mirror", mirror ? frame.world.scene().objects[mirror->object].name : std::string("none"),
+                "mirror");
         int fraction = kReflectionFractions[std::clamp(reflectionSize_, 0, 2)];
         out.add("reflectionSize",
                 cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),

@@ -55,12 +55,10 @@ private:
     int reflectionSize_ = 1;  // index into kReflectionFractions
     float divider_ = 0.5f;
 
-    const fx::Scene* scene_ = nullptr;
     std::vector<fx::Light> allLights_;
     int pointLightsInScene_ = 0;
     glm::vec3 uploadedOffset_{-1.0f};
     int uploadedCount_ = -1;
-    fx::Gpu<fx::SceneMeshes> meshes_;
     fx::Gpu<fx::RenderToTexture> rtt_;
     fx::Gpu<fx::FullscreenPass> rttToScreen_{"common/copy.frag", "rtt to screen"};
     fx::Gpu<fx::LectureMrt> mrt_;

@@ -141,7 +141,7 @@ TEST_F(CloudsOnGl, TheSunStraightOverheadShadowsTheCloudUnderAPillar) {
     TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
     TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
     ShadowSettings settings = shadowCastingLight(scene)->shadow;
-    DeclaredShadowMap map = shadows.declare(graph, scene, meshes, 0.0, settings, {});
+    DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), settings, {});
     ASSERT_NE(map.pass, nullptr);
     EXPECT_FALSE(map.lookup.light.fallbackDirection);
     pass.declare(graph, {c, d, &map}, constant, s);

@@ -93,7 +93,7 @@ protected:
         ShadowPassOptions options;
         options.cutoff = cutoff;
         meshes->update(kSeconds);
-        DeclaredShadowMap map = shadows.declare(graph, scene, *meshes, kSeconds, settings, options);
+        DeclaredShadowMap map = shadows.declare(graph, World(scene, *meshes, kSeconds), settings, options);
         EXPECT_NE(map.pass, nullptr);
         if (!map.pass) return {};
         graph.capture(map.map);

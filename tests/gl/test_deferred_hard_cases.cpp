@@ -138,7 +138,7 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     auto measure = [&](GBufferLayout layout, float offset) {
         FloatImage error = runner.run(size, [&](FrameGraph& graph) {
             GBufferTargets g =
-                gbuffer.declare(graph, *scene, meshes, 0.0, {layout, true, glm::vec3(offset, 0, 0)});
+                gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, true, glm::vec3(offset, 0, 0)});
             return lighting.declarePositionError(graph, *scene, g);
         });
         EXPECT_TRUE(finite(error));

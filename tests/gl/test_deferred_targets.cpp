@@ -154,7 +154,7 @@ TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
     GraphRunner runner(size.width, size.height);
     auto normals = [&](GBufferLayout layout) {
         return runner.run(size, [&](FrameGraph& graph) {
-            return gbuffer.declare(graph, *scene, meshes, 0.0, {layout, false, glm::vec3(0)}).normal;
+            return gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, false, glm::vec3(0)}).normal;
         });
     };
     FloatImage fat = normals(GBufferLayout::fat), raw = normals(GBufferLayout::rgba8Raw);

@@ -140,7 +140,7 @@ TEST_F(FullscreenOnGl, TheHdrSceneIsWrittenFiniteAndWithinItsLimit) {
     EffectRunner runner(16, 16);
     FloatImage unused = makeImage(16, 16, [](int, int) { return std::array<float, 4>{0, 0, 0, 1}; });
     FloatImage hdr = runner.run(unused, TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle) {
-        return scenePass.declare(g, scene, meshes, 0.0).color;
+        return scenePass.declare(g, World(scene, meshes, 0.0)).color;
     });
     ASSERT_FALSE(hdr.empty()) << runner.lastErrors;
     EXPECT_EQ(hdr.texel(8, 8, 0), kSceneHdrMax) << "the ball, clamped";

@@ -102,15 +102,15 @@ protected:
         options.stats = &result.stats;
         meshes->update(seconds);
         DeclaredShadowMap map =
-            light ? shadows.declare(graph, scene, *meshes, seconds, settings, *light, options)
-                  : shadows.declare(graph, scene, *meshes, seconds, settings, options);
+            light ? shadows.declare(graph, World(scene, *meshes, seconds), settings, *light, options)
+                  : shadows.declare(graph, World(scene, *meshes, seconds), settings, options);
         result.light = map.lookup.light;
         result.mapPassExists = map.pass != nullptr;
         if (!map.pass) return result;
         graph.capture(map.map);
         HdrSceneTargets hdr;
         if (withColor) {
-            hdr = lit.declare(graph, scene, *meshes, seconds, map, options.skinnedPlacements);
+            hdr = lit.declare(graph, World(scene, *meshes, seconds), map, options.skinnedPlacements);
             graph.capture(hdr.color);
         }
         if (before) before();
@@ -239,7 +239,7 @@ TEST_F(ShadowMapTest, OwnStateWritesDepthWhateverWasLeftAndInheritedStateDoesNot
     FrameGraph graph(OutputTarget{kOutput, "output", TextureFormat::RGBA8, 0});
     ShadowSettings settings;
     settings.casts = true;
-    DeclaredShadowMap map = shadows.declare(graph, scene, *meshes, 0.0, settings, inherits);
+    DeclaredShadowMap map = shadows.declare(graph, World(scene, *meshes, 0.0), settings, inherits);
     ASSERT_NE(map.pass, nullptr);
     EXPECT_FALSE(map.pass->state().depthTest.has_value());
     EXPECT_FALSE(map.pass->state().blend.has_value());
@@ -276,7 +276,7 @@ TEST_F(ShadowMapTest, LightParallelToUpGivesFiniteShadows) {
 TEST_F(ShadowMapTest, CastersOutsideTheLightFrustumStayFiniteAndPancake) {
     // A frustum that starts inside the casters: without depth clamping, everything nearer the light
     // than the near plane would be clipped away and cast nothing.
-    ShadowBounds bounds = sceneBounds(scene, *meshes, 0.5);
+    ShadowBounds bounds = sceneBounds(World(scene, *meshes, 0.5));
     LightView fitted =
         fitLightFrustum(bounds.casters, bounds.everything, scene.lights[0].direction, 15.0f, kMapSize);
     LightView cut = fitted;

@@ -2,7 +2,7 @@
 // Ray-marched clouds (the Clouds chapter): one full-screen pass "clouds" that blends a cloud layer
 // over the scene's colour (src alpha, one minus src alpha), shaders/effects/clouds/clouds.frag.
 //
-//   CloudPass clouds = CloudPass::create();                   // Lesson::init, context current
+//   CloudPass clouds;  // its programs build when a frame first asks for them
 //   CloudDensityTexture density = CloudDensityTexture::load(layer.densityTexture.resolved);
 //   Pass& pass = clouds.declare(graph, {hdr.color, hdr.depth, &shadowMap}, frameSettings);
 //

@@ -7,7 +7,7 @@
 //                        the sun through the slab; the transmittance exp(-optical depth), 1 = no cloud.
 //   "cloud shadow apply" modifies scene.color with the blend dst x src: colour x (1 - sunShare x (1 - T)).
 //
-//   CloudShadowPass cloudShadow = CloudShadowPass::create();      // Lesson::init, context current
+//   CloudShadowPass cloudShadow;  // builds its programs: the context is current
 //   cloudShadow.declare(graph, {hdr.color, hdr.depth}, density, cloudSettings, {toLight, 0.7f});
 //
 // The map pass samples the depth texture without attaching it (it writes only clouds.shadow), and the

@@ -26,16 +26,15 @@ void setLectureLight(GLuint program) {
     glProgramUniform3f(program, uniform_location::ambient, 0.2f, 0.2f, 0.2f);
 }
 
-MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                               double seconds, MrtOrder order, MrtStats* stats) const {
+MrtTargets LectureMrt::declare(FrameGraph& graph, const World& world, MrtOrder order, MrtStats* stats) const {
     const gl::ReloadableProgram* program = &phong_;
-    Pass& pass = graph.addPass("mrt", [program, &scene, &meshes, seconds, order, stats](PassContext& ctx) {
+    Pass& pass = graph.addPass("mrt", [program, world, order, stats](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        SceneMeshes::setFrameUniforms(program->name(), scene, camera);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
+        SceneMeshes::setFrameUniforms(program->name(), world.scene(), camera);
         setLectureLight(program->name());
         checkOutputsOnce(program->name(), "mrt");
-        meshes.draw(program->name(), scene, seconds);
+        world.draw(program->name());
         if (order == MrtOrder::slides) {
             // The slides' step 6, while their framebuffer object is still bound.
             gl::ExpectedErrorScope expected("the slides restore GL_BACK with the FBO still bound");
@@ -57,7 +56,7 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const Scen
     t.ambient = pass.create("mrt.ambient", rgba8, TextureUsage::ColorAttachment);
     t.depth = pass.create("mrt.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                           TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.clearColor = ClearColor{0, 0, 0, 0};  // every target; the composite adds the sky once
     runsWith(pass.setState(state), phong_);
     return t;

@@ -13,7 +13,7 @@
 #include <cstdint>
 
 #include "effects/post/fullscreen_pass.hpp"
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 
@@ -48,8 +48,7 @@ class LectureMrt {
 public:
     // "mrt": the scene's Phong terms into three targets (cleared to 0) plus depth. `stats` must outlive
     // the frame's execution (it may be null).
-    MrtTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                       MrtOrder order, MrtStats* stats) const;
+    MrtTargets declare(FrameGraph& graph, const World& world, MrtOrder order, MrtStats* stats) const;
     // "mrt composite": D + S + A, and the sky where no surface is, into "mrt.sum" (RGBA16F).
     TextureHandle declareComposite(FrameGraph& graph, const Scene& scene, const MrtTargets& targets) const;
     // "mrt sharpen": the slides' variant, into both sharpen targets at once (two colour attachments).

@@ -56,39 +56,38 @@ PlanarReflection::PlanarReflection(const Scene& scene) {
     }
 }
 
-TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                        double seconds, const PointLightBuffer& lights,
+TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
                                         const GBufferTargets& g, TextureHandle lit, int fraction) const {
-    std::optional<MirrorPlane> mirror = findMirror(scene, seconds);
+    std::optional<MirrorPlane> mirror = findMirror(world.scene(), world.seconds());
     const gl::ReloadableProgram* reflect = &reflect_;
     const PointLightBuffer* buffer = &lights;
     const MirrorPlane m = mirror.value_or(MirrorPlane{});
-    Pass& pass =
-        graph.addPass("planar reflection", [reflect, buffer, &scene, &meshes, seconds, m](PassContext& ctx) {
-            // The same projection as the camera's (the same aspect: the target is a fraction of the output),
-            // the view mirrored in the plane.
-            Size2D size = ctx.targetSize();
-            CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-            glm::mat4 r = reflectionMatrix(m.plane);
-            camera.view = camera.view * r;
-            camera.viewProjection = camera.projection * camera.view;
-            camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
-            GLuint program = reflect->name();
-            SceneMeshes::setFrameUniforms(program, scene, camera);
-            glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
-            glProgramUniform4fv(program, kClipPlaneLocation, 1, glm::value_ptr(clip));
-            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
-            glProgramUniform1i(program, kLightCountLocation, buffer->count());
-            buffer->bind();
-            glEnable(GL_CLIP_DISTANCE0);
-            meshes.draw(program, scene, seconds);
-            glDisable(GL_CLIP_DISTANCE0);
-        });
+    Pass& pass = graph.addPass("planar reflection", [reflect, buffer, world, m](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        // The same projection as the camera's (the same aspect: the target is a fraction of the output),
+        // the view mirrored in the plane.
+        Size2D size = ctx.targetSize();
+        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        glm::mat4 r = reflectionMatrix(m.plane);
+        camera.view = camera.view * r;
+        camera.viewProjection = camera.projection * camera.view;
+        camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
+        GLuint program = reflect->name();
+        SceneMeshes::setFrameUniforms(program, scene, camera);
+        glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
+        glProgramUniform4fv(program, kClipPlaneLocation, 1, glm::value_ptr(clip));
+        glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1i(program, kLightCountLocation, buffer->count());
+        buffer->bind();
+        glEnable(GL_CLIP_DISTANCE0);
+        world.draw(program);
+        glDisable(GL_CLIP_DISTANCE0);
+    });
     const TextureSize at = TextureSize::outputFraction(1, std::clamp(fraction, 1, 8));
     TextureHandle color =
         pass.create("reflection.color", {at, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
     pass.setState(state);
     needs(pass, SceneFeature::mirror);
@@ -96,21 +95,21 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
 
     const gl::ReloadableProgram* surface = &surface_;
     const GpuMesh* mesh = &mirrorMesh_;
-    Pass& over =
-        graph.addPass("mirror surface", [surface, mesh, &scene, seconds, m, color, g](PassContext& ctx) {
-            Size2D size = ctx.targetSize();
-            CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
-            GLuint program = surface->name();
-            SceneMeshes::setFrameUniforms(program, scene, camera);
-            glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], seconds);
-            glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-            glProgramUniform1f(program, kStrengthLocation, m.strength);
-            glProgramUniform2f(program, kOutputSizeLocation, float(size.width), float(size.height));
-            glBindTextureUnit(0, ctx.native(color));
-            glBindTextureUnit(1, ctx.native(g.depth));
-            glUseProgram(program);
-            mesh->draw();
-        });
+    Pass& over = graph.addPass("mirror surface", [surface, mesh, world, m, color, g](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        Size2D size = ctx.targetSize();
+        CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
+        GLuint program = surface->name();
+        SceneMeshes::setFrameUniforms(program, scene, camera);
+        glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], world.seconds());
+        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform1f(program, kStrengthLocation, m.strength);
+        glProgramUniform2f(program, kOutputSizeLocation, float(size.width), float(size.height));
+        glBindTextureUnit(0, ctx.native(color));
+        glBindTextureUnit(1, ctx.native(g.depth));
+        glUseProgram(program);
+        mesh->draw();
+    });
     // The depth test is done in the shader against the G-buffer's depth, which the lighting pass also
     // samples: as a depth attachment here it would be modified after the lighting pass read it.
     over.read(color)

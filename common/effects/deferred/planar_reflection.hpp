@@ -17,6 +17,7 @@
 #include "effects/deferred/gbuffer_pass.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/scene/gpu_mesh.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 
 namespace fx {
@@ -39,9 +40,8 @@ public:
 
     // "planar reflection" at `fraction` of the output (1, 2 or 4: full, half, quarter size), then
     // "mirror surface" over `lit` (modified in place). Returns reflection.color.
-    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                          const PointLightBuffer& lights, const GBufferTargets& g, TextureHandle lit,
-                          int fraction) const;
+    TextureHandle declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
+                          const GBufferTargets& g, TextureHandle lit, int fraction) const;
 
 private:
     gl::ReloadableProgram reflect_{{"effects/deferred/mirrored_scene.vert",

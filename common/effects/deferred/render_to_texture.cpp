@@ -89,12 +89,12 @@ std::string RenderToTexture::attachmentsText(RttDepth depth) const {
     return describeAttachments(framebuffer(depth));
 }
 
-TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                       double seconds, RttDepth depth) const {
+TextureHandle RenderToTexture::declare(FrameGraph& graph, const World& world, RttDepth depth) const {
     TextureHandle color = graph.importTexture("rtt.color", color_.spec(), color_.name());
     const gl::ReloadableProgram* program = &program_;
     const GLuint fbo = framebuffer(depth);
-    Pass& pass = graph.addPass("render to texture", [program, fbo, &scene, &meshes, seconds](PassContext&) {
+    Pass& pass = graph.addPass("render to texture", [program, fbo, world](PassContext&) {
+        const Scene& scene = world.scene();
         // The graph bound a framebuffer for rtt.color; the recipe's own one (with its depth) replaces it.
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, kRttSize, kRttSize);  // at most the FBO's size, whatever the window's
@@ -108,7 +108,7 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
         CameraMatrices camera = cameraMatrices(scene.camera, kRttSize, kRttSize);
         SceneMeshes::setFrameUniforms(program->name(), scene, camera);
         setLectureLight(program->name());
-        meshes.draw(program->name(), scene, seconds);
+        world.draw(program->name());
     });
     pass.writeColor(color);
     if (depth == RttDepth::texture) {
@@ -116,7 +116,7 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
         TextureHandle d = graph.importTexture("rtt.depth", depthTexture_.spec(), depthTexture_.name());
         pass.writeDepth(d);
     }
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.clearColor.reset();  // cleared in the body, on the recipe's framebuffer
     state.clearDepth.reset();
     runsWith(pass.setState(state), program_);

@@ -8,10 +8,10 @@
 // "render to texture" writes. attachmentsText() is what GL says is attached, asked back from GL.
 //
 //   RenderToTexture rtt;  // builds the textures, the renderbuffer and both framebuffers
-//   TextureHandle color = rtt.declare(graph, scene, meshes, t, RttDepth::renderbuffer);
+//   TextureHandle color = rtt.declare(graph, frame.world, RttDepth::renderbuffer);
 #include <string>
 
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
 #include "gl/texture.hpp"
@@ -30,8 +30,7 @@ public:
     // Declares "render to texture", which draws the scene lit (the lecture's Phong terms, summed) into
     // "rtt.color" (RGBA8, 512 x 512, imported) with the chosen depth attachment. With a depth texture,
     // "rtt.depth" (Depth32F) is imported too, so the inspector can show it. Returns rtt.color.
-    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                          RttDepth depth) const;
+    TextureHandle declare(FrameGraph& graph, const World& world, RttDepth depth) const;
 
     // "colour 0: texture rtt.color RGBA8 512x512; depth: renderbuffer GL_DEPTH_COMPONENT24", read
     // back from GL with glGetNamedFramebufferAttachmentParameteriv.

@@ -68,42 +68,42 @@ float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, floa
 
 DofReference::DofReference() : scratch_(std::make_shared<Scratch>()) {}
 
-DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                   double seconds, const DofReferenceSettings& s) const {
+DeclaredPass DofReference::declare(FrameGraph& graph, const World& world,
+                                   const DofReferenceSettings& s) const {
     const gl::ReloadableProgram* program = &scene_;
     const FullscreenPass* accumulate = &accumulate_;
     std::shared_ptr<Scratch> scratch = scratch_;
-    Pass& pass = graph.addPass(
-        "dof reference", [program, accumulate, scratch, &scene, &meshes, seconds, s](PassContext& ctx) {
-            GLint target = 0;
-            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-            const Size2D size = ctx.targetSize();
-            scratch->ensure(size);
-            const CameraMatrices base = cameraMatrices(s.camera, size.width, size.height);
-            const int n = std::max(s.samples, 1);
-            PassState accumulateState = FullscreenPass::state();
-            accumulateState.blend = true;
-            accumulateState.blendFunction = BlendFunction::additive();
-            const ClearColor sky = *hdrSceneState(scene).clearColor;
-            const float one = 1.0f;
-            for (int i = 0; i < n; ++i) {
-                glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
-                CameraMatrices camera =
-                    jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
-                glBindFramebuffer(GL_FRAMEBUFFER, scratch->framebuffer.name());
-                applyGlState(hdrSceneState(scene), size);
-                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
-                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
-                SceneMeshes::setFrameUniforms(program->name(), scene, camera);
-                glProgramUniform1f(program->name(), kHdrMaxLocation, kSceneHdrMax);
-                meshes.draw(program->name(), scene, seconds);
+    Pass& pass = graph.addPass("dof reference", [program, accumulate, scratch, world, s](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        GLint target = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+        const Size2D size = ctx.targetSize();
+        scratch->ensure(size);
+        const CameraMatrices base = cameraMatrices(s.camera, size.width, size.height);
+        const int n = std::max(s.samples, 1);
+        PassState accumulateState = FullscreenPass::state();
+        accumulateState.blend = true;
+        accumulateState.blendFunction = BlendFunction::additive();
+        const ClearColor sky = *hdrSceneState(scene).clearColor;
+        const float one = 1.0f;
+        for (int i = 0; i < n; ++i) {
+            glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
+            CameraMatrices camera =
+                jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
+            glBindFramebuffer(GL_FRAMEBUFFER, scratch->framebuffer.name());
+            applyGlState(hdrSceneState(scene), size);
+            glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
+            glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
+            SceneMeshes::setFrameUniforms(program->name(), scene, camera);
+            glProgramUniform1f(program->name(), kHdrMaxLocation, kSceneHdrMax);
+            world.draw(program->name());
 
-                glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
-                applyGlState(accumulateState, size);
-                glProgramUniform1f(accumulate->program(), 0, 1.0f / float(n));
-                accumulate->draw({scratch->color.name()});
-            }
-        });
+            glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+            applyGlState(accumulateState, size);
+            glProgramUniform1f(accumulate->program(), 0, 1.0f / float(n));
+            accumulate->draw({scratch->color.name()});
+        }
+    });
     TextureHandle out = pass.create("dof.reference", {TextureSize::output(), TextureFormat::RGBA32F, 1},
                                     TextureUsage::ColorAttachment);
     PassState state = FullscreenPass::state();

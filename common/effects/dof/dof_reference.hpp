@@ -14,7 +14,7 @@
 
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -43,9 +43,7 @@ struct DofReferenceSettings {
 class DofReference {
 public:
     DofReference();  // in the .cpp, where Scratch is complete
-    // `scene` and `meshes` must outlive the frame's execution.
-    DeclaredPass declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                         const DofReferenceSettings& settings) const;
+    DeclaredPass declare(FrameGraph& graph, const World& world, const DofReferenceSettings& settings) const;
 
 private:
     struct Scratch;

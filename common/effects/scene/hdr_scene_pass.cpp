@@ -27,23 +27,23 @@ PassState hdrSceneState(const Scene& scene) {
             .clearDepth = 1.0f};
 }
 
-HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                      double seconds, TextureFormat colorFormat) const {
+HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const World& world,
+                                      TextureFormat colorFormat) const {
     const gl::ReloadableProgram* program = &program_;
-    Pass& pass = graph.addPass("scene", [program, &scene, &meshes, seconds](PassContext& ctx) {
+    Pass& pass = graph.addPass("scene", [program, world](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
         GLuint name = program->name();
-        SceneMeshes::setFrameUniforms(name, scene, camera);
+        SceneMeshes::setFrameUniforms(name, world.scene(), camera);
         glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
-        meshes.draw(name, scene, seconds);
+        world.draw(name);
     });
     HdrSceneTargets targets;
     targets.color =
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    runsWith(pass.setState(hdrSceneState(scene)), program_);
+    runsWith(pass.setState(hdrSceneState(world.scene())), program_);
     return targets;
 }
 

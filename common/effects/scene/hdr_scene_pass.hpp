@@ -8,8 +8,8 @@
 // infinite or NaN texel can enter the post-processing chain and spread through a blur.
 //
 //   HdrScenePass scenePass;  // builds its program: the context is current
-//   HdrSceneTargets hdr = scenePass.declare(graph, scene, meshes, frame.seconds);
-#include "effects/scene/scene_meshes.hpp"
+//   HdrSceneTargets hdr = scenePass.declare(graph, frame.world);
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 
@@ -32,10 +32,10 @@ struct HdrSceneTargets {
 
 class HdrScenePass {
 public:
-    // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
-    // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
-    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, Bloom chapter §1.1).
-    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+    // Declares the "scene" pass: `world` drawn at its time. `colorFormat` is scene.color's format: RGBA16F
+    // unless a lesson shows what another one costs (RGBA8 clips every value to [0, 1]: a lamp and the sun
+    // both store 1, Bloom chapter §1.1).
+    HdrSceneTargets declare(FrameGraph& graph, const World& world,
                             TextureFormat colorFormat = TextureFormat::RGBA16F) const;
 
 private:

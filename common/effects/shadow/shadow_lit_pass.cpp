@@ -12,47 +12,43 @@ namespace {
 constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/shadow/shadowed_scene.frag
 
 // Everything once, then the skinned objects at each placement.
-void drawWithPlacements(GLuint program, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                        const std::vector<glm::mat4>& placements) {
+void drawWithPlacements(GLuint program, const World& world, const std::vector<glm::mat4>& placements) {
     MeshDrawOptions o;
     if (placements.empty()) {
-        (void)meshes.draw(program, scene, seconds, o);
+        (void)world.draw(program, o);
         return;
     }
     o.skinFilter = SkinFilter::withoutSkin;
-    (void)meshes.draw(program, scene, seconds, o);
+    (void)world.draw(program, o);
     o.skinFilter = SkinFilter::skinnedOnly;
     for (const glm::mat4& placement : placements) {
         o.placement = placement;
-        (void)meshes.draw(program, scene, seconds, o);
+        (void)world.draw(program, o);
     }
 }
 
 // The lit scene seen by `camera`, receiving the shadow map (`map` 0: none), skinned objects at each
 // placement: the body of both the scene pass and the light's view.
-void drawShadowed(GLuint program, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                  const CameraMatrices& camera, GLuint map, const ShadowLookup& lookup,
-                  const std::vector<glm::mat4>& placements) {
-    SceneMeshes::setFrameUniforms(program, scene, camera);
+void drawShadowed(GLuint program, const World& world, const CameraMatrices& camera, GLuint map,
+                  const ShadowLookup& lookup, const std::vector<glm::mat4>& placements) {
+    SceneMeshes::setFrameUniforms(program, world.scene(), camera);
     glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
     ShadowMap::bindForLookup(program, map, lookup);
-    drawWithPlacements(program, scene, meshes, seconds, placements);
+    drawWithPlacements(program, world, placements);
 }
 
 }  // namespace
 
-HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                       double seconds, const DeclaredShadowMap& shadow,
+HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
                                        const std::vector<glm::mat4>& skinnedPlacements) const {
     const gl::ReloadableProgram* program = &program_;
     ShadowLookup lookup = shadow.lookup;
     bool hasMap = shadow.pass != nullptr;
     TextureHandle map = shadow.map;
-    Pass& pass = graph.addPass("scene", [=, &scene, &meshes](PassContext& ctx) {
+    Pass& pass = graph.addPass("scene", [=](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
-                     skinnedPlacements);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
+        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     HdrSceneTargets targets;
@@ -60,12 +56,11 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    runsWith(pass.setState(hdrSceneState(scene)), program_);
+    runsWith(pass.setState(hdrSceneState(world.scene())), program_);
     return targets;
 }
 
-TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& scene,
-                                              const SceneMeshes& meshes, double seconds,
+TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const World& world,
                                               const DeclaredShadowMap& shadow,
                                               const std::vector<glm::mat4>& skinnedPlacements,
                                               int size) const {
@@ -74,14 +69,13 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
     ShadowLookup lookup = shadow.lookup;
     bool hasMap = shadow.pass != nullptr;
     TextureHandle map = shadow.map;
-    Pass& pass = graph.addPass("shadow light view", [=, &scene, &meshes](PassContext& ctx) {
+    Pass& pass = graph.addPass("shadow light view", [=](PassContext& ctx) {
         CameraMatrices camera;
         camera.view = lookup.light.view;
         camera.projection = lookup.light.projection;
         camera.viewProjection = lookup.light.viewProjection;
         camera.position = lookup.light.centre + lookup.light.directionToLight * lookup.light.farDistance;
-        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
-                     skinnedPlacements);
+        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     TextureHandle color =
@@ -89,7 +83,7 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
                     TextureUsage::ColorAttachment);
     pass.create("shadow.light_view_depth", {TextureSize::absolute(size, size), TextureFormat::Depth32F, 1},
                 TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
     pass.setState(state);
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");

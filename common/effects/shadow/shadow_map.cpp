@@ -106,24 +106,24 @@ const Light* shadowCastingLight(const Scene& scene) {
     return nullptr;
 }
 
-ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double seconds,
-                         const std::vector<glm::mat4>& skinnedPlacements) {
+ShadowBounds sceneBounds(const World& world, const std::vector<glm::mat4>& skinnedPlacements) {
     ShadowBounds out;
+    const Scene& scene = world.scene();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         Bounds local;
         if (object.primitive) {
             local = primitiveBounds(*object.primitive);
-        } else if (const GpuModel* gpu = meshes.model(i)) {
+        } else if (const GpuModel* gpu = world.meshes().model(i)) {
             local = modelBounds(*gpu);
         }
-        glm::mat4 model = SceneMeshes::modelAt(object, seconds);
-        Bounds world = local.transformed(model);
-        if (meshes.isSkinned(i))
+        glm::mat4 model = SceneMeshes::modelAt(object, world.seconds());
+        Bounds placed = local.transformed(model);
+        if (world.meshes().isSkinned(i))
             for (const glm::mat4& placement : skinnedPlacements)
-                world.add(local.transformed(placement * model));
-        out.everything.add(world);
-        if (object.castsShadows) out.casters.add(world);
+                placed.add(local.transformed(placement * model));
+        out.everything.add(placed);
+        if (object.castsShadows) out.casters.add(placed);
     }
     return out;
 }
@@ -136,24 +136,22 @@ const gl::Program& ShadowMap::skinnedProgram(SkinningProduct product) const {
     return skinnedReloadable(product).program();
 }
 
-DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                     double seconds, const ShadowSettings& settings,
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
                                      const ShadowPassOptions& options) const {
-    const Light* light = shadowCastingLight(scene);
+    const Light* light = shadowCastingLight(world.scene());
     glm::vec3 direction = light ? light->direction : glm::vec3(0.0f, -1.0f, 0.0f);
     ShadowSettings s = checked(settings);
-    ShadowBounds bounds = sceneBounds(scene, meshes, seconds, options.skinnedPlacements);
+    ShadowBounds bounds = sceneBounds(world, options.skinnedPlacements);
     LightView view = fitLightFrustum(bounds.casters, bounds.everything, direction, s.extent, s.mapSize);
-    return declare(graph, scene, meshes, seconds, s, view, options);
+    return declare(graph, world, s, view, options);
 }
 
-DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                     double seconds, const ShadowSettings& settings, const LightView& light,
-                                     const ShadowPassOptions& options) const {
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
+                                     const LightView& light, const ShadowPassOptions& options) const {
     DeclaredShadowMap out;
     out.settings = checked(settings);
     out.lookup = shadowLookup(out.settings, light, options.filterRadiusMetres);
-    const Light* caster = shadowCastingLight(scene);
+    const Light* caster = shadowCastingLight(world.scene());
     if (!caster) {
         out.lookup.enabled = false;
         return out;
@@ -162,51 +160,51 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
 
     const gl::ReloadableProgram* staticProgram = &static_;
     const gl::Program* skinnedProgram = &this->skinnedProgram(options.product);
-    Pass& pass = graph.addPass(options.passName, [staticProgram, skinnedProgram, &scene, &meshes, seconds,
-                                                  light, options](PassContext&) {
-        ShadowPassStats stats;
-        const float* vp = glm::value_ptr(light.viewProjection);
-        glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
-        glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
-        // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
-        // uniform nobody set (set explicitly here because the program outlives the toggle).
-        glProgramUniform1f(staticProgram->name(), kAlphaCutoffLocation, kAlphaCutoff);
-        glProgramUniform1f(skinnedProgram->name(), kAlphaCutoffLocation,
-                           options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
-        if (options.drawStatic) {
-            MeshDrawOptions o;
-            o.shadowCastersOnly = true;
-            o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
-            o.bindTextures = true;  // the base colour alpha, for the cutoff
-            o.skinFilter = SkinFilter::withoutSkin;
-            stats.staticDraws = meshes.draw(staticProgram->name(), scene, seconds, o);
-        }
-        if (options.drawSkinned) {
-            // One switch, then every skinned object (Shader effects chapter, §2).
-            if (options.drawStatic) ++stats.programSwitches;
-            MeshDrawOptions o;
-            o.shadowCastersOnly = true;
-            o.bindTextures = true;
-            o.skinned = SkinnedDraw::source;
-            o.skinFilter = SkinFilter::skinnedOnly;
-            // The fix asks the program (its active uniforms were listed once, at link time).
-            o.setMaterial =
-                options.materialUpload == MaterialUpload::always || skinnedProgram->hasUniform("baseColor");
-            std::optional<gl::ExpectedErrorScope> expected;
-            if (options.materialUpload == MaterialUpload::always)
-                expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
-            std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
-            std::vector<glm::mat4> placements = options.skinnedPlacements;
-            if (placements.empty()) placements.emplace_back(1.0f);
-            for (const glm::mat4& placement : placements) {
-                o.placement = placement;
-                stats.skinnedDraws += meshes.draw(skinnedProgram->name(), scene, seconds, o);
+    Pass& pass =
+        graph.addPass(options.passName, [staticProgram, skinnedProgram, world, light, options](PassContext&) {
+            ShadowPassStats stats;
+            const float* vp = glm::value_ptr(light.viewProjection);
+            glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
+            glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
+            // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
+            // uniform nobody set (set explicitly here because the program outlives the toggle).
+            glProgramUniform1f(staticProgram->name(), kAlphaCutoffLocation, kAlphaCutoff);
+            glProgramUniform1f(skinnedProgram->name(), kAlphaCutoffLocation,
+                               options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
+            if (options.drawStatic) {
+                MeshDrawOptions o;
+                o.shadowCastersOnly = true;
+                o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
+                o.bindTextures = true;  // the base colour alpha, for the cutoff
+                o.skinFilter = SkinFilter::withoutSkin;
+                stats.staticDraws = world.draw(staticProgram->name(), o);
             }
-            stats.glErrors = gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
-            stats.skinnedVertices = skinnedVertexCount(meshes) * placements.size();
-        }
-        if (options.stats) *options.stats = stats;
-    });
+            if (options.drawSkinned) {
+                // One switch, then every skinned object (Shader effects chapter, §2).
+                if (options.drawStatic) ++stats.programSwitches;
+                MeshDrawOptions o;
+                o.shadowCastersOnly = true;
+                o.bindTextures = true;
+                o.skinned = SkinnedDraw::source;
+                o.skinFilter = SkinFilter::skinnedOnly;
+                // The fix asks the program (its active uniforms were listed once, at link time).
+                o.setMaterial = options.materialUpload == MaterialUpload::always ||
+                                skinnedProgram->hasUniform("baseColor");
+                std::optional<gl::ExpectedErrorScope> expected;
+                if (options.materialUpload == MaterialUpload::always)
+                    expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
+                std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
+                std::vector<glm::mat4> placements = options.skinnedPlacements;
+                if (placements.empty()) placements.emplace_back(1.0f);
+                for (const glm::mat4& placement : placements) {
+                    o.placement = placement;
+                    stats.skinnedDraws += world.draw(skinnedProgram->name(), o);
+                }
+                stats.glErrors = gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
+                stats.skinnedVertices = skinnedVertexCount(world.meshes()) * placements.size();
+            }
+            if (options.stats) *options.stats = stats;
+        });
     std::string texName = options.textureName;
     out.map = pass.create(
         texName,
