@@ -29,7 +29,7 @@ double median(std::vector<double> values) {
 // the bench runs, with the context current.
 class CopyFrame final : public Lesson {
 public:
-    LessonInfo info() const override { return {0, "copy", "one full-screen copy", ""}; }
+    CopyFrame() { setInfo({0, "copy", "one full-screen copy", ""}); }
     std::vector<std::string> steps() const override { return {"copy"}; }
     bool usable() const { return copy_.reloadable().usable(); }
     void buildFrame(FrameGraph& graph, const FrameInfo&) override {

@@ -1,7 +1,8 @@
 #pragma once
 // What a lesson is: who it is, its steps (following the chapter), its parameters, and how it builds
 // the frame graph for the current step. Everything else (context, loop, overlay, capture, report)
-// is the runner's; a lesson's main() is one line: return fx::runLesson<MyLesson>(argc, argv);
+// is the runner's; a lesson's .cpp ends with FX_LESSON(MyLesson, "Title", "scenes/NN_name.json")
+// (app/runner.hpp), which is its main().
 //
 // The runner owns the lesson's GL lifetime: the lesson object is destroyed while the context is
 // still current, on every way out of the run, so GL objects held in members (RAII) need no
@@ -32,9 +33,9 @@
 namespace fx {
 
 struct LessonInfo {
-    int number = 0;
-    std::string slug;          // "program-objects": the executable is fxlab-01-program-objects
-    std::string title;         // "Program objects"
+    int number = 0;     // from the lesson's folder (lessons/01_program_objects)
+    std::string slug;   // "program-objects", from the folder: the executable is fxlab-01-program-objects
+    std::string title;  // "Program objects"
     std::string defaultScene;  // relative to res/: "scenes/01_program_objects.json"; "": an empty scene
 };
 
@@ -71,7 +72,9 @@ public:
     Lesson(const Lesson&) = delete;
     Lesson& operator=(const Lesson&) = delete;
 
-    virtual LessonInfo info() const = 0;
+    // Who the lesson is: the number and slug come from its folder, the title and scene from FX_LESSON.
+    const LessonInfo& info() const { return info_; }
+    void setInfo(LessonInfo info) { info_ = std::move(info); }  // the runner, before anything else
     // The steps' titles, in the chapter's order. The steps drive the code, so the list lives here;
     // each step's text is its "## Step N: <title>" section of lesson.md (app/lesson_text_files.hpp),
     // and a heading whose title differs from this one is an error.
@@ -130,6 +133,7 @@ private:
     // The lesson whose constructor runs on this thread (set by Lesson(), cleared once its members are
     // built or it goes): where a Gpu<T> member registers.
     static Lesson*& underConstruction();
+    LessonInfo info_;
     std::vector<std::function<void(const Scene&)>> gpuMembers_;
     bool gpuMembersBuilt_ = false;
 };

@@ -152,8 +152,9 @@ int captureEveryStep(const RunSession& s) {
 
 }  // namespace
 
-int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
+int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** argv) {
     Lesson& lesson = *owned;
+    lesson.setInfo(std::move(info));
     std::string exe = executableName(lesson.info());
     std::vector<std::string> args(argv + 1, argv + argc);
     auto parsed = parseRunOptions(args, int(lesson.steps().size()));

@@ -1,23 +1,86 @@
-#include "program_objects_lesson.hpp"
-
+// Lesson 01: program objects (the Shader effects chapter, §1 and its learning goals).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <optional>
 
 #include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/gpu_mesh.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "gl/debug_output.hpp"
+#include "gl/program.hpp"
 #include "raw_programs.hpp"
 
 namespace lesson01 {
 
 using namespace fx;
+
+class ProgramObjectsLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Parentheses; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { CopyPasted, CheckedPrograms, CachedLocations, Parentheses, LiveReload };
+    enum Broken { NotBroken, SyntaxError, UndeclaredName, LinkError };
+
+private:
+    // Parameters.
+    // Steps 1 and 2 start with the chapter's typo in the normals program: step 1 shows what it does
+    // unchecked, step 2 the check that catches it. "none" shows both steps working.
+    int broken_ = SyntaxError;
+    bool lookupEveryDraw_ = false;
+    int gridSize_ = 20;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int meshDetail_ = 128;  // sphere segments for step 4
+    int spheres_ = 16;      // instances for step 4
+
+    Gpu<GpuMesh> gridBox_{makeBox({0.18f, 0.18f, 0.18f}), "grid box"};
+    GpuMesh denseSphere_;
+    int denseSphereDetail_ = 0;
+
+    // Step 1: raw names, built without checks (again whenever broken_shader changes).
+    gl::ProgramName rawLit_, rawUnlit_, rawNormals_;
+    int rawBuiltWith_ = -1;
+    std::int64_t rawErrorsLastFrame_ = 0;  // GL errors step 1's draws raised (none checks them)
+    // Steps 2 to 5: checked, reloadable program objects.
+    gl::ReloadableProgram lit_, unlit_, normals_;
+    // Step 2: the normals program rebuilt from the broken file, checked; only while step 2 shows it.
+    gl::ReloadableProgram brokenAttempt_;
+    int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
+    gl::ReloadableProgram skinGrouped_, skinParenthesised_;
+    Gpu<FullscreenPass> present_{"common/copy.frag", "copy"};
+
+    // Step 3's measurements (CPU side, per frame).
+    int lookupsLastFrame_ = 0;
+    double lookupMsLastFrame_ = 0;
+    // Step 4's two skinning passes, timed side by side.
+    PassGroup groupedPass_, parenthesisedPass_;
+
+    void drawScene(GLuint program, const FrameInfo& frame) const;
+    // The chapter's picture of several programs: the box unlit, the sphere in the normals program,
+    // the rest lit.
+    void drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals, const FrameInfo& frame) const;
+    void updateRawPrograms();
+    void drawGrid(GLuint program, const FrameInfo& frame);
+    void buildSkinningComparison(FrameGraph& graph, const FrameInfo& frame);
+    void updateBrokenAttempt(int step);
+};
 
 namespace {
 
@@ -34,10 +97,6 @@ constexpr ProductCost kGrouped{80, 60};        // (T*J)*p: mat4*mat4, then mat4*
 constexpr ProductCost kParenthesised{32, 24};  // T*(J*p): two mat4*vec4
 
 }  // namespace
-
-LessonInfo ProgramObjectsLesson::info() const {
-    return {1, "program-objects", "Program objects", "scenes/01_program_objects.json"};
-}
 
 std::vector<std::string> ProgramObjectsLesson::steps() const {
     return {
@@ -354,3 +413,5 @@ void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson01
+
+FX_LESSON(lesson01::ProgramObjectsLesson, "Program objects", "scenes/01_program_objects.json")

@@ -1,16 +1,62 @@
-#include "skinned_shadows_lesson.hpp"
-
+// Lesson 02: skeletal-mesh shadows (the Shader effects chapter, §2; hard cases 17, 19, 20).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
 
 namespace lesson02 {
 
 using namespace fx;
+
+class SkinnedShadowsLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood, CutoutShadows };
+
+    // What the shadow pass does in a step (public so tests can build the same frame).
+    ShadowPassOptions shadowOptionsForStep(int step, bool benchmark) const;
+    // The crowd of step 3: where each copy of the character stands (the first is where it is).
+    static std::vector<glm::mat4> crowdPlacements(int count);
+
+private:
+    // Parameters; map size and taps start at the scene's values (res/scenes/02_skinned_shadows.json).
+    int mapSize_ = 2048;
+    int filterTaps_ = 16;
+    float filterRadius_ = 0.03f;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int crowd_ = 16;
+    int materialUpload_ = 0;  // 0: always (the chapter's flood), 1: ask the program
+    int cutoffUniform_ = 0;   // 0: first program only (the chapter's bug), 1: every program
+
+    ShadowSettings sceneShadow_;
+    Gpu<ShadowMap> shadows_;
+    Gpu<ShadowLitPass> lit_;
+    Gpu<OutputTransformPass> present_;
+
+    // Filled while the frame executes (the pass bodies write them), read by the panel and report.
+    mutable ShadowPassStats stats_;
+    ShadowPassStats otherStats_;
+    // The shadow pass, and in step 3 the one drawing with the other product: timed side by side.
+    PassGroup shadowPass_, otherProductPass_;
+};
 
 namespace {
 
@@ -19,10 +65,6 @@ constexpr float kCrowdSpacingX = 1.1f;
 constexpr float kCrowdSpacingZ = 1.3f;
 
 }  // namespace
-
-LessonInfo SkinnedShadowsLesson::info() const {
-    return {2, "skinned-shadows", "Skeletal-mesh shadows", "scenes/02_skinned_shadows.json"};
-}
 
 std::vector<std::string> SkinnedShadowsLesson::steps() const {
     return {
@@ -189,3 +231,5 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson02
+
+FX_LESSON(lesson02::SkinnedShadowsLesson, "Skeletal-mesh shadows", "scenes/02_skinned_shadows.json")

@@ -1,16 +1,62 @@
-#include "fbo_pipeline_lesson.hpp"
-
+// Lesson 03: the FBO pipeline and its draw order (the Shader effects chapter, §3.1 to §3.4; its
+// hard cases 15 state leaks, 16 viewport leaks and 21 aspect: docs/chapters.md).
 #include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
 #include "chapter_order.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/post/ui_queue_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
+#include "lit_scene_pass.hpp"
 
 namespace lesson03 {
 
 using namespace fx;
+
+class FboPipelineLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { StraightToWindow, Reordered, EachPassSetsItsState, FloatTarget, OneOutputTransform };
+
+private:
+    // Step 5: left of this fraction of the width, the scene shader still encodes for the display and
+    // the output transform encodes again (the washout); right of it, the fix.
+    float washoutSplit_ = 0.5f;
+    // Steps 4 and 5: the scene pass keeps the shadow map's viewport (the deliberate bug the graph
+    // otherwise rules out by setting every pass's viewport from its target).
+    bool viewportBug_ = false;
+
+    Gpu<ShadowMap> shadows_;
+    Gpu<LitScenePass> litScene_;
+    Gpu<FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};
+    Gpu<OutputTransformPass> outputTransform_;
+    Gpu<UiQueuePass> uiQueue_;
+
+    PassGroup shadowPass_;        // the shadow map pass: what state it inherited last frame
+    std::string noShadowReason_;  // why there is no shadow pass, if there is none
+
+    // The shadow pass's inherited state in `report`.
+    std::vector<std::string> shadowInherited(const FrameReport* report) const;
+
+    void declareStraightToWindow(FrameGraph& graph, const FrameInfo& frame, const DeclaredShadowMap& shadow);
+    void declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
+                                   const DeclaredShadowMap& shadow);
+};
 
 namespace {
 
@@ -28,10 +74,6 @@ PassState chapterDrawState(const Scene& scene) {
 }
 
 }  // namespace
-
-LessonInfo FboPipelineLesson::info() const {
-    return {3, "fbo-pipeline", "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json"};
-}
 
 std::vector<std::string> FboPipelineLesson::steps() const {
     return {
@@ -199,3 +241,5 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson03
+
+FX_LESSON(lesson03::FboPipelineLesson, "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json")

@@ -1,16 +1,71 @@
-#include "colour_matrix_lesson.hpp"
-
+// Lesson 04: colour matrix (the Shader effects chapter, §3.4, §3.5, hard cases 5 to 8, Exercise 02).
 #include <algorithm>
 #include <array>
 #include <cstdio>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/colour_matrix.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 
 namespace lesson04 {
 
 using namespace fx;
+
+class ColourMatrixLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void update(const FrameInfo& frame) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { Identity, Grayscale, Sepia, Affine };
+    // The presets of step 4 (the `preset` parameter), in the order of its choices.
+    enum Preset {
+        None,
+        GrayscalePreset,
+        SepiaPreset,
+        Saturation,
+        HueRotation,
+        ChannelSwap,
+        BrightnessContrast,
+        Invert,
+        Invert3x3,
+        Custom,
+    };
+
+private:
+    // Parameters.
+    int preset_ = Invert;
+    float amount_ = 1.0f;
+    float saturation_ = 1.8f;
+    float hueDegrees_ = 120.0f;
+    int channelOrder_ = 3;  // "gbr"
+    float brightness_ = 0.1f;
+    float contrast_ = 1.4f;
+    bool splitView_ = true;
+    float divider_ = 0.72f;  // right of the blue cylinder: every object but the capsule is processed
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<ColourMatrixPass> grading_;
+    Gpu<OutputTransformPass> present_;
+    ColourTransform custom_;  // the matrix edited in the overlay (preset "custom")
+    PassGroup gradingGroup_ = groupNeeding(SceneFeature::colorMatrix);
+    PointDrag dividerDrag_;
+
+    // The transform the step (and, in step 4, the preset) selects, before `amount`.
+    ColourTransform selected(int step) const;
+    ColourTransform presetTransform(int preset) const;
+};
 
 namespace {
 
@@ -39,10 +94,6 @@ std::string equations(const ColourTransform& t) {
 }
 
 }  // namespace
-
-LessonInfo ColourMatrixLesson::info() const {
-    return {4, "colour-matrix", "Colour matrix", "scenes/04_colour_matrix.json"};
-}
 
 std::vector<std::string> ColourMatrixLesson::steps() const {
     return {
@@ -208,3 +259,5 @@ void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson04
+
+FX_LESSON(lesson04::ColourMatrixLesson, "Colour matrix", "scenes/04_colour_matrix.json")

@@ -1,16 +1,55 @@
-#include "radial_blur_lesson.hpp"
-
+// Lesson 05: radial blur (the Shader effects chapter, §3.6, hard cases 1 to 4, Exercises 03, 04).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/post/radial_blur.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 
 namespace lesson05 {
 
 using namespace fx;
+
+class RadialBlurLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void update(const FrameInfo& frame) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return SampleCount; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { FirstVersion, ChapterStart, Guarded, SampleCount };
+
+    // What a step blurs with: the formula, the sample count, and whether the centre sits on a pixel.
+    RadialBlurParams paramsForStep(int step) const;
+
+private:
+    // Parameters (the chapter's defaults).
+    float centreX_ = 0.5f, centreY_ = 0.5f;
+    float length_ = 0.02f;
+    float start_ = 0.2f;
+    int samples_ = 8;
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<RadialBlur> blur_;
+    Gpu<OutputTransformPass> present_;
+    PassGroup blurGroup_ = groupNeeding(SceneFeature::radialBlur);
+    PointDrag centreDrag_;
+
+    // Whether both blur passes ran in the frame before `frame` (the scene asks for the blur).
+    bool blurRan(const FrameInfo& frame) const;
+};
 
 namespace {
 
@@ -35,10 +74,6 @@ bool centrePixel(const RadialBlurParams& params, Size2D size, glm::vec2& pixel) 
 }
 
 }  // namespace
-
-LessonInfo RadialBlurLesson::info() const {
-    return {5, "radial-blur", "Radial blur", "scenes/05_radial_blur.json"};
-}
 
 std::vector<std::string> RadialBlurLesson::steps() const {
     return {
@@ -158,3 +193,5 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson05
+
+FX_LESSON(lesson05::RadialBlurLesson, "Radial blur", "scenes/05_radial_blur.json")

@@ -1,16 +1,88 @@
-#include "bloom_lesson.hpp"
-
+// Lesson 06: bloom, with the whole chain live (Shader effects §3.7 and the Bloom chapter,
+// docs/chapters.md). Float targets first, then the two chapters' chains, then what the chapters leave
+// out (Karis average, soft knee, level-independent energy, tone curves).
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/bloom/bloom_chain.hpp"
+#include "effects/bloom/bloom_composite.hpp"
+#include "effects/bloom/bloom_flicker.hpp"
+#include "effects/bloom/bloom_reference.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "scene/scene_enums.hpp"
+#include "whole_frame.hpp"
 
 namespace lesson06 {
 
 using namespace fx;
+
+class BloomLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Beyond; }
+    std::string benchTexture() const override { return "bloom.result"; }
+    std::string benchReferenceName() const override { return "Gaussian"; }
+    void setBenchReference(bool on) override { benchReference_ = on; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond, WholeFrameStep };
+
+    // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
+    BloomChainSettings chainFor(int step) const;
+    // The composite's scale for a chain of `levels` levels in `step`.
+    float compositeScale(int step, int levels) const;
+    // What a large uniform area of grey value v comes out as in `step` (the chapters' invariant):
+    // v + gain * max(v - threshold, 0), with the gain for the levels that exist at `size`.
+    float uniformGain(int step, Size2D size) const;
+
+private:
+    void drawWholeFramePanel(const FrameInfo& frame) const;
+    void wholeFrameFacts(Facts& out, const FrameInfo& frame) const;
+    bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
+
+    // Parameters (the chapters' values).
+    float threshold_ = 1.0f;
+    float knee_ = 0.5f;
+    float intensity_ = 2.0f;   // the Shader effects chapter's intensity; step 5's glow strength
+    float bloomScale_ = 2.0f;  // the Bloom chapter's (Exercise 01: 1.0)
+    int levels_ = 6;
+    float downOffset_ = 0.75f;
+    float upOffset_ = 0.5f;
+    int format_ = 0;  // index into kChainFormats
+    bool karis_ = true;
+    int finish_ = 3;     // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
+    int toneCurve_ = 2;  // ToneCurve::filmic
+    float exposure_ = 1.0f;
+    bool reference_ = false;
+    bool benchReference_ = false;
+    int frameOrder_ = 0;   // step 6: index into effectOrders(), 0 the chapter's
+    int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<BloomChain> chain_;
+    Gpu<BloomComposite> composite_;
+    Gpu<BloomReference> reference_glow_;
+    Gpu<BloomFlicker> flicker_;  // the glow's frame-to-frame change (bloom.flicker)
+    int flickerStep_ = -1;       // the step and Karis setting the flicker measure last compared
+    bool flickerKaris_ = false;
+    Gpu<OutputTransformPass> present_;
+    Gpu<WholeFrame> wholeFrame_;  // step 6
+    // Every bloom pass (chain, composite, flicker view, reference): its time, and the scene's say.
+    PassGroup bloomGroup_ = groupNeeding(SceneFeature::bloom);
+};
 
 namespace {
 
@@ -60,10 +132,6 @@ std::string brightestEmitters(const Scene& scene, std::size_t count) {
 }
 
 }  // namespace
-
-LessonInfo BloomLesson::info() const {
-    return {6, "bloom", "Bloom", "scenes/06_bloom.json"};
-}
 
 std::vector<std::string> BloomLesson::steps() const {
     return {
@@ -360,3 +428,5 @@ void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson06
+
+FX_LESSON(lesson06::BloomLesson, "Bloom", "scenes/06_bloom.json")

@@ -1,13 +1,12 @@
 #include "fire_lesson.hpp"
 
-#include "fire_workloads.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include <imgui.h>
 
+#include "app/runner.hpp"
 #include "base/log.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/scene/camera_matrices.hpp"
@@ -29,10 +28,6 @@ std::vector<std::string> workloadNames() {
 }
 
 }  // namespace
-
-LessonInfo FireLesson::info() const {
-    return {7, "fire-emitter", "Fire emitter", "scenes/07_fire_emitter.json"};
-}
 
 std::vector<std::string> FireLesson::steps() const {
     return {
@@ -300,3 +295,5 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson07
+
+FX_LESSON(lesson07::FireLesson, "Fire emitter", "scenes/07_fire_emitter.json")

@@ -1,4 +1,7 @@
 #pragma once
+// Lesson 07's class, shared by its steps and frame (fire_lesson.cpp) and its simulation paths
+// (fire_simulation.cpp).
+//
 // Lesson 07: the fire emitter (Shader effects §3.8, hard cases 22 to 25; docs/chapters.md). The
 // chapter's fire (one object and one draw per particle, simulated on the CPU), what it does wrong
 // after a long frame, one instanced draw, the simulation on the GPU with an indirect draw, then what
@@ -21,9 +24,16 @@
 
 namespace lesson07 {
 
+inline constexpr const char* kPathNames[] = {"objects", "instanced", "gpu"};
+// The bench's workloads: every path at every count, in one sweep so their times share one run.
+inline constexpr int kWorkloadCounts[] = {100, 1000, 10000, 100000};
+inline constexpr int kInstancedCount = 2000;  // step 3's fire
+inline constexpr int kGpuCount = 100000;      // step 4's fire
+// The chapter's emitter moved aside by this much for step 2's two fires (m, along x).
+inline constexpr float kSideBySide = 0.9f;
+
 class FireLesson final : public fx::Lesson {
 public:
-    fx::LessonInfo info() const override;
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;

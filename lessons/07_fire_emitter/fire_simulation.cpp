@@ -6,7 +6,6 @@
 
 #include "effects/scene/camera_matrices.hpp"
 #include "fire_lesson.hpp"
-#include "fire_workloads.hpp"
 
 namespace lesson07 {
 

@@ -1,17 +1,81 @@
-#include "depth_of_field_lesson.hpp"
-
+// Lesson 09: depth of field from a physical lens (the Depth of field chapter, docs/chapters.md): a
+// framebuffer shown by a full-screen pass, the chapter's naive blur, focusing by moving the camera,
+// the thin-lens CoC as a heat map, the chapter's 13-tap physical blur, then a near/far gather with a
+// ring kernel at half resolution, and the accumulation reference it is measured against.
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/dof/depth_of_field.hpp"
+#include "effects/dof/dof_reference.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/thin_lens.hpp"
 
 namespace lesson09 {
 
 using namespace fx;
+
+class DepthOfFieldLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+    int benchStep() const override { return Beyond; }
+    std::string benchReferenceName() const override { return "accumulation"; }
+    void setBenchReference(bool on) override { benchReference_ = on; }
+
+    enum Step { Framebuffer, Naive, MovedCamera, PhysicalCamera, ChapterShader, Beyond, Reference };
+
+    // The camera the frame's step draws with (position and projection) at the frame's size.
+    Camera cameraFor(const FrameInfo& frame) const;
+    // The thin-lens model of the current parameters at the frame's size.
+    ThinLensModel lensModel(const FrameInfo& frame) const;
+    CocConvention convention() const {
+        return chapterCompatible_ ? CocConvention::chapter : CocConvention::corrected;
+    }
+
+private:
+    bool showsReference(int step) const { return step == Reference || (step == Beyond && benchReference_); }
+
+    // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
+    float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
+    float sensorWidthMm_ = 36.0f;
+    float fNumber_ = 1.4f;
+    float focusM_ = 15.264f;
+    bool chapterCompatible_ = false;
+    float maxCoc_ = 32.0f;
+    int taps_ = 22;
+    int method_ = 1;      // step 6: 0 the chapter's 13 taps, 1 the gather
+    int resolution_ = 1;  // 0 full, 1 half
+    int fields_ = 1;      // 0 one average, 1 near and far
+    float highlight_ =
+        0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
+    int referenceSamples_ = 64;
+    int toneCurve_ = 2;  // ToneCurve::filmic
+    float exposure_ = 1.0f;
+    bool benchReference_ = false;
+
+    Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<DepthOfField> dof_;
+    Gpu<DofReference> reference_;
+    Gpu<OutputTransformPass> present_;
+    PassGroup dofGroup_ = groupNeeding(SceneFeature::depthOfField);
+};
 
 namespace {
 
@@ -25,10 +89,6 @@ float aspectOf(Size2D size) {
 }
 
 }  // namespace
-
-LessonInfo DepthOfFieldLesson::info() const {
-    return {9, "depth-of-field", "Depth of field", "scenes/09_depth_of_field.json"};
-}
 
 std::vector<std::string> DepthOfFieldLesson::steps() const {
     return {
@@ -211,3 +271,5 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson09
+
+FX_LESSON(lesson09::DepthOfFieldLesson, "Depth of field", "scenes/09_depth_of_field.json")

@@ -1,14 +1,85 @@
-#include "deferred_shading_lesson.hpp"
-
+// Lesson 10: render to texture, multiple render targets and deferred shading with a thousand lights
+// (the Deferred rendering chapter, docs/chapters.md). The slides' framebuffer recipes first, then their
+// three-target example with its draw-buffer order bug and its sharpening variant, then what the chapter
+// only lists: a G-buffer of geometry, one lighting pass over many point lights, what the G-buffer's
+// layout costs, tiled light culling, and the chapter's homework, a planar reflection.
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/deferred/deferred_lighting.hpp"
+#include "effects/deferred/gbuffer_pass.hpp"
+#include "effects/deferred/lecture_mrt.hpp"
+#include "effects/deferred/planar_reflection.hpp"
+#include "effects/deferred/point_light_buffer.hpp"
+#include "effects/deferred/render_to_texture.hpp"
+#include "effects/deferred/tiled_culling.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
 
 namespace lesson10 {
 
 using namespace fx;
+
+class DeferredShadingLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Reflection; }
+    std::string benchTexture() const override { return "deferred.color"; }
+
+    enum Step { RenderToTexture, ThreeTargets, Sharpen, Deferred, Layout, ManyLights, Reflection };
+
+private:
+    // The G-buffer layout, light count and culling the step uses.
+    GBufferLayout layoutFor(int step) const;
+    bool culls(int step) const { return step >= ManyLights; }
+    glm::vec3 worldOffsetFor(int step) const;
+    void uploadLights(const FrameInfo& frame);
+    void declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
+                         std::optional<SplitView>& split);
+
+    // Parameters.
+    int rttDepth_ = 0;         // RttDepth
+    bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
+    int layout_ = 0;           // GBufferLayout
+    int originOffset_ = 0;     // index into kOriginOffsets
+    int lightCount_ = kMaxGridLights;
+    int culling_ = 1;         // 0 none, 1 tiled
+    int reflectionSize_ = 1;  // index into kReflectionFractions
+    float divider_ = 0.5f;
+
+    std::vector<Light> allLights_;
+    int pointLightsInScene_ = 0;
+    glm::vec3 uploadedOffset_{-1.0f};
+    int uploadedCount_ = -1;
+    Gpu<fx::RenderToTexture> rtt_;
+    Gpu<FullscreenPass> rttToScreen_{"common/copy.frag", "rtt to screen"};
+    Gpu<LectureMrt> mrt_;
+    MrtStats mrtStats_;
+    Gpu<GBufferPass> gbuffer_;
+    Gpu<ShadowMap> shadows_;
+    Gpu<PointLightBuffer> lights_;
+    Gpu<DeferredLighting> lighting_;
+    Gpu<TiledCulling> culling_pass_;
+    Gpu<PlanarReflection> reflection_;
+    Gpu<OutputTransformPass> present_;
+    std::string rttAttachments_[2];
+    PassGroup cullingGroup_;
+    PassGroup lightingGroup_;
+    PassGroup reflectionGroup_;
+};
 
 namespace {
 
@@ -18,10 +89,6 @@ const float kOriginOffsets[] = {0.0f, 1000.0f, 10000.0f};
 const int kReflectionFractions[] = {1, 2, 4};
 
 }  // namespace
-
-LessonInfo DeferredShadingLesson::info() const {
-    return {10, "deferred-shading", "Deferred shading", "scenes/10_deferred_shading.json"};
-}
 
 std::vector<std::string> DeferredShadingLesson::steps() const {
     return {
@@ -264,3 +331,5 @@ void DeferredShadingLesson::drawPanel(const FrameInfo& frame) {
 }
 
 }  // namespace lesson10
+
+FX_LESSON(lesson10::DeferredShadingLesson, "Deferred shading", "scenes/10_deferred_shading.json")
