@@ -22,6 +22,10 @@
 #include "gl/program.hpp"
 #include "raw_programs.hpp"
 
+namespace fx::glsl {
+#include "shaders/lessons/01_program_objects/skinning_bindings.glsl"
+}  // namespace fx::glsl
+
 namespace lesson01 {
 
 using namespace fx;
@@ -219,8 +223,8 @@ void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
     double lookupSeconds = 0;
     for (int z = 0; z < n; ++z) {
         for (int x = 0; x < n; ++x) {
-            GLint modelLocation = uniform_location::model;
-            GLint colorLocation = uniform_location::baseColor;
+            GLint modelLocation = glsl::kModelLocation;
+            GLint colorLocation = glsl::kBaseColorLocation;
             if (lookupEveryDraw_) {
                 // What the chapter warns against: a string comparison per uniform per draw.
                 auto start = std::chrono::steady_clock::now();
@@ -235,7 +239,7 @@ void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
             glm::vec3 color(0.3f + 0.7f * (fx_ + 0.5f), 0.4f, 0.3f + 0.7f * (fz + 0.5f));
             glProgramUniformMatrix4fv(program, modelLocation, 1, GL_FALSE, glm::value_ptr(model));
             glProgramUniform3fv(program, colorLocation, 1, glm::value_ptr(color));
-            glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
+            glProgramUniform3f(program, glsl::kEmissiveLocation, 0, 0, 0);
             gridBox_->draw();
         }
     }
@@ -260,15 +264,15 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
             joints[j] = glm::rotate(glm::mat4(1.0f), 0.3f * std::sin(phase + float(j)),
                                     glm::vec3(0, 1, 0.3f * float(j)));
         }
-        glProgramUniformMatrix4fv(program, 20, 4, GL_FALSE, glm::value_ptr(joints[0]));
+        glProgramUniformMatrix4fv(program, glsl::kJointsLocation, 4, GL_FALSE, glm::value_ptr(joints[0]));
         int row = std::max(1, int(std::lround(std::sqrt(double(spheres_)))));
         float scale = 1.0f / float(row);
         glm::mat4 model =
             glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 1.3f, 0)), glm::vec3(scale));
-        glProgramUniform1i(program, 24, row);
-        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-        glProgramUniform3f(program, uniform_location::baseColor, 0.8f, 0.55f, 0.3f);
-        glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
+        glProgramUniform1i(program, glsl::kSpheresPerRowLocation, row);
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform3f(program, glsl::kBaseColorLocation, 0.8f, 0.55f, 0.3f);
+        glProgramUniform3f(program, glsl::kEmissiveLocation, 0, 0, 0);
         glUseProgram(program);
         denseSphere_.draw(row * row);
     };

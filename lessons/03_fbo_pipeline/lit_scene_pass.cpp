@@ -6,14 +6,15 @@
 #include "image/view_transform.hpp"
 #include "render_gl/program_pass.hpp"
 
+namespace fx::glsl {
+#include "shaders/lessons/03_fbo_pipeline/scene_lit_bindings.glsl"
+}  // namespace fx::glsl
+
 namespace lesson03 {
 
 using namespace fx;
 
 namespace {
-
-constexpr GLint kHdrMaxLocation = 30;  // shaders/lessons/03_fbo_pipeline/scene_lit.frag
-constexpr GLint kEncodeLocation = 31;
 
 // What the 3D draw depends on (effects/scene/hdr_scene_pass.hpp), declared by the pass itself from step 3
 // on. Its clears are the target's: the window's and the float target's skies differ.
@@ -44,8 +45,8 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const World& world, const Declare
         CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
         GLuint name = program->name();
         SceneMeshes::setFrameUniforms(name, world.scene(), camera);
-        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
-        glProgramUniform1i(name, kEncodeLocation, encode ? 1 : 0);
+        glProgramUniform1f(name, glsl::kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1i(name, glsl::kEncodeForDisplayLocation, encode ? 1 : 0);
         ShadowMap::bindForLookup(name, hasMap ? ctx.native(map) : 0u, lookup);
         world.draw(name);
     });

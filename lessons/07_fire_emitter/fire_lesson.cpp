@@ -192,7 +192,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             const FullscreenPass* composite = &*composite_;
             Pass& over =
                 composite_->addPass(graph, "particles.composite", [composite, color](PassContext& ctx) {
-                    glProgramUniform1f(composite->program(), 0, kSceneHdrMax);
+                    glProgramUniform1f(composite->program(), glsl::kHdrMaxLocation, kSceneHdrMax);
                     composite->draw({GLuint(ctx.native(color))});
                 });
             PassState state = FullscreenPass::state();

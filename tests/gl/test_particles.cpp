@@ -3,6 +3,7 @@
 // and at the near plane, additive light past a half float's range, the soft fade's distance 0 and its
 // linearised depth, every source with every fade and blend, and a sprite that is not on disk. The CPU
 // simulation's clock is in test_particle_clock.cpp.
+#include "effects/scene/scene_bindings.hpp"
 #include "test_particles_harness.hpp"
 
 using namespace fx;
@@ -201,7 +202,7 @@ TEST_F(Particles, AdditiveLightPastAHalfFloatStaysFinite) {
     FullscreenPass composite("effects/particles/particles_composite.frag", "test particles composite");
     ASSERT_TRUE(programsBuilt());
     scene.bind(true);
-    glProgramUniform1f(composite.program(), 0, 4096.0f);
+    glProgramUniform1f(composite.program(), glsl::kHdrMaxLocation, 4096.0f);
     composite.draw({offscreen.color.name()});
     scene.unbind();
     Extremes out = extremes(scene.read());

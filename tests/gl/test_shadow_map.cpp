@@ -347,8 +347,9 @@ TEST_F(ShadowMapTest, JointWeightsSummingToZeroOrNotToOneStayFiniteAndRenormalis
         LightView light = fitLightFrustum(Bounds{{-1, -4, -1}, {1, 6, 1}}, {0, -1, 0}, 0.0f, 16);
         GLuint program = shadows.skinnedProgram(SkinningProduct::parenthesised).name();
         glm::mat4 identity(1.0f);
-        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(identity));
-        glProgramUniformMatrix4fv(program, 2, 1, GL_FALSE, glm::value_ptr(light.viewProjection));
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(identity));
+        glProgramUniformMatrix4fv(program, glsl::kViewProjectionLocation, 1, GL_FALSE,
+                                  glm::value_ptr(light.viewProjection));
         glUseProgram(program);
         mesh.drawSource();
         glFinish();

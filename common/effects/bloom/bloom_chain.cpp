@@ -60,10 +60,10 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
     d.down.push_back(level("down", d.levels[0]));
     Pass& bright = extract->addPass(graph, "bloom bright pass", [=](PassContext& ctx) {
         GLuint p = extract->program();
-        glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
-        glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
-        glProgramUniform1f(p, bloom_uniform::scale, settings.extractScale);
-        glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+        glProgramUniform1f(p, glsl::kBloomThresholdLocation, settings.threshold);
+        glProgramUniform1f(p, glsl::kBloomKneeLocation, settings.knee);
+        glProgramUniform1f(p, glsl::kBloomScaleLocation, settings.extractScale);
+        glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.downOffset);
         sampler->bind();
         extract->draw({ctx.native(input)});
         BloomSampler::unbind();
@@ -78,7 +78,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         d.down.push_back(level("down", d.levels[k]));
         Pass& pass = down->addPass(graph, cat("bloom down ", k), [=](PassContext& ctx) {
             GLuint p = down->program();
-            glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+            glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.downOffset);
             sampler->bind();
             down->draw({ctx.native(from)});
             BloomSampler::unbind();
@@ -98,8 +98,9 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         const FullscreenPass* up = &upProgram(up_, filters, wide);
         Pass& pass = up->addPass(graph, cat("bloom up ", k), [=](PassContext& ctx) {
             GLuint p = up->program();
-            glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
-            glProgramUniform1f(p, bloom_uniform::upScale, 1.0f);  // the chapters add every level at weight 1
+            glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.upOffset);
+            glProgramUniform1f(p, glsl::kBloomUpScaleLocation,
+                               1.0f);  // the chapters add every level at weight 1
             sampler->bind();
             up->draw({ctx.native(base), ctx.native(below)});
             BloomSampler::unbind();

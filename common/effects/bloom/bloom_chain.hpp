@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "effects/bloom/bloom_bindings.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/post/fullscreen_variants.hpp"
@@ -28,13 +29,6 @@
 #include "render/frame_graph.hpp"
 
 namespace fx {
-
-// Uniform locations shared by shaders/effects/bloom/*.frag. Which filter, the Karis average, the wide
-// top level and the tone curve are not uniforms: they are built into each program (BLOOM_FILTERS,
-// BLOOM_KARIS, BLOOM_WIDE, TONE_CURVE; effects/post/fullscreen_variants.hpp says why).
-namespace bloom_uniform {
-inline constexpr GLint threshold = 1, knee = 2, scale = 3, offset = 4, upScale = 6, exposure = 9;
-}
 
 // What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.
 std::string bloomShaderDefines();

@@ -28,8 +28,8 @@ Pass::Body compositeBody(const FullscreenPass* pass, const BloomSampler* sampler
                          std::function<void(GLuint)> more) {
     return [=](PassContext& ctx) {
         GLuint p = pass->program();
-        glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
-        glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
+        glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.upOffset);
+        glProgramUniform1f(p, glsl::kBloomUpScaleLocation, settings.scale);
         more(p);
         sampler->bind();
         pass->draw({ctx.native(scene), ctx.native(glow)});
@@ -58,7 +58,7 @@ Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, T
         {{"BLOOM_FILTERS", compositeFilters(settings)}, {"TONE_CURVE", static_cast<int>(curve)}});
     Pass& declared = program.addPass(graph, "bloom composite + output transform",
                                      compositeBody(&program, &sampler_, scene, glow, settings, [=](GLuint p) {
-                                         glProgramUniform1f(p, bloom_uniform::exposure, exposure);
+                                         glProgramUniform1f(p, glsl::kBloomExposureLocation, exposure);
                                      }));
     declared.read(scene).read(glow).writeColor(graph.output());
     return declared;

@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/bloom/bloom_bindings.hpp"
 #include "render/texture_desc.hpp"
 
 namespace fx {
-
-namespace {
-// Uniform location in shaders/effects/bloom/flicker.frag.
-constexpr GLint kHasPrevious = 0;
-}  // namespace
 
 DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D size, bool restart) {
     const int mips = fullMipChainLength(size.width, size.height);
@@ -48,7 +44,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
     const bool hasPrevious = valid_;
     const FullscreenPass* program = &pass_;
     Pass& pass = pass_.addPass(graph, "bloom flicker", [=, this](PassContext& ctx) {
-        glProgramUniform1i(program->program(), kHasPrevious, hasPrevious ? 1 : 0);
+        glProgramUniform1i(program->program(), glsl::kFlickerHasPreviousLocation, hasPrevious ? 1 : 0);
         program->draw({ctx.native(glow), ctx.native(prev)});
         // The glow's energy: the mean of this frame's copy, from its 1x1 mip (one texel read back).
         glGenerateTextureMipmap(written);

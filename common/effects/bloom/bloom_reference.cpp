@@ -4,12 +4,6 @@
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
-namespace {
-
-// shaders/effects/bloom/gaussian.frag
-constexpr GLint kDirectionLocation = 0, kSigmaLocation = 1, kScaleLocation = 2;
-
-}  // namespace
 
 BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandle input,
                                                  const BloomReferenceSettings& settings) const {
@@ -20,10 +14,10 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
     const FullscreenPass* extract = &extract_;
     Pass& bright = extract_.addPass(graph, "bloom reference bright", [=](PassContext& ctx) {
         GLuint p = extract->program();
-        glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
-        glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
-        glProgramUniform1f(p, bloom_uniform::scale, 1.0f);
-        glProgramUniform1f(p, bloom_uniform::offset, 0.0f);
+        glProgramUniform1f(p, glsl::kBloomThresholdLocation, settings.threshold);
+        glProgramUniform1f(p, glsl::kBloomKneeLocation, settings.knee);
+        glProgramUniform1f(p, glsl::kBloomScaleLocation, 1.0f);
+        glProgramUniform1f(p, glsl::kBloomOffsetLocation, 0.0f);
         extract->draw({ctx.native(input)});
     });
     d.bright = bright.create("bloom.reference.bright", full, TextureUsage::ColorAttachment);
@@ -33,9 +27,9 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
     const FullscreenPass* gaussian = &gaussian_;
     auto blur = [gaussian](GLuint source, int dx, int dy, double sigma, float scale) {
         GLuint p = gaussian->program();
-        glProgramUniform2i(p, kDirectionLocation, dx, dy);
-        glProgramUniform1f(p, kSigmaLocation, float(sigma));
-        glProgramUniform1f(p, kScaleLocation, scale);
+        glProgramUniform2i(p, glsl::kGaussianDirectionLocation, dx, dy);
+        glProgramUniform1f(p, glsl::kGaussianSigmaLocation, float(sigma));
+        glProgramUniform1f(p, glsl::kGaussianScaleLocation, scale);
         gaussian->draw({source});
     };
     d.glow = graph.declareTexture("bloom.reference", full);

@@ -7,17 +7,10 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include "effects/clouds/clouds_bindings.hpp"
+
 namespace fx {
 namespace {
-
-// cloud_accumulate.frag
-constexpr GLint kInverseProjection = 0;
-constexpr GLint kViewToWorldRotation = 1;
-constexpr GLint kPreviousFromCamera = 2;
-constexpr GLint kSlabMiddleAndEyeY = 3;
-constexpr GLint kCurrentWeight = 4;
-constexpr GLint kTargetSize = 5;
-constexpr GLint kDepthStride = 6;
 
 struct AccumulateUniforms {
     glm::mat4 inverseProjection{1.0f};
@@ -91,18 +84,19 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
         Pass& pass = accumulate_.addPass(
             graph, "clouds accumulate", [program, u, layer, before, depth, depthTexture](PassContext& ctx) {
                 GLuint prog = program->program();
-                glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE,
+                glProgramUniformMatrix4fv(prog, glsl::kAccumulateInverseProjectionLocation, 1, GL_FALSE,
                                           glm::value_ptr(u.inverseProjection));
-                glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE,
+                glProgramUniformMatrix3fv(prog, glsl::kAccumulateViewToWorldRotationLocation, 1, GL_FALSE,
                                           glm::value_ptr(u.rotation));
-                glProgramUniformMatrix4fv(prog, kPreviousFromCamera, 1, GL_FALSE,
+                glProgramUniformMatrix4fv(prog, glsl::kAccumulatePreviousFromCameraLocation, 1, GL_FALSE,
                                           glm::value_ptr(u.previousFromCamera));
-                glProgramUniform2fv(prog, kSlabMiddleAndEyeY, 1, glm::value_ptr(u.slabMiddleAndEyeY));
-                glProgramUniform1f(prog, kCurrentWeight, u.weight);
+                glProgramUniform2fv(prog, glsl::kAccumulateSlabMiddleAndEyeYLocation, 1,
+                                    glm::value_ptr(u.slabMiddleAndEyeY));
+                glProgramUniform1f(prog, glsl::kAccumulateCurrentWeightLocation, u.weight);
                 Size2D target = ctx.targetSize();
-                glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
-                                   float(std::max(target.height, 1)));
-                glProgramUniform1i(prog, kDepthStride, u.depthStride);
+                glProgramUniform2f(prog, glsl::kAccumulateTargetSizeLocation,
+                                   float(std::max(target.width, 1)), float(std::max(target.height, 1)));
+                glProgramUniform1i(prog, glsl::kAccumulateDepthStrideLocation, u.depthStride);
                 program->draw({ctx.native(layer), ctx.native(before), depth ? ctx.native(depthTexture) : 0});
             });
         result =

@@ -5,20 +5,10 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 
 namespace fx {
-namespace {
-
-// shaders/effects/deferred/deferred_lighting.frag and point_lights.glsl
-constexpr GLint kLightCountLocation = 20;
-constexpr GLint kInverseViewProjectionLocation = 21;
-constexpr GLint kHdrMaxLocation = 22;
-constexpr GLint kSkyLocation = 23;
-constexpr GLint kTilesXLocation = 24;
-constexpr GLint kWorldOffsetLocation = 25;
-
-}  // namespace
 
 const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
     const int n = static_cast<int>(layout);
@@ -46,18 +36,18 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
             CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
             SceneMeshes::setFrameUniforms(program, scene, camera);
             glm::mat4 inverse = glm::inverse(camera.viewProjection);
-            glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+            glProgramUniformMatrix4fv(program, glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                       glm::value_ptr(inverse));
-            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+            glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
             auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-            glProgramUniform3f(program, kSkyLocation, sky(scene.background.r), sky(scene.background.g),
+            glProgramUniform3f(program, glsl::kSkyLocation, sky(scene.background.r), sky(scene.background.g),
                                sky(scene.background.b));
-            glProgramUniform3fv(program, kWorldOffsetLocation, 1, glm::value_ptr(g.worldOffset));
-            glProgramUniform1i(program, kLightCountLocation, buffer->count());
+            glProgramUniform3fv(program, glsl::kWorldOffsetLocation, 1, glm::value_ptr(g.worldOffset));
+            glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
             buffer->bind();
             if (culled) {
-                glProgramUniform1i(program, kTilesXLocation, culled->tilesX);
-                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::tileLights, culled->listBuffer);
+                glProgramUniform1i(program, glsl::kTilesXLocation, culled->tilesX);
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kTileLightsBinding, culled->listBuffer);
             }
             GLuint shadowTexture = shadow.pass && shadow.lookup.enabled ? ctx.native(shadow.map) : 0;
             ShadowMap::bindForLookup(program, shadowTexture, shadow.lookup);
@@ -84,7 +74,7 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
     Pass& pass = error->addPass(graph, "position error", [error, &scene, g, reference](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
-        glProgramUniformMatrix4fv(error->program(), kInverseViewProjectionLocation, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(error->program(), glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverse));
         GLuint position = g.position ? ctx.native(*g.position) : 0;
         error->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth),
@@ -108,10 +98,10 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
         GLuint program = views->program();
-        glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(program, glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverse));
-        glProgramUniform3fv(program, 0, 1, glm::value_ptr(camera.position));
-        glProgramUniform1f(program, 1, viewRange);
+        glProgramUniform3fv(program, glsl::kViewsEyeLocation, 1, glm::value_ptr(camera.position));
+        glProgramUniform1f(program, glsl::kViewsRangeLocation, viewRange);
         GLuint position = g.position ? ctx.native(*g.position) : 0;
         views->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
     });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/deferred/output_check.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -11,19 +12,17 @@
 namespace fx {
 namespace {
 
-constexpr GLint kSkyLocation = 0;  // mrt_composite.frag
-
 void setSky(GLuint program, const Scene& scene) {
     auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-    glProgramUniform3f(program, kSkyLocation, sky(scene.background.r), sky(scene.background.g),
+    glProgramUniform3f(program, glsl::kMrtSkyLocation, sky(scene.background.r), sky(scene.background.g),
                        sky(scene.background.b));
 }
 
 }  // namespace
 
 void setLectureLight(GLuint program) {
-    glProgramUniform3f(program, uniform_location::lightColor, 1.0f, 1.0f, 1.0f);
-    glProgramUniform3f(program, uniform_location::ambient, 0.2f, 0.2f, 0.2f);
+    glProgramUniform3f(program, glsl::kLightColorLocation, 1.0f, 1.0f, 1.0f);
+    glProgramUniform3f(program, glsl::kAmbientLocation, 0.2f, 0.2f, 0.2f);
 }
 
 MrtTargets LectureMrt::declare(FrameGraph& graph, const World& world, MrtOrder order, MrtStats* stats) const {

@@ -5,6 +5,7 @@
 #include <glm/matrix.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "geometry/mesh_data.hpp"
@@ -13,12 +14,6 @@
 namespace fx {
 namespace {
 
-// shaders/effects/deferred/mirrored_scene.vert, reflection.frag and mirror_surface.frag
-constexpr GLint kClipPlaneLocation = 26;
-constexpr GLint kHdrMaxLocation = 22;
-constexpr GLint kLightCountLocation = 20;
-constexpr GLint kStrengthLocation = 27;
-constexpr GLint kOutputSizeLocation = 28;
 // Clip a millimetre above the plane: the mirror itself (and a floor in its plane) stay out of it.
 constexpr float kClipAbove = 0.001f;
 
@@ -75,9 +70,9 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
         GLuint program = reflect->name();
         SceneMeshes::setFrameUniforms(program, scene, camera);
         glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
-        glProgramUniform4fv(program, kClipPlaneLocation, 1, glm::value_ptr(clip));
-        glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
-        glProgramUniform1i(program, kLightCountLocation, buffer->count());
+        glProgramUniform4fv(program, glsl::kClipPlaneLocation, 1, glm::value_ptr(clip));
+        glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
         buffer->bind();
         glEnable(GL_CLIP_DISTANCE0);
         world.draw(program);
@@ -102,11 +97,11 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
         GLuint program = surface->name();
         SceneMeshes::setFrameUniforms(program, scene, camera);
         glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], world.seconds());
-        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-        glProgramUniform1f(program, kStrengthLocation, m.strength);
-        glProgramUniform2f(program, kOutputSizeLocation, float(size.width), float(size.height));
-        glBindTextureUnit(0, ctx.native(color));
-        glBindTextureUnit(1, ctx.native(g.depth));
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform1f(program, glsl::kMirrorStrengthLocation, m.strength);
+        glProgramUniform2f(program, glsl::kMirrorOutputSizeLocation, float(size.width), float(size.height));
+        glBindTextureUnit(glsl::kMirrorReflectionBinding, ctx.native(color));
+        glBindTextureUnit(glsl::kMirrorSceneDepthBinding, ctx.native(g.depth));
         glUseProgram(program);
         mesh->draw();
     });

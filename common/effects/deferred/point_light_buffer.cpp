@@ -27,7 +27,7 @@ void PointLightBuffer::upload(const std::vector<GpuPointLight>& lights) {
 }
 
 void PointLightBuffer::bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::pointLights, buffer_.name());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kPointLightsBinding, buffer_.name());
 }
 
 }  // namespace fx

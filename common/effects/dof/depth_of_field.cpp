@@ -4,25 +4,22 @@
 #include <utility>
 
 #include "base/log.hpp"
+#include "effects/dof/dof_bindings.hpp"
 
 namespace fx {
 namespace {
 
-// shaders/effects/dof/coc.glsl (only in the programs that include it and use it: setting a location
-// a program lacks is a GL error).
-constexpr GLint kDepthRangeLocation = 10;
-constexpr GLint kLensLocation = 11;
-
+// coc.glsl's uniforms, set only in the programs that have them (dof_bindings.glsl).
 void setLens(GLuint program, const DofLensUniforms& l) {
-    glProgramUniform2f(program, kDepthRangeLocation, l.nearM, l.farM);
-    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+    glProgramUniform2f(program, glsl::kDofDepthRangeLocation, l.nearM, l.farM);
+    glProgramUniform4f(program, glsl::kDofLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
                        l.radiusPerDiameter);
 }
 
 // The radius part of coc.glsl only: heat map, chapter, prefilter and composite use blurRadiusPixels
 // and the clamp, not the depth range.
 void setRadius(GLuint program, const DofLensUniforms& l) {
-    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+    glProgramUniform4f(program, glsl::kDofLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
                        l.radiusPerDiameter);
 }
 
@@ -81,7 +78,7 @@ DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, 
                                         const NaiveDofSettings& s) const {
     const FullscreenPass* program = &naive_;
     Pass& pass = naive_.addPass(graph, "dof naive", [program, color, depth, s](PassContext& ctx) {
-        glProgramUniform2f(program->program(), 0, s.sharpDepth, s.scale);
+        glProgramUniform2f(program->program(), glsl::kDofNaiveLocation, s.sharpDepth, s.scale);
         program->draw({ctx.native(color), ctx.native(depth)});
     });
     TextureHandle out = pass.create("dof.naive", {TextureSize::output(), TextureFormat::RGBA16F, 1},
@@ -107,7 +104,7 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     Pass& pre =
         prefilter_.addPass(graph, "dof prefilter", [prefilter, color, coc, lens, scale](PassContext& ctx) {
             setRadius(prefilter->program(), lens);
-            glProgramUniform1i(prefilter->program(), 0, scale);
+            glProgramUniform1i(prefilter->program(), glsl::kDofPrefilterScaleLocation, scale);
             prefilter->draw({ctx.native(color), ctx.native(coc)});
         });
     g.prefiltered =
@@ -117,7 +114,7 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     const FullscreenPass* tileMax = &tileMax_;
     TextureHandle prefiltered = g.prefiltered;
     Pass& tiles = tileMax_.addPass(graph, "dof tile max", [tileMax, prefiltered, tile](PassContext& ctx) {
-        glProgramUniform1i(tileMax->program(), 0, tile);
+        glProgramUniform1i(tileMax->program(), glsl::kDofTilePixelsLocation, tile);
         tileMax->draw({ctx.native(prefiltered)});
     });
     g.tiles = tiles.create("dof.tiles",
@@ -136,12 +133,12 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
         graph, "dof gather",
         [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
             GLuint p = gather->program();
-            glProgramUniform1i(p, 0, kernel.rings);
-            glProgramUniform1i(p, 1, kernel.tapsPerRing);
-            glProgramUniform1i(p, 3, tile);
-            glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
-            glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
-            glProgramUniform1i(p, 6, scale);
+            glProgramUniform1i(p, glsl::kDofRingsLocation, kernel.rings);
+            glProgramUniform1i(p, glsl::kDofTapsPerRingLocation, kernel.tapsPerRing);
+            glProgramUniform1i(p, glsl::kDofGatherTilePixelsLocation, tile);
+            glProgramUniform1f(p, glsl::kDofMaxRadiusLocation, std::max(maxRadius, 0.0f));
+            glProgramUniform1f(p, glsl::kDofHighlightLocation, std::max(s.highlight, 0.0f));
+            glProgramUniform1i(p, glsl::kDofGatherScaleLocation, scale);
             gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
         });
     g.gathered =

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "effects/dof/dof_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/texture.hpp"
@@ -12,10 +13,6 @@
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
-
-namespace {
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene/scene_hdr.frag
-}
 
 // The scene's colour and depth for one aperture sample, at the target's size.
 struct DofReference::Scratch {
@@ -95,12 +92,12 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const World& world,
             glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
             glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
             SceneMeshes::setFrameUniforms(program->name(), scene, camera);
-            glProgramUniform1f(program->name(), kHdrMaxLocation, kSceneHdrMax);
+            glProgramUniform1f(program->name(), glsl::kHdrMaxLocation, kSceneHdrMax);
             world.draw(program->name());
 
             glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
             applyGlState(accumulateState, size);
-            glProgramUniform1f(accumulate->program(), 0, 1.0f / float(n));
+            glProgramUniform1f(accumulate->program(), glsl::kDofAccumulateWeightLocation, 1.0f / float(n));
             accumulate->draw({scratch->color.name()});
         }
     });

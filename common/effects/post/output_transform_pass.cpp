@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/post/post_bindings.hpp"
+
 namespace fx {
-namespace {
-
-constexpr GLint kDividerLocation = 0;  // shaders/effects/output_transform.frag (split view only)
-constexpr GLint kExposureLocation = 2;
-
-}  // namespace
 
 const char* toString(ToneCurve curve) {
     switch (curve) {
@@ -51,11 +47,11 @@ Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
     std::optional<SplitView> view = split;
     Pass& declared =
         pass->addPass(graph, "output transform", [pass, linear, view, exposure](PassContext& ctx) {
-            glProgramUniform1f(pass->program(), kExposureLocation, exposure);
+            glProgramUniform1f(pass->program(), glsl::kOutputExposureLocation, exposure);
             GLuint after = ctx.native(linear);
             if (view) {
                 // The first pixel column that shows `linear`.
-                glProgramUniform1i(pass->program(), kDividerLocation,
+                glProgramUniform1i(pass->program(), glsl::kOutputDividerLocation,
                                    splitDividerPixel(view->divider, ctx.targetSize().width));
                 pass->draw({after, ctx.native(view->before)});
             } else {

@@ -5,17 +5,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "effects/post/post_bindings.hpp"
+
 namespace fx {
 namespace {
-
-// shaders/effects/radial_blur_offset.glsl (both programs) and radial_blur.frag (samples: the blur only;
-// setting a location a program does not have is a GL error).
-constexpr GLint kCentreLocation = 0;
-constexpr GLint kLengthLocation = 1;
-constexpr GLint kStartLocation = 2;
-constexpr GLint kFormulaLocation = 3;
-constexpr GLint kSamplesLocation = 4;
-constexpr GLint kSizeLocation = 5;
 
 const RadialBlurFormulaInfo kFormulas[] = {
     {"first version", "v = (centre - uv) * length", false},
@@ -27,11 +20,11 @@ const RadialBlurFormulaInfo kFormulas[] = {
 // `params` has been through clampedRadialBlurParams.
 void setUniforms(GLuint program, const RadialBlurParams& params, Size2D size) {
     glm::vec2 centre = radialBlurCentrePixels(params, size);
-    glProgramUniform2f(program, kCentreLocation, centre.x, centre.y);
-    glProgramUniform1f(program, kLengthLocation, params.length);
-    glProgramUniform1f(program, kStartLocation, params.start);
-    glProgramUniform1i(program, kFormulaLocation, static_cast<int>(params.formula));
-    glProgramUniform2f(program, kSizeLocation, float(std::max(size.width, 1)),
+    glProgramUniform2f(program, glsl::kBlurCentreLocation, centre.x, centre.y);
+    glProgramUniform1f(program, glsl::kBlurLengthLocation, params.length);
+    glProgramUniform1f(program, glsl::kBlurStartLocation, params.start);
+    glProgramUniform1i(program, glsl::kBlurFormulaLocation, static_cast<int>(params.formula));
+    glProgramUniform2f(program, glsl::kBlurTargetSizeLocation, float(std::max(size.width, 1)),
                        float(std::max(size.height, 1)));
 }
 
@@ -75,7 +68,7 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     const GLuint sampler = sampler_.name();
     Pass& blurPass = blur_.addPass(graph, "radial blur", [blur, input, params, sampler](PassContext& ctx) {
         setUniforms(blur->program(), params, ctx.targetSize());
-        glProgramUniform1i(blur->program(), kSamplesLocation, params.samples);
+        glProgramUniform1i(blur->program(), glsl::kBlurSamplesLocation, params.samples);
         glBindSampler(0, sampler);
         blur->draw({ctx.native(input)});
         glBindSampler(0, 0);  // unit 0 goes back to its textures' own parameters

@@ -2,11 +2,9 @@
 
 #include <algorithm>
 
-namespace fx {
+#include "effects/post/post_bindings.hpp"
 
-namespace {
-constexpr GLint kPanelLocation = 0;  // shaders/effects/post/ui_badge.frag
-}
+namespace fx {
 
 Viewport UiQueuePass::panelRect(Size2D size) {
     constexpr int kMargin = 8;
@@ -23,8 +21,8 @@ Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
     const FullscreenPass* pass = &pass_;
     Viewport rect = panelRect(size);
     Pass& ui = pass_.addPass(graph, "ui queue", [pass, rect](PassContext&) {
-        glProgramUniform4f(pass->program(), kPanelLocation, float(rect.x), float(rect.y), float(rect.width),
-                           float(rect.height));
+        glProgramUniform4f(pass->program(), glsl::kUiPanelLocation, float(rect.x), float(rect.y),
+                           float(rect.width), float(rect.height));
         pass->draw({});
     });
     ui.modify(graph.output(), TextureUsage::ColorAttachment);

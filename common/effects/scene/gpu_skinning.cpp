@@ -24,7 +24,7 @@ void GpuSkinning::pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints)
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.name());
     GLboolean discardWasOn = glIsEnabled(GL_RASTERIZER_DISCARD);
 
-    joints.bind(storage_binding::jointMatrices);
+    joints.bind(glsl::kJointMatricesBinding);
     glTransformFeedbackBufferBase(feedback_.name(), 0, mesh.posedBuffer());
     glUseProgram(program_.name());
     glBindVertexArray(mesh.sourceVertexArray());

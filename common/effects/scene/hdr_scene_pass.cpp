@@ -6,11 +6,6 @@
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
-namespace {
-
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene_hdr.frag
-
-}  // namespace
 
 PassState hdrSceneState(const Scene& scene) {
     // The sky is linear HDR like everything else in the scene file; it obeys the same limit.
@@ -35,7 +30,7 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const World& world,
         CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
         GLuint name = program->name();
         SceneMeshes::setFrameUniforms(name, world.scene(), camera);
-        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1f(name, glsl::kHdrMaxLocation, kSceneHdrMax);
         world.draw(name);
     });
     HdrSceneTargets targets;

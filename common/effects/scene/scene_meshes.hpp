@@ -27,21 +27,10 @@
 #include "effects/scene/gpu_model.hpp"
 #include "effects/scene/gpu_skinning.hpp"
 #include "effects/scene/material_textures.hpp"
+#include "effects/scene/scene_bindings.hpp"
 #include "scene/scene.hpp"
 
 namespace fx {
-
-// Uniform locations shared by the lit shaders (explicit, as in the chapter's location map).
-namespace uniform_location {
-inline constexpr GLint model = 0;
-inline constexpr GLint viewProjection = 2;
-inline constexpr GLint baseColor = 3;
-inline constexpr GLint emissive = 4;
-inline constexpr GLint lightDirection = 10;  // towards the light, normalised
-inline constexpr GLint lightColor = 11;      // HDR colour times intensity
-inline constexpr GLint ambient = 12;
-inline constexpr GLint cameraPosition = 13;
-}  // namespace uniform_location
 
 // Which objects a draw covers, by whether they have a skinned mesh. A shadow pass draws the two
 // groups with two programs (Shader effects chapter §2: static meshes first, then skinned, one switch).

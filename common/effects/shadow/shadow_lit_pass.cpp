@@ -9,8 +9,6 @@
 namespace fx {
 namespace {
 
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/shadow/shadowed_scene.frag
-
 // Everything once, then the skinned objects at each placement.
 void drawWithPlacements(GLuint program, const World& world, const std::vector<glm::mat4>& placements) {
     MeshDrawOptions o;
@@ -32,7 +30,7 @@ void drawWithPlacements(GLuint program, const World& world, const std::vector<gl
 void drawShadowed(GLuint program, const World& world, const CameraMatrices& camera, GLuint map,
                   const ShadowLookup& lookup, const std::vector<glm::mat4>& placements) {
     SceneMeshes::setFrameUniforms(program, world.scene(), camera);
-    glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+    glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
     ShadowMap::bindForLookup(program, map, lookup);
     drawWithPlacements(program, world, placements);
 }

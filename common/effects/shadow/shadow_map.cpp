@@ -6,22 +6,12 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "effects/shadow/shadow_bindings.hpp"
 #include "gl/debug_output.hpp"
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
-
-// shadow_depth_view.frag
-constexpr GLint kDepthRangeLocation = 0;
-constexpr GLint kTargetSizeLocation = 1;
-// shadow_lookup.glsl
-constexpr GLint kLookupMatrixLocation = 40;
-constexpr GLint kLookupParamsLocation = 41;
-constexpr GLint kLookupTapsLocation = 42;
-constexpr GLint kLookupToLightLocation = 43;
-// shadow_depth.frag
-constexpr GLint kAlphaCutoffLocation = 5;
 
 constexpr int kMaxMapSize = 8192;
 // A walking character's limbs leave its bind-pose box; this much room around skinned meshes keeps
@@ -164,12 +154,12 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, cons
         graph.addPass(options.passName, [staticProgram, skinnedProgram, world, light, options](PassContext&) {
             ShadowPassStats stats;
             const float* vp = glm::value_ptr(light.viewProjection);
-            glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
-            glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
+            glProgramUniformMatrix4fv(staticProgram->name(), glsl::kViewProjectionLocation, 1, GL_FALSE, vp);
+            glProgramUniformMatrix4fv(skinnedProgram->name(), glsl::kViewProjectionLocation, 1, GL_FALSE, vp);
             // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
             // uniform nobody set (set explicitly here because the program outlives the toggle).
-            glProgramUniform1f(staticProgram->name(), kAlphaCutoffLocation, kAlphaCutoff);
-            glProgramUniform1f(skinnedProgram->name(), kAlphaCutoffLocation,
+            glProgramUniform1f(staticProgram->name(), glsl::kAlphaCutoffLocation, kAlphaCutoff);
+            glProgramUniform1f(skinnedProgram->name(), glsl::kAlphaCutoffLocation,
                                options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
             if (options.drawStatic) {
                 MeshDrawOptions o;
@@ -237,8 +227,9 @@ TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShado
     glm::vec2 range(map.lookup.light.nearDistance, map.lookup.light.farDistance);
     Pass& pass = depthView_.addPass(graph, "shadow depth view", [view, input, range](PassContext& ctx) {
         Size2D target = ctx.targetSize();
-        glProgramUniform2f(view->program(), kDepthRangeLocation, range.x, range.y);
-        glProgramUniform2f(view->program(), kTargetSizeLocation, float(target.width), float(target.height));
+        glProgramUniform2f(view->program(), glsl::kDepthViewRangeLocation, range.x, range.y);
+        glProgramUniform2f(view->program(), glsl::kDepthViewTargetSizeLocation, float(target.width),
+                           float(target.height));
         view->draw({ctx.native(input)});
     });
     TextureHandle out =
@@ -251,13 +242,14 @@ TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShado
 
 void ShadowMap::bindForLookup(GLuint program, GLuint depthTexture, const ShadowLookup& lookup) {
     bool on = lookup.enabled && depthTexture != 0;
-    glProgramUniformMatrix4fv(program, kLookupMatrixLocation, 1, GL_FALSE,
+    glProgramUniformMatrix4fv(program, glsl::kShadowMatrixLocation, 1, GL_FALSE,
                               glm::value_ptr(lookup.light.viewProjection));
-    glProgramUniform4f(program, kLookupParamsLocation, lookup.normalOffsetMetres, lookup.depthBias,
+    glProgramUniform4f(program, glsl::kShadowParamsLocation, lookup.normalOffsetMetres, lookup.depthBias,
                        lookup.filterRadiusTexels, on ? 1.0f : 0.0f);
-    glProgramUniform1i(program, kLookupTapsLocation, lookup.filterTaps);
-    glProgramUniform3fv(program, kLookupToLightLocation, 1, glm::value_ptr(lookup.light.directionToLight));
-    glBindTextureUnit(texture_unit::shadowMap, on ? depthTexture : 0);
+    glProgramUniform1i(program, glsl::kShadowTapsLocation, lookup.filterTaps);
+    glProgramUniform3fv(program, glsl::kShadowToLightLocation, 1,
+                        glm::value_ptr(lookup.light.directionToLight));
+    glBindTextureUnit(glsl::kShadowMapBinding, on ? depthTexture : 0);
 }
 
 std::size_t ShadowMap::skinnedVertexCount(const SceneMeshes& meshes) {

@@ -30,10 +30,6 @@
 
 namespace fx {
 
-namespace texture_unit {
-inline constexpr GLuint shadowMap = 4;  // shaders/common/shadow_lookup.glsl
-}  // namespace texture_unit
-
 // The largest filter the lookup shader takes (kShadowMaxTaps there).
 inline constexpr int kShadowMaxFilterTaps = 64;
 
