@@ -56,7 +56,8 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         row("`objects`", std::to_string(limits::kMaxObjects)),
         row("`lights`", std::to_string(limits::kMaxLights)),
         row("`lightGrids`", std::to_string(limits::kMaxLightGrids) + " (and " +
-                                std::to_string(fx::kMaxGridLights) + " lights from all of them)"),
+                                std::to_string(fx::kMaxGridLights) +
+                                " point lights from them and `lights` together)"),
         row("`emitters`", std::to_string(limits::kMaxEmitters)),
         row("`clouds`", std::to_string(limits::kMaxClouds)),
         row("clips named by one object", std::to_string(limits::kMaxClipsPerObject)),
