@@ -14,6 +14,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson04 {
 
@@ -116,8 +117,7 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
                    "Step 4: the transform (custom: the matrix edited in the panel)")
         .fromScene("postEffects.colorMatrix.preset")
         .inSteps(affine);
-    params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)")
-        .fromScene("postEffects.colorMatrix.amount");
+    params.addSetting("amount", &amount_, sceneSetting("postEffects.colorMatrix.amount"));
     params
         .addFloat("saturation", &saturation_, -1.0f, 3.0f,
                   "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours")

@@ -14,6 +14,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson05 {
 
@@ -53,8 +54,6 @@ private:
 
 namespace {
 
-constexpr float kCentreMin = -5.0f, kCentreMax = 5.0f;
-
 std::string numberText(float v) {
     if (std::isnan(v)) return "NaN";
     char text[32];
@@ -85,28 +84,13 @@ std::vector<std::string> RadialBlurLesson::steps() const {
 }
 
 void RadialBlurLesson::declareParams(ParamSet& params) {
-    params
-        .addFloat("centre_x", &centreX_, kCentreMin, kCentreMax,
-                  "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)")
-        .fromScene("postEffects.radialBlur.center[0]");
-    params
-        .addFloat("centre_y", &centreY_, kCentreMin, kCentreMax,
-                  "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)")
-        .fromScene("postEffects.radialBlur.center[1]");
-    params
-        .addFloat("length", &length_, 0.0f, 0.2f,
-                  "The chapter's z: tap spacing per unit of distance to the centre (0: no blur; above 1/7 "
-                  "the far taps "
-                  "overshoot the centre)")
-        .fromScene("postEffects.radialBlur.length");
-    params
-        .addFloat("start", &start_, 0.0f, 2.0f,
-                  "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
-        .fromScene("postEffects.radialBlur.start");
-    Param& samples = params.addInt("samples", &samples_, 1, kRadialBlurMaxSamples,
-                                   "Step 4: taps per pixel, spread over the chapter's 8-tap streak");
+    params.addSetting("centre_x", &centreX_, sceneSetting("postEffects.radialBlur.center[0]"), "Drag it");
+    params.addSetting("centre_y", &centreY_, sceneSetting("postEffects.radialBlur.center[1]"), "Drag it");
+    params.addSetting("length", &length_, sceneSetting("postEffects.radialBlur.length"));
+    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"), "Steps 2 to 4");
+    Param& samples = params.addSetting("samples", &samples_, sceneSetting("postEffects.radialBlur.taps"),
+                                       "Step 4, spread over the chapter's 8-tap streak");
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
-    samples.fromScene("postEffects.radialBlur.taps");
 }
 
 RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
@@ -138,8 +122,10 @@ RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
 void RadialBlurLesson::update(const FrameInfo& frame) {
     // Dragging moves the centre.
     if (auto at = centreDrag_.update(frame)) {
-        centreX_ = std::clamp(at->x, kCentreMin, kCentreMax);
-        centreY_ = std::clamp(at->y, kCentreMin, kCentreMax);
+        const SettingSpec& x = sceneSetting("postEffects.radialBlur.center[0]");
+        const SettingSpec& y = sceneSetting("postEffects.radialBlur.center[1]");
+        centreX_ = std::clamp(at->x, float(x.min), float(x.max));
+        centreY_ = std::clamp(at->y, float(y.min), float(y.max));
     }
 }
 

@@ -20,6 +20,7 @@
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
 #include "whole_frame.hpp"
 
 namespace lesson06 {
@@ -145,26 +146,16 @@ std::vector<std::string> BloomLesson::steps() const {
 }
 
 void BloomLesson::declareParams(ParamSet& params) {
-    params
-        .addFloat("threshold", &threshold_, 0.0f, 16.0f,
-                  "Steps 3 to 5: brightness (the largest channel) above which light blooms")
-        .fromScene("postEffects.bloom.threshold");
-    params
-        .addFloat("knee", &knee_, 0.0f, 1.0f,
-                  "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)")
-        .fromScene("postEffects.bloom.knee");
-    params
-        .addFloat("intensity", &intensity_, 0.0f, 4.0f,
-                  "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this "
-                  "times its "
-                  "bright part, for any level count)")
-        .fromScene("postEffects.bloom.intensity");
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5");
+    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5");
+    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+                      "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
+                      "part, for any level count");
     params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                     "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
-    Param& levels = params.addInt("levels", &levels_, 1, kBloomMaxLevels,
-                                  "Steps 3 to 5: levels in the chain (fewer when the window is too small)");
+    Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
+                                      "Steps 3 to 5 (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
-    levels.fromScene("postEffects.bloom.levels");
     params.addFloat(
         "down_offset", &downOffset_, 0.0f, 2.0f,
         "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)");
@@ -183,14 +174,8 @@ void BloomLesson::declareParams(ParamSet& params) {
         "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
         "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
-    params
-        .addChoice(
-            "tone_map", &toneCurve_, enumNameList<ToneCurve>(),
-            "Step 5: the output's tone curve (clip: none, everything above 1 clips, as in the chapters)")
-        .fromScene("postEffects.toneMap.operator");
-    params
-        .addFloat("exposure", &exposure_, 0.01f, 16.0f, "Step 5: multiplies the light before the tone curve")
-        .fromScene("postEffects.toneMap.exposure");
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5");
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"), "Step 5");
     params.addBool(
         "reference", &reference_,
         "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "

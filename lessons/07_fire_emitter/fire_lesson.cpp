@@ -11,6 +11,7 @@
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson07 {
 
@@ -65,10 +66,9 @@ void FireLesson::declareParams(ParamSet& params) {
                                         "Step 5: the resolution of the off-screen particle target");
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
-    params.addFloat("threshold", &threshold_, 0.0f, 16.0f, "Bloom: brightness above which light blooms")
-        .fromScene("postEffects.bloom.threshold");
-    params.addFloat("intensity", &intensity_, 0.0f, 4.0f, "Bloom: the Shader effects chapter's intensity")
-        .fromScene("postEffects.bloom.intensity");
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
+    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+                      "Bloom, the Shader effects chapter's");
 }
 
 Status FireLesson::init(const Scene& scene) {

@@ -21,6 +21,7 @@
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_lit_pass.hpp"
 #include "effects/shadow/shadow_map.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson08 {
 
@@ -148,28 +149,14 @@ std::vector<std::string> CloudsLesson::steps() const {
 }
 
 void CloudsLesson::declareParams(ParamSet& params) {
-    params.addFloat("bottom", &bottom_, -100.0f, 1000.0f, "Height of the slab's lower face (m)")
-        .fromScene("clouds[0].bottom");
-    params
-        .addFloat("top", &top_, -100.0f, 1000.0f,
-                  "Height of the slab's upper face (m); at or below bottom: no cloud")
-        .fromScene("clouds[0].top");
-    params
-        .addFloat("scale0", &scale0_, 0.0001f, 1.0f,
-                  "Texture repeats per metre, layer 0 (the chapter: 1/311)")
-        .fromScene("clouds[0].noise[0].scale");
-    params
-        .addFloat("scale1", &scale1_, 0.0001f, 1.0f,
-                  "Texture repeats per metre, layer 1 (the chapter: 1/127)")
-        .fromScene("clouds[0].noise[1].scale");
-    params
-        .addFloat("threshold", &threshold_, 0.0f, 1.0f,
-                  "Steps 8 and 9: density at or below it is clear sky (1: no cloud, never a division by 0)")
-        .fromScene("clouds[0].threshold");
-    Param& steps = params.addFloat("steps", &steps_, 0.0f, float(kCloudMaxSteps),
-                                   "Steps 5 to 9: samples along each ray (rounded down; 0: no cloud)");
+    params.addSetting("bottom", &bottom_, sceneSetting("clouds[0].bottom"));
+    params.addSetting("top", &top_, sceneSetting("clouds[0].top"));
+    params.addSetting("scale0", &scale0_, sceneSetting("clouds[0].noise[0].scale"));
+    params.addSetting("scale1", &scale1_, sceneSetting("clouds[0].noise[1].scale"));
+    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"), "Steps 8 and 9");
+    // A float on purpose: the overlay can ask for 8.5 samples (rounded down; hard case 10).
+    Param& steps = params.addSetting("steps", &steps_, sceneSetting("clouds[0].steps"), "Steps 5 to 9");
     steps.knob = Knob{{2, 4, 8, 16, 32, 64, 128}, double(kCloudMaxSteps), "samples"};
-    steps.fromScene("clouds[0].steps");
     params.addBool("reject_behind", &rejectBehind_,
                    "Step 2 on: hits behind the eye are rejected (off: the mirrored layer in the sky)");
     params.addFloat("camera_lift", &cameraLift_, -20.0f, 20.0f,

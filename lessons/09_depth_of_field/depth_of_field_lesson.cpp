@@ -20,6 +20,7 @@
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
 #include "scene/thin_lens.hpp"
 
 namespace lesson09 {
@@ -103,32 +104,22 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 }
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
-    params
-        .addFloat("focal_length", &focalLengthMm_, 0.0f, 2000.0f,
-                  "Steps 4 to 7: focal length (mm; the chapter: the image distance)")
-        .fromScene("camera.lens.focalLength");
-    params.addFloat("sensor_width", &sensorWidthMm_, 1.0f, 100.0f, "Steps 4 to 7: sensor width (mm)")
-        .fromScene("camera.lens.sensorWidth");
-    params
-        .addFloat("f_number", &fNumber_, 0.0f, 32.0f,
-                  "Steps 4 to 7: f-number N; the aperture is F / N (below 0.5 counts as 0.5)")
-        .fromScene("camera.lens.fNumber");
-    params
-        .addFloat("focus_distance", &focusM_, -1.0f, 300.0f,
-                  "Steps 4 to 7: focus distance (m); at or inside the focal length counts as 1.001 focal "
-                  "lengths")
-        .fromScene("camera.lens.focusDistance");
+    params.addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
+                      "Steps 4 to 7 (the chapter: the image distance)");
+    params.addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"),
+                      "Steps 4 to 7");
+    params.addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber"),
+                      "Steps 4 to 7 (below 0.5 counts as 0.5)");
+    params.addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"),
+                      "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)");
     params.addBool(
         "chapter_compatible", &chapterCompatible_,
         "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
         "of view, the diameter used as a radius) instead of the corrected ones");
-    Param& maxCoc = params.addFloat("max_coc", &maxCoc_, 0.0f, 256.0f,
-                                    "Steps 4 to 6: largest CoC diameter (px); larger ones are clamped");
-    maxCoc.fromScene("postEffects.depthOfField.maxCoc");
+    Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
+                                      "Steps 4 to 6");
     maxCoc.knob = Knob{{8, 16, 32, 64}, 64, "px"};
-    Param& taps = params.addInt("taps", &taps_, 1, 128,
-                                "Step 6: taps of the ring kernel (16, 22, 43 or 71; others round down)");
-    taps.fromScene("postEffects.depthOfField.taps");
+    Param& taps = params.addSetting("taps", &taps_, sceneSetting("postEffects.depthOfField.taps"), "Step 6");
     taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
     Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
                                      "Step 6: the chapter's 13 Poisson taps, or the near/far ring gather");
@@ -145,12 +136,9 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
                     "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)");
     params.addInt("reference_samples", &referenceSamples_, 1, 1024,
                   "Step 7: pinhole renders averaged over the aperture");
-    params
-        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
-                   "The output's tone curve (not for the heat map, whose colours are for the display)")
-        .fromScene("postEffects.toneMap.operator");
-    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Multiplies the light before the tone curve")
-        .fromScene("postEffects.toneMap.exposure");
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
+                      "Not for the heat map, whose colours are for the display");
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
 }
 
 Status DepthOfFieldLesson::init(const Scene& scene) {

@@ -1,4 +1,5 @@
-// docs/scene-format.md shows the every-field fixture and the smallest scene; they must stay true.
+// docs/scene-format.md shows the every-field fixture and the smallest scene, the limits and the settings
+// that start lessons' parameters; they must stay true.
 #include <gtest/gtest.h>
 #include "base/paths.hpp"
 
@@ -10,6 +11,7 @@
 #include "base/file_io.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_settings.hpp"
 #include "scene_test_support.hpp"
 
 namespace {
@@ -72,6 +74,17 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
     EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(limits::kExcerptBytes) + " bytes"),
               std::string::npos);
+}
+
+// The settings table is the declarations' (scene/scene_settings.cpp): a range or a default changed in
+// one place and not the other fails here.
+TEST(SceneDocs, TheSettingsTableIsTheDeclarations) {
+    auto markdown = fx::readTextFile(fx::projectRoot() / "docs" / "scene-format.md");
+    ASSERT_TRUE(markdown.ok()) << markdown.error();
+    const std::string expected = fx::settingsTableMarkdown();
+    EXPECT_NE(markdown->find(expected), std::string::npos)
+        << "docs/scene-format.md's settings table is not scene/scene_settings.cpp's; it reads:\n"
+        << expected;
 }
 
 }  // namespace
