@@ -103,6 +103,20 @@ struct Param {
     std::string valueText(double value) const;
 };
 
+// A choice parameter's value as the enumeration the lesson means, its enumerators numbered from 0 in
+// the order of the choice's names. The set stores the index and keeps it in range, so reading it
+// (`*toneCurve_`) needs no clamp and no cast.
+template <class E>
+class Choice {
+public:
+    constexpr explicit Choice(E value) : index_(static_cast<int>(value)) {}
+    constexpr E operator*() const { return static_cast<E>(index_); }
+    int* index() { return &index_; }
+
+private:
+    int index_;
+};
+
 class ParamSet {
 public:
     Param& addFloat(std::string name, float* value, float min, float max, std::string description);
@@ -115,6 +129,15 @@ public:
     // Choice setting needs an int).
     Param& addSetting(std::string name, float* value, const SettingSpec& setting, std::string note = {});
     Param& addSetting(std::string name, int* value, const SettingSpec& setting, std::string note = {});
+    template <class E>
+    Param& addChoice(std::string name, Choice<E>* value, std::vector<std::string> choices,
+                     std::string description) {
+        return addChoice(std::move(name), value->index(), std::move(choices), std::move(description));
+    }
+    template <class E>
+    Param& addSetting(std::string name, Choice<E>* value, const SettingSpec& setting, std::string note = {}) {
+        return addSetting(std::move(name), value->index(), setting, std::move(note));
+    }
 
     // Checks the text against the type and range; on error names the parameter and what is allowed,
     // and leaves the value as it was.

@@ -64,8 +64,8 @@ private:
     float upOffset_ = 0.5f;
     int format_ = 0;  // index into kChainFormats
     bool karis_ = true;
-    int finish_ = 3;     // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
-    int toneCurve_ = 2;  // ToneCurve::filmic
+    int finish_ = 3;  // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
+    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
     float exposure_ = 1.0f;
     bool reference_ = false;
     bool benchReference_ = false;
@@ -245,7 +245,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
     HdrSceneTargets hdr = scenePass_->declare(graph, frame.world, sceneFormat);
     TextureHandle shown = hdr.color;
-    ToneCurve curve = step == Beyond ? static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2)) : ToneCurve::clip;
+    ToneCurve curve = step == Beyond ? *toneCurve_ : ToneCurve::clip;
     float exposure = step == Beyond ? exposure_ : 1.0f;
 
     // Steps 1 and 2 come before bloom: step 4's chain is declared switched off, so the pass table
@@ -354,7 +354,7 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("uniformGain", cat(uniformGain(step, frame.size)),
             cat("a uniform grey v comes out as v + gain * max(v - ", threshold_, ", 0); gain"));
     if (step == Beyond) {
-        out.add("toneCurve", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))), "tone curve");
+        out.add("toneCurve", toString(*toneCurve_), "tone curve");
         out.add("reference", showsReference(step), "showing the reference Gaussian");
         out.add("finish", kFinishNames[std::clamp(finish_, 0, 3)], "how the chain ends");
     }

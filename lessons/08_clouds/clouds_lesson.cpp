@@ -77,7 +77,7 @@ private:
     float steps_ = 8.0f;  // a float on purpose: the overlay can ask for 8.5 (hard case 10)
     bool rejectBehind_ = true;
     float cameraLift_ = 0.0f;
-    int dither_ = int(CloudDither::ign);
+    Choice<CloudDither> dither_{CloudDither::ign};
     bool beerLambert_ = true;
     bool distanceOcclusion_ = true;
     bool cloudShadows_ = true;  // step 9: the clouds' shadows on the ground
@@ -131,7 +131,7 @@ constexpr int kQualityPresetCount = int(sizeof kQualityPresets / sizeof kQuality
 
 CloudsLesson::QualityPreset CloudsLesson::quality() const {
     if (quality_ > 0 && quality_ < kQualityPresetCount) return kQualityPresets[quality_];
-    return {"knobs", steps_, CloudDither(std::clamp(dither_, 0, 3)), accumulate_ == 1, resolution_ == 1};
+    return {"knobs", steps_, *dither_, accumulate_ == 1, resolution_ == 1};
 }
 
 std::vector<std::string> CloudsLesson::steps() const {

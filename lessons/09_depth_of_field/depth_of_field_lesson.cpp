@@ -66,7 +66,7 @@ private:
     float highlight_ =
         0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
     int referenceSamples_ = 64;
-    int toneCurve_ = 2;  // ToneCurve::filmic
+    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
     float exposure_ = 1.0f;
     bool benchReference_ = false;
 
@@ -191,7 +191,7 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const DofLensUniforms lens = dofLensUniforms(model);
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
-    ToneCurve curve = static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2));
+    ToneCurve curve = *toneCurve_;
     float exposure = exposure_;
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field

@@ -53,8 +53,8 @@ private:
     // Parameters.
     int rttDepth_ = 0;         // RttDepth
     bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
-    int layout_ = 0;           // GBufferLayout
-    int originOffset_ = 0;     // index into kOriginOffsets
+    Choice<GBufferLayout> layout_{GBufferLayout::compact};
+    int originOffset_ = 0;  // index into kOriginOffsets
     int lightCount_ = kMaxGridLights;
     int culling_ = 1;         // 0 none, 1 tiled
     int reflectionSize_ = 1;  // index into kReflectionFractions
@@ -141,7 +141,7 @@ Status DeferredShadingLesson::init(const Scene& scene) {
 
 GBufferLayout DeferredShadingLesson::layoutFor(int step) const {
     if (step < Layout) return GBufferLayout::compact;  // step 4: the compact layout the chapter's idea needs
-    return static_cast<GBufferLayout>(std::clamp(layout_, 0, 3));
+    return *layout_;
 }
 
 glm::vec3 DeferredShadingLesson::worldOffsetFor(int step) const {
