@@ -1,8 +1,12 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "gl/debug_output.hpp"
 #include "gl/program.hpp"
+#include "image/image.hpp"
 #include "platform/context.hpp"
 
 // Base fixture for tests that need GL: the context is shared, GL errors fail the test, and so does a
@@ -23,3 +27,8 @@ private:
     std::int64_t errorsBefore_ = 0;
     bool brokenProgramsExpected_ = false;
 };
+
+// No NaN and no infinity in any channel of a read-back image (the hard cases' first check).
+inline bool allFinite(const fx::FloatImage& image) {
+    return std::all_of(image.texels.begin(), image.texels.end(), [](float v) { return std::isfinite(v); });
+}

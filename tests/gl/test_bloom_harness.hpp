@@ -7,6 +7,7 @@
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/bloom/bloom_reference.hpp"
+#include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"
 
 namespace fx::test {
@@ -53,13 +54,6 @@ inline FloatImage runReference(EffectRunner& runner, const BloomEffects& fx, con
         if (d.empty()) return in;
         return fx.composite.declare(g, in, d.glow, {std::nullopt, 0.0f, 1.0f}).output;
     });
-}
-
-inline bool allFinite(const FloatImage& image) {
-    for (float v : image.texels) {
-        if (!std::isfinite(v)) return false;
-    }
-    return true;
 }
 
 // A grey image of value v everywhere (alpha 1).

@@ -112,10 +112,6 @@ protected:
         return gl::readTexture(color);
     }
 
-    static bool allFinite(const FloatImage& image) {
-        return std::all_of(image.texels.begin(), image.texels.end(),
-                           [](float v) { return std::isfinite(v); });
-    }
     static float alphaAt(const FloatImage& image, int x, int y) { return image.texel(x, y, 3); }
 
     CloudPass pass;

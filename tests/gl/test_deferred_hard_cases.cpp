@@ -70,7 +70,7 @@ TEST_F(DeferredHardCases, LightingMatchesTheFormulaForEveryKindOfNormal) {
     }
     FloatImage out = light(scene, codes, pointLights);
     ASSERT_FALSE(out.empty());
-    ASSERT_TRUE(finite(out));
+    ASSERT_TRUE(allFinite(out));
     for (int x = 0; x < kW; ++x) {
         // The normal the lighting pass sees: the code as RG16F stored it, decoded.
         glm::vec2 code = codes[std::size_t(x)];
@@ -103,7 +103,7 @@ TEST_F(DeferredHardCases, RadiusZeroAddsNothingAndALightInsideTheSurfaceIsBounde
     for (int x = 0; x < kW; ++x)  // now one light reaching 1 m, on the surface: d = 0
         pointLights[std::size_t(x)] = {glm::vec4(worldAt(scene, x), 1.0f), glm::vec4(1000, 1000, 1000, 0)};
     FloatImage inside = light(scene, codes, pointLights);
-    ASSERT_TRUE(finite(inside));
+    ASSERT_TRUE(allFinite(inside));
     for (int x = 0; x < kW; ++x) {
         glm::vec3 c = texel(inside, x);
         // At the light: attenuation 1, lambert 1 (no direction: the normal's), specular at most 0.3.
@@ -122,7 +122,7 @@ TEST_F(DeferredHardCases, AThousandLightsOnOnePixelStayFiniteAndClamped) {
              glm::vec4(60000, 60000, 60000, 0)});
     FloatImage out = light(scene, codes, pointLights);
     ASSERT_FALSE(out.empty());
-    ASSERT_TRUE(finite(out));
+    ASSERT_TRUE(allFinite(out));
     for (int x = 0; x < kW; ++x) EXPECT_EQ(texel(out, x), glm::vec3(kSceneHdrMax)) << x;
 }
 
@@ -141,7 +141,7 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
                 gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, true, glm::vec3(offset, 0, 0)});
             return lighting.declarePositionError(graph, *scene, g);
         });
-        EXPECT_TRUE(finite(error));
+        EXPECT_TRUE(allFinite(error));
         double sum = 0;
         float worst = 0;
         int covered = 0;

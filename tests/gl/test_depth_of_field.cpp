@@ -71,12 +71,6 @@ protected:
     std::string lastErrors;
 };
 
-bool allFinite(const FloatImage& image) {
-    for (float v : image.texels)
-        if (!std::isfinite(v)) return false;
-    return true;
-}
-
 }  // namespace
 
 TEST_F(DepthOfFieldOnGl, CocMatchesTheCpuThinLensAtAHundredDistances) {

@@ -49,10 +49,6 @@ std::size_t characterIndex(const Scene& scene) {
     return scene.objects.size();
 }
 
-bool allFinite(const FloatImage& image) {
-    return std::all_of(image.texels.begin(), image.texels.end(), [](float v) { return std::isfinite(v); });
-}
-
 int texelsBelow(const FloatImage& depth, float limit) {
     return int(std::count_if(depth.texels.begin(), depth.texels.end(), [&](float v) { return v < limit; }));
 }
