@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -36,11 +37,12 @@ public:
         auto& source = graph.addPass("copy source", {});
         TextureHandle texture = source.create(
             "copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-        source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}});
+        source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}}).setTaps(0);  // a clear
         const FullscreenPass* copy = &copy_;
         copy_.addPass(graph, "copy", [copy, texture](PassContext& ctx) { copy->draw({ctx.native(texture)}); })
             .read(texture)
-            .writeColor(graph.output());
+            .writeColor(graph.output())
+            .setTaps(1);
     }
 
 private:
@@ -51,6 +53,8 @@ struct Measured {
     double medianMs = 0, copyMs = 0;
     double multiple = 0, minMultiple = 0, maxMultiple = 0;  // frame / the copy just before it
     std::vector<PassCost> passes;
+    PassTraffic traffic;  // the cost model's, of the last frame (the same every frame of a setting)
+    double tapsPerPixel = 0;
     FloatImage image;
     std::vector<CapturedTexture> effect;
 };
@@ -62,59 +66,83 @@ double frameMs(const RenderedFrame& rendered, const std::string& pass) {
     return p && p->timeMs ? *p->timeMs : 0.0;
 }
 
-// Renders `lesson` `frames` times after a warm-up, each frame after one full-screen copy: copy,
-// setting, copy, setting... A machine whose speed drifts (shared cores, clocks) moves both halves of
-// a pair together, so the per-pair ratio is steadier than either time; the medians keep the same
-// number of samples on both sides.
-Measured measure(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const FrameInfo& frame, int frames,
-                 const std::vector<std::string>& effectTextures) {
-    // GPU timer results arrive a few frames late: warm up long enough that they belong to this setting.
-    const bool gpu = renderer.timer().method() == TimingMethod::GpuTimestamps;
-    const int warmUp = gpu ? 6 : 2;
-    frames = std::max(frames, 1);
-    Measured m;
-    std::vector<double> times, copies, ratios;
-    std::vector<std::string> passOrder;
-    std::map<std::string, std::vector<double>> passTimes;
-    for (int i = 0; i < warmUp + frames; ++i) {
-        const bool last = i + 1 == warmUp + frames;
-        if (gpu) glFinish();
+// One setting measured a frame at a time: warm-up frames, then `frames` measured frames, each after
+// one full-screen copy: copy, setting, copy, setting... A machine whose speed drifts (shared cores,
+// clocks) moves both halves of a pair together, so the per-pair ratio is steadier than either time;
+// the medians keep the same number of samples on both sides. An app draws its own frames between
+// two of these (the picture holds still meanwhile, so the lesson sees the setting's frames in a row).
+class SettingMeasure {
+public:
+    SettingMeasure(bool gpu, int frames)
+        : gpu_(gpu), warmUp_(gpu ? 6 : 2), frames_(std::max(frames, 1)) {}  // GPU timer results arrive late
+
+    bool done() const { return next_ >= warmUp_ + frames_; }
+    int framesDone() const { return next_; }
+    int framesTotal() const { return warmUp_ + frames_; }
+
+    // Renders the next frame of the setting (and the copy before it).
+    void next(Lesson& lesson, Lesson* copy, FrameRenderer& renderer, const FrameInfo& frame,
+              const std::vector<std::string>& effectTextures) {
+        if (done()) return;
+        const int i = next_++;
+        const bool last = done();
+        if (gpu_) glFinish();
         const double copyMs = copy ? frameMs(renderer.render(*copy, frame, {}), "copy") : 0.0;
         FrameRequest request;
         request.readFinal = last;
         if (last) request.readNamed = effectTextures;
-        if (gpu) glFinish();
+        if (gpu_) glFinish();
         RenderedFrame rendered = renderer.render(lesson, frame, request);
-        if (i >= warmUp) {
+        if (i >= warmUp_) {
             const double ms = rendered.passMs;
-            times.push_back(ms);
-            copies.push_back(copyMs);
-            if (copyMs > 0) ratios.push_back(ms / copyMs);  // a copy too fast to time has no ratio
+            times_.push_back(ms);
+            copies_.push_back(copyMs);
+            if (copyMs > 0) ratios_.push_back(ms / copyMs);  // a copy too fast to time has no ratio
             for (const PassRecord& p : rendered.report.passes) {
                 if (!p.timeMs) continue;
-                auto [it, fresh] = passTimes.try_emplace(p.name);
-                if (fresh) passOrder.push_back(p.name);
+                auto [it, fresh] = passTimes_.try_emplace(p.name);
+                if (fresh) passOrder_.push_back(p.name);
                 it->second.push_back(*p.timeMs);
             }
         }
         if (last) {
-            m.image = toFloatImage(rendered.finalImage);
-            m.effect = std::move(rendered.textures);
+            m_.image = toFloatImage(rendered.finalImage);
+            m_.effect = std::move(rendered.textures);
+            m_.traffic = rendered.report.modelledTraffic();
+            m_.tapsPerPixel = rendered.report.tapsPerOutputPixel();
+            for (const PassRecord& p : rendered.report.passes) {
+                if (p.status == PassStatus::Runs) modelled_[p.name] = {p.traffic.total(), p.taps};
+            }
         }
     }
-    m.medianMs = median(times);
-    m.copyMs = median(copies);
-    if (!ratios.empty()) {
-        m.multiple = median(ratios);
-        m.minMultiple = *std::min_element(ratios.begin(), ratios.end());
-        m.maxMultiple = *std::max_element(ratios.begin(), ratios.end());
+
+    // Once done: the medians, the ratios' spread and the last frame's pictures.
+    Measured result() {
+        m_.medianMs = median(times_);
+        m_.copyMs = median(copies_);
+        if (!ratios_.empty()) {
+            m_.multiple = median(ratios_);
+            m_.minMultiple = *std::min_element(ratios_.begin(), ratios_.end());
+            m_.maxMultiple = *std::max_element(ratios_.begin(), ratios_.end());
+        }
+        for (const std::string& name : passOrder_) {
+            const double ms = median(passTimes_[name]);
+            const auto& [traffic, taps] = modelled_[name];
+            m_.passes.push_back({name, ms, m_.copyMs > 0 ? ms / m_.copyMs : 0.0, traffic, taps});
+        }
+        return std::move(m_);
     }
-    for (const std::string& name : passOrder) {
-        const double ms = median(passTimes[name]);
-        m.passes.push_back({name, ms, m.copyMs > 0 ? ms / m.copyMs : 0.0});
-    }
-    return m;
-}
+
+private:
+    bool gpu_;
+    int warmUp_, frames_;
+    int next_ = 0;
+    Measured m_;
+    std::vector<double> times_, copies_, ratios_;
+    std::vector<std::string> passOrder_;
+    std::map<std::string, std::vector<double>> passTimes_;
+    std::map<std::string, std::pair<std::uint64_t, std::optional<double>>> modelled_;  // traffic, taps
+};
 
 // A setting's time, its cost in copies, and its error against the reference: the final image, and
 // the lesson's effect texture when both frames captured it.
@@ -125,6 +153,8 @@ void fillMeasurement(SweepPoint& point, Measured& m, const Measured& reference) 
     point.minMultiple = m.minMultiple;
     point.maxMultiple = m.maxMultiple;
     point.passes = std::move(m.passes);
+    point.trafficBytes = m.traffic.total();
+    point.tapsPerPixel = m.tapsPerPixel;
     if (auto d = compare(m.image, reference.image); d) {
         point.rmse = d->rmse;
         point.psnr = d->psnr;
@@ -170,6 +200,7 @@ struct KnobSweep::Impl {
     std::size_t nextRow = 0;
     bool referenceDone = false;
     Measured reference;
+    std::optional<SettingMeasure> underWay;  // the reference image or row nextRow, a frame at a time
 
     Impl(Lesson& l, ParamSet& p, FrameRenderer& r, SweepOptions o)
         : lesson(l), params(p), renderer(r), options(std::move(o)) {}
@@ -184,7 +215,7 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
     : impl_(std::make_unique<Impl>(lesson, params, renderer, std::move(options))) {
     Impl& s = *impl_;
     result_.lesson = std::move(lessonName);
-    Size2D size = context.framebufferSize();
+    Size2D size = s.options.size.empty() ? context.framebufferSize() : s.options.size;
     result_.width = size.width;
     result_.height = size.height;
     result_.timingMethod = std::string(toString(renderer.timer().method()));
@@ -253,37 +284,48 @@ SweepProgress KnobSweep::progress() const {
         const Row& r = s.rows[s.nextRow];
         p.next = cat(r.knob->name, " = ", r.text);
     }
+    if (s.underWay) {
+        p.frame = s.underWay->framesDone();
+        p.frames = s.underWay->framesTotal();
+    }
     return p;
 }
 
 void KnobSweep::next() {
     Impl& s = *impl_;
     if (done()) return;
-    s.report(progress());
+    const bool gpu = s.renderer.timer().method() == TimingMethod::GpuTimestamps;
+    if (!s.underWay) {
+        s.report(progress());
+        s.underWay.emplace(gpu, result_.frames);
+    }
+    // The setting for this frame only: frames drawn between two slices show the user's settings. A
+    // separate reference algorithm is rendered with every knob at its reference value too.
     setKnobsToReference(s.params);
-    if (!s.referenceDone) {
-        // A separate reference algorithm is rendered with every knob at its reference value too.
-        s.lesson.setBenchReference(!s.lesson.benchReferenceName().empty());
-        s.reference = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
-                              s.effect);
-        s.lesson.setBenchReference(false);
+    const Row* row = s.referenceDone ? &s.rows[s.nextRow] : nullptr;
+    if (row && !row->referenceAlgorithm) row->knob->set(row->value);
+    s.lesson.setBenchReference(row ? row->referenceAlgorithm : !s.lesson.benchReferenceName().empty());
+    s.underWay->next(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, s.effect);
+    s.lesson.setBenchReference(false);
+    s.params.restore(s.saved);
+    if (!s.underWay->done()) return;
+
+    Measured m = s.underWay->result();
+    s.underWay.reset();
+    if (!row) {
+        s.reference = std::move(m);
         s.referenceDone = true;
     } else {
         // Every row, the reference row included, is rendered and timed afresh and compared with the
         // reference image taken first: the reference row's zero error is a measurement (the frame is
         // reproducible), not a copy of the reference's own numbers.
-        const Row& row = s.rows[s.nextRow++];
-        if (!row.referenceAlgorithm) row.knob->set(row.value);
-        s.lesson.setBenchReference(row.referenceAlgorithm);
-        Measured m = measure(s.lesson, s.copyUsable ? &s.copy : nullptr, s.renderer, s.frame, result_.frames,
-                             s.effect);
-        s.lesson.setBenchReference(false);
+        ++s.nextRow;
         SweepPoint point;
-        point.knob = row.knob->name;
-        point.value = row.text;
-        point.reference = row.isReference;
-        point.current = !row.referenceAlgorithm && s.current.contains(row.knob->name) &&
-                        s.current[row.knob->name] == point.value;
+        point.knob = row->knob->name;
+        point.value = row->text;
+        point.reference = row->isReference;
+        point.current = !row->referenceAlgorithm && s.current.contains(row->knob->name) &&
+                        s.current[row->knob->name] == point.value;
         fillMeasurement(point, m, s.reference);
         result_.points.push_back(std::move(point));
         // The unit of the whole run: the median of every row's copies.
@@ -291,7 +333,6 @@ void KnobSweep::next() {
         for (const SweepPoint& p : result_.points) copies.push_back(p.copyMs);
         result_.copyMs = median(copies);
     }
-    s.params.restore(s.saved);
     if (done()) s.report(progress());
 }
 
@@ -324,14 +365,15 @@ nlohmann::ordered_json jsonNumber(double v) {
 
 }  // namespace
 
-Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir) {
+Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir, BenchCost cost) {
     std::ostringstream csv;
     csv << "lesson,width,height,timing,knob,value,reference,current,median_ms,copy_ms,copy_multiple,"
            "min_multiple,max_multiple,frames,rmse,psnr_db,max_abs,"
-           "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs\n";
-    // Where the time goes: every pass of every row, in milliseconds and in copies.
+           "effect_texture,effect_rmse,effect_psnr_db,effect_max_abs,traffic_mb_1080p,taps_per_pixel\n";
+    // Where the time goes: every pass of every row, in milliseconds and in copies, beside the modelled
+    // traffic at 1920x1080 and the pass's taps.
     std::ostringstream passes;
-    passes << "knob,value,pass,median_ms,copies\n";
+    passes << "knob,value,pass,median_ms,copies,traffic_mb_1080p,taps\n";
     nlohmann::ordered_json json;
     json["lesson"] = r.lesson;
     json["size"] = {r.width, r.height};
@@ -351,7 +393,7 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         } else {
             csv << ",,,";
         }
-        csv << "\n";
+        csv << "," << number(double(p.trafficBytes) / 1e6) << "," << number(p.tapsPerPixel) << "\n";
         json["points"].push_back({{"knob", p.knob},
                                   {"value", p.value},
                                   {"reference", p.reference},
@@ -363,7 +405,9 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
                                   {"maxMultiple", p.maxMultiple},
                                   {"rmse", jsonNumber(p.rmse)},
                                   {"psnrDb", jsonNumber(p.psnr)},
-                                  {"maxAbs", jsonNumber(p.maxAbs)}});
+                                  {"maxAbs", jsonNumber(p.maxAbs)},
+                                  {"trafficBytes1080p", p.trafficBytes},
+                                  {"tapsPerPixel", p.tapsPerPixel}});
         if (p.hasEffectError) {
             json["points"].back()["effect"] = {{"texture", r.effectTexture},
                                                {"rmse", jsonNumber(p.effectRmse)},
@@ -372,9 +416,15 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
         }
         auto& passList = json["points"].back()["passes"] = nlohmann::ordered_json::array();
         for (const PassCost& c : p.passes) {
-            passList.push_back({{"pass", c.pass}, {"medianMs", c.medianMs}, {"copies", c.copies}});
+            passList.push_back(
+                {{"pass", c.pass},
+                 {"medianMs", c.medianMs},
+                 {"copies", c.copies},
+                 {"trafficBytes1080p", c.trafficBytes},
+                 {"taps", c.taps ? nlohmann::ordered_json(*c.taps) : nlohmann::ordered_json(nullptr)}});
             passes << p.knob << ",\"" << p.value << "\",\"" << c.pass << "\"," << number(c.medianMs) << ","
-                   << number(c.copies) << "\n";
+                   << number(c.copies) << "," << number(double(c.trafficBytes) / 1e6) << ","
+                   << (c.taps ? number(*c.taps) : std::string()) << "\n";
         }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
@@ -387,18 +437,30 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir)
     }
     for (const std::string& knob : knobs) {
         ScatterPlot plot;
-        // The title says what was measured and how; the lesson is the folder the plot sits in.
-        plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
-        bool byCopy = r.copyMs > 0;
-        plot.xLabel = byCopy ? cat("frame cost in full-screen copies, median and min-max of ", r.frames,
-                                   " (1 copy = ", shortNumber(r.copyMs), " ms)")
-                             : "frame time (ms)";
         plot.yLabel = "RMSE of the final image against the reference";
-        for (auto& p : r.points) {
-            if (p.knob != knob) continue;
-            PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current};
-            if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
-            plot.points.push_back(point);
+        if (cost == BenchCost::traffic) {
+            // The model needs no timing: the same numbers on every machine, at every --size.
+            plot.title = cat(knob, " at ", r.width, "x", r.height, " (modelled memory traffic)");
+            plot.xLabel = "memory traffic a frame at 1920x1080, modelled (MB; docs/bench.md)";
+            for (auto& p : r.points) {
+                if (p.knob == knob)
+                    plot.points.push_back(
+                        {p.value, double(p.trafficBytes) / 1e6, p.rmse, p.reference, p.current});
+            }
+        } else {
+            // The title says what was measured and how; the lesson is the folder the plot sits in.
+            plot.title = cat(knob, " at ", r.width, "x", r.height, " (", r.timingMethod, ")");
+            bool byCopy = r.copyMs > 0;
+            plot.xLabel = byCopy ? cat("frame cost in full-screen copies, median and min-max of ", r.frames,
+                                       " (1 copy = ", shortNumber(r.copyMs), " ms)")
+                                 : "frame time (ms)";
+            for (auto& p : r.points) {
+                if (p.knob != knob) continue;
+                PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference,
+                                p.current};
+                if (byCopy) point.xLow = p.minMultiple, point.xHigh = p.maxMultiple;
+                plot.points.push_back(point);
+            }
         }
         if (auto s = writePng(dir / cat("bench-", knob, ".png"), renderScatterPlot(plot)); !s) return s;
     }
@@ -411,15 +473,17 @@ std::string describeSweep(const SweepResult& r) {
         << ", one full-screen copy: " << number(r.copyMs) << " ms (median; each frame is divided by a copy"
         << " timed just before it, " << r.frames << " pairs per row)\n";
     out << std::left << std::setw(18) << "knob" << std::setw(18) << "value" << std::setw(12) << "ms"
-        << std::setw(10) << "x copy" << std::setw(16) << "min-max" << std::setw(12) << "rmse"
+        << std::setw(10) << "x copy" << std::setw(16) << "min-max" << std::setw(12) << "MB 1080p"
+        << std::setw(12) << "rmse"
         << "psnr dB\n";
     for (auto& p : r.points) {
         out << std::left << std::setw(18) << p.knob << std::setw(18) << (p.value + (p.reference ? "*" : ""))
             << std::setw(12) << shortNumber(p.medianMs) << std::setw(10) << shortNumber(p.copyMultiple)
             << std::setw(16) << cat(shortNumber(p.minMultiple), "-", shortNumber(p.maxMultiple))
-            << std::setw(12) << number(p.rmse) << number(p.psnr) << "\n";
+            << std::setw(12) << shortNumber(double(p.trafficBytes) / 1e6) << std::setw(12) << number(p.rmse)
+            << number(p.psnr) << "\n";
     }
-    out << "(* = reference)\n";
+    out << "(* = reference; MB 1080p: modelled memory traffic a frame at 1920x1080, docs/bench.md)\n";
     // Where the time goes, for the setting in use (the first row when none is).
     const SweepPoint* shown = nullptr;
     for (const SweepPoint& p : r.points)
@@ -427,11 +491,14 @@ std::string describeSweep(const SweepResult& r) {
     if (!shown && !r.points.empty()) shown = &r.points.front();
     if (shown && !shown->passes.empty()) {
         out << "\npasses of " << shown->knob << " = " << shown->value << " (every row's: passes.csv)\n";
-        out << std::left << std::setw(30) << "pass" << std::setw(12) << "ms"
-            << "copies\n";
+        out << std::left << std::setw(30) << "pass" << std::setw(12) << "ms" << std::setw(10) << "copies"
+            << std::setw(12) << "MB 1080p"
+            << "taps\n";
         for (const PassCost& c : shown->passes)
             out << std::left << std::setw(30) << c.pass << std::setw(12) << shortNumber(c.medianMs)
-                << shortNumber(c.copies) << "\n";
+                << std::setw(10) << shortNumber(c.copies) << std::setw(12)
+                << shortNumber(double(c.trafficBytes) / 1e6)
+                << (c.taps ? shortNumber(*c.taps) : std::string("-")) << "\n";
     }
     return out.str();
 }

@@ -24,11 +24,12 @@ struct SweepOptions {
     int frames = 5;     // measured frames per setting (after warm-up), each with a copy before it
     int maxValues = 0;  // 0: every value; otherwise the first N values of each knob
     std::function<void(const SweepProgress&)> progress;  // called before each row and at the end
+    Size2D size{};  // the frames' size; empty: the context's framebuffer (the bench's --size)
 };
 
-// A sweep measured a row at a time, so an interactive app can draw a frame (and a progress bar)
-// between rows and stop early. The parameters are put back after every row: frames drawn between
-// rows show the settings the user chose.
+// A sweep measured a slice at a time (one frame of a setting, with its copy), so an interactive app
+// draws its own frames (and a progress bar) between slices and can stop early. The parameters are put
+// back after every slice: the overlay drawn between slices shows the settings the user chose.
 class KnobSweep final : public SweepRun {
 public:
     KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, Context& context,
@@ -38,7 +39,7 @@ public:
     KnobSweep& operator=(const KnobSweep&) = delete;
 
     bool done() const override;
-    // Measures the next row (the first call measures the reference image).
+    // Renders the next frame of the setting under way (the first setting is the reference image).
     void next() override;
     SweepProgress progress() const override;
     const SweepResult& result() const override { return result_; }
@@ -55,7 +56,8 @@ SweepResult sweepKnobs(Lesson& lesson, ParamSet& params, FrameRenderer& renderer
                        const SweepOptions& options, const std::string& lessonName, int step);
 
 // out/bench/<lesson>/: bench.csv, bench.json and bench-<knob>.png (error against cost).
-Status writeBenchOutputs(const SweepResult& result, const std::filesystem::path& dir);
+Status writeBenchOutputs(const SweepResult& result, const std::filesystem::path& dir,
+                         BenchCost cost = BenchCost::time);
 
 // A plain-text table of the sweep for the terminal, then where the time goes: every pass of the
 // setting in use (or the first row) in copies.

@@ -54,7 +54,7 @@ int runBenchMode(RunSession& s, FrameRenderer& renderer, Context& context) {
     SweepResult result = sweepKnobs(lesson, s.params, renderer, context, options, s.exe, step);
     std::cout << describeSweep(result);
     int exitCode = 0;
-    if (auto written = writeBenchOutputs(result, dir); !written) {
+    if (auto written = writeBenchOutputs(result, dir, o.benchCost); !written) {
         log::error(written.error());
         exitCode = 1;
     } else {

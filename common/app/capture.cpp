@@ -45,8 +45,9 @@ std::filesystem::path nextScreenshotPath(const std::filesystem::path& folder, co
         char number[16];
         std::snprintf(number, sizeof number, "%03d", n);
         std::filesystem::path path = folder / cat(exe, "-step", step, "-", number, ".png");
-        // A folder that cannot be read: the write will say why.
-        if (!std::filesystem::exists(path, ec) || ec) return path;
+        // Taken by anything, a link included (dangling or not); a folder that cannot be read: the write
+        // will say why.
+        if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)) || ec) return path;
     }
 }
 

@@ -1,8 +1,10 @@
 #include "app/frame_loop.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 
 #include "app/bench.hpp"
 #include "app/capture.hpp"
@@ -27,6 +29,22 @@ std::string secondsText(double seconds) {
     return text;
 }
 
+// The clock's step as people write it: "1/60 s", "0.5 s".
+std::string stepText(double seconds) {
+    const double perSecond = 1.0 / seconds;
+    char text[32];
+    if (perSecond > 1.5 && std::abs(perSecond - std::round(perSecond)) < 1e-6)
+        std::snprintf(text, sizeof text, "1/%.0f s", perSecond);
+    else
+        std::snprintf(text, sizeof text, "%.3g s", seconds);
+    return text;
+}
+
+// How long a notice stays at the top of the lesson window.
+constexpr std::chrono::seconds kNoticeTime{5};
+// The lesson clock's pace against the wall clock is judged over about this long.
+constexpr double kClockRateWindowS = 2.0;
+
 }  // namespace
 
 FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context, FrameRenderer& renderer,
@@ -39,7 +57,11 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
       overlay_(overlay),
       programs_(programs),
       overlayVisible_(plan.headless ? session.options.overlayHeadless : session.options.overlay),
-      clock_(session.options.timeStep.value_or(1.0 / 60.0)) {
+      clock_(session.options.timeStep.value_or(1.0 / 60.0)),
+      // Headless the picture is never scaled by itself: a capture is the size asked (or the scale pinned).
+      pictureScale_(plan.headless ? session.options.pictureScale.value_or(1.0)
+                                  : session.options.pictureScale),
+      resources_(session.options.resourceLog) {
     RunFacts& facts = record_.facts;
     facts.lesson = s_.exe;
     facts.contextKind = context.kind();
@@ -63,51 +85,39 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
 }
 
 void FrameLoop::run() {
-    const double timeStep = s_.options.timeStep.value_or(1.0 / 60.0);
     const std::uint64_t frames = std::uint64_t(plan_.frames);
-    Clock::time_point lastWall = Clock::now();
-    lastReloadCheck_ = lastWall;
+    lastReloadCheck_ = Clock::now();
     gl::resetDebugCounters();
 
     for (std::uint64_t index = 0; frames == 0 || index < frames; ++index) {
+        resources_.atFrame(index, s_.step, context_.framebufferSize());
         context_.pollEvents();
         if (context_.shouldClose()) break;
         if (!plan_.headless && context_.hidden()) {
-            // Minimised or unmapped: nothing is seen, so nothing is drawn; sleep until the window
-            // system has news (a quarter second at most, so the shader watch still runs).
+            // Minimised or unmapped: nothing is seen, so nothing is drawn and the lesson clock stands
+            // still; sleep until the window system has news (a quarter second at most, so the shader
+            // watch still runs).
             context_.waitEvents(0.25);
-            lastWall = Clock::now();
-            record_.facts.frameCpuMs.push_back(0);
-            record_.facts.frameGpuMs.push_back(0);
+            record_.facts.addFrame(0, 0);
             continue;
         }
-        Clock::time_point frameStart = Clock::now();
-        double elapsed =
-            plan_.headless ? timeStep : std::chrono::duration<double>(frameStart - lastWall).count();
-        lastWall = frameStart;
+        const Clock::time_point frameStart = Clock::now();
         if (!takeKeys(frameStart, index)) break;
-        const double delta = clock_.advance(elapsed);
-
-        const Size2D window = context_.framebufferSize();
         const bool drawOverlay = overlay_ && overlayVisible_;
-        // The picture's place: beside the panels when they show, else the whole window.
-        LayoutRect place{0, 0, float(window.width), float(window.height)};
-        std::optional<PanelLayout> layout;
-        if (drawOverlay && picture_ && !window.empty()) {
-            layout = overlay_->layout(window.width, window.height);
-            place = layout->picture;
+        const Placement at = placeFrame(drawOverlay);
+        if (drawOverlay && overlay_->costPanel().measurePending() && !at.extent.empty()) {
+            measureSlice(at, index);
+            continue;
         }
-        const Size2D extent = window.empty() ? Size2D{} : Size2D{int(place.width), int(place.height)};
-        FrameInfo frame = frameInfo(index, delta, extent, place);
-        frame.seconds = clock_.seconds();
-        frame.world = renderer_.world(frame.seconds);
+        const double delta = clock_.advance();
+        FrameInfo frame = frameInfo(index, delta, at);
+        if (refreshPrevious_ && !at.extent.empty()) renderPreviousStepNow(at, index);
         if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, frame.deltaSeconds);
         s_.lesson->update(frame);
-        if (extent.empty()) {
+        if (at.extent.empty()) {
             // Minimised (or --size 0x0): nothing to draw into, and aspect = w/0 must not happen.
             if (!plan_.headless) context_.waitEvents(0.25);
-            record_.facts.frameCpuMs.push_back(0);
-            record_.facts.frameGpuMs.push_back(0);
+            record_.facts.addFrame(0, 0);
             continue;
         }
         const bool lastFrame = frames != 0 && index + 1 == frames;
@@ -122,18 +132,20 @@ void FrameLoop::run() {
         request.readFinal = lastFrame || screenshot;
         if (picture_) {
             // The picture of the step before is kept for the compare view before this step draws.
-            if (renderedStep_ >= 0 && renderedStep_ != s_.step) picture_->keepAsPrevious(renderedStep_);
+            if (renderedStep_ >= 0 && renderedStep_ != s_.step) {
+                picture_->keepAsPrevious(renderedStep_);
+                previousSeconds_ = record_.lastFrame.seconds;
+                pictureScale_.restart();  // another step costs differently
+            }
             renderedStep_ = s_.step;
-            request.target = picture_->target(extent);
+            request.target = picture_->target(at.extent);
         }
-        // A sweep asked for by the cost panel measures one setting here, between frames, never inside one.
-        if (drawOverlay && overlay_->costPanel().measurePending())
-            overlay_->costPanel().runPending(knobSweepStarter());
-        RenderedFrame rendered = renderer_.render(
-            *s_.lesson, frame, request, [&](const FrameGraph& graph, const FrameReport& report) {
-                if (picture_) present(place, window);
-                if (drawOverlay) this->drawOverlay(frame, graph, report, delta, window);
-            });
+        RenderedFrame rendered = renderer_.render(*s_.lesson, frame, request,
+                                                  [&](const FrameGraph& graph, const FrameReport& report) {
+                                                      if (picture_) present(at.place, at.window);
+                                                      if (drawOverlay)
+                                                          this->drawOverlay(frame, &graph, report, delta, at);
+                                                  });
         if (!inspectChecked_) {
             inspectChecked_ = true;  // the first frame's graph knows the texture names --inspect can use
             for (const auto& warning : unknownInspectWarnings(s_.options.inspect, rendered.report, s_.step))
@@ -142,24 +154,53 @@ void FrameLoop::run() {
         record_.lastFrame = frame;
         if (lastFrame && picture_) {
             record_.lastPicture = picture_->read();
-            record_.lastLayout = layout;
+            record_.lastLayout = at.layout;
+            record_.lastPictureScale = PictureRecord{{int(at.place.width), int(at.place.height)},
+                                                     at.extent,
+                                                     pictureScale_.scale(),
+                                                     pictureScale_.automatic()};
             if (overlay_) record_.textScale = overlay_->textScale();
         }
         keep(rendered, lastFrame, request.readFinal, screenshot);
         context_.present();
         gl::drainErrorFlags();
-        record_.facts.frameCpuMs.push_back(
-            std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
-        record_.facts.frameGpuMs.push_back(rendered.passMs);
+        const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
+        record_.facts.addFrame(frameMs, rendered.passMs);
+        if (!plan_.headless) endWindowFrame(frameStart, frameMs, delta);
     }
     // The facts of the last frame read the last frame's report.
     record_.lastFrame.previousFrame = &record_.lastReport;
+    record_.clockSeconds = clock_.seconds();
+    record_.clockSteps = clock_.steps();
+    record_.clockPaused = clock_.paused();
     s_.windowSize = context_.framebufferSize();
     saveUiSettings();
+    if (Status written = resources_.write(); !written) log::error(written.error());
+}
+
+FrameLoop::Placement FrameLoop::placeFrame(bool drawOverlay) const {
+    Placement at;
+    at.window = context_.framebufferSize();
+    // The picture's place: beside the panels when they show, else the whole window.
+    at.place = {0, 0, float(at.window.width), float(at.window.height)};
+    if (drawOverlay && picture_ && !at.window.empty()) {
+        at.layout = overlay_->layout(at.window.width, at.window.height);
+        at.place = at.layout->picture;
+    }
+    if (at.window.empty()) return at;
+    if (!picture_) {
+        at.extent = at.window;  // headless without the overlay: exactly the size asked
+        return at;
+    }
+    // The aspect the lesson's text assumes, letterboxed in the place; then the frame budget's share.
+    at.place = keepAspect(at.place, s_.options.aspect);
+    if (at.layout) at.layout->picture = at.place;
+    at.extent = pictureScale_.rendered({int(at.place.width), int(at.place.height)});
+    return at;
 }
 
 void FrameLoop::present(const LayoutRect& place, Size2D window) {
-    // Around the picture (where no panel is, for a moment during a resize): a dark ground.
+    // Around the picture (the bars its aspect leaves, and where no panel is during a resize): a dark ground.
     gl::DebugGroup group("present picture");
     const GLuint target = context_.presentFramebuffer();
     const float ground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
@@ -167,20 +208,86 @@ void FrameLoop::present(const LayoutRect& place, Size2D window) {
     picture_->present(target, window.height, place, compare_);
 }
 
-std::function<std::unique_ptr<SweepRun>()> FrameLoop::knobSweepStarter() {
-    return [this]() -> std::unique_ptr<SweepRun> {
-        return std::make_unique<KnobSweep>(*s_.lesson, s_.params, renderer_, context_, SweepOptions{}, s_.exe,
+std::function<std::unique_ptr<SweepRun>()> FrameLoop::knobSweepStarter(Size2D size) {
+    return [this, size]() -> std::unique_ptr<SweepRun> {
+        SweepOptions options;
+        options.size = size;  // the picture's size: the cost of what the class sees
+        return std::make_unique<KnobSweep>(*s_.lesson, s_.params, renderer_, context_, options, s_.exe,
                                            s_.step);
     };
+}
+
+void FrameLoop::measureSlice(const Placement& at, std::uint64_t index) {
+    const Clock::time_point start = Clock::now();
+    // The sweep renders its own frames into the window's framebuffer, outside any frame of the loop
+    // (so no texture the overlay holds is released under it); then the picture is put back over them.
+    overlay_->costPanel().runPending(knobSweepStarter(at.extent));
+    if (picture_) present(at.place, at.window);
+    FrameInfo frame = record_.lastFrame;
+    frame.index = index;
+    frame.previousFrame = &record_.lastReport;
+    drawOverlay(frame, nullptr, record_.lastReport, 0.0, at);
+    context_.present();
+    gl::drainErrorFlags();
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    record_.facts.addFrame(ms, 0);
+    if (!overlay_->costPanel().measurePending())
+        notify("measured the cost of quality (the Cost of quality tab)");
+}
+
+void FrameLoop::setCompare(CompareMode mode) {
+    if (!picture_) {
+        notify("compare: needs a window");
+        return;
+    }
+    const bool wasOn = compare_ != CompareMode::Off;
+    compare_ = mode;
+    const bool on = compare_ != CompareMode::Off;
+    // Both steps at one moment: the clock holds while comparing, and the step before is drawn again at
+    // this moment when the view opens.
+    clock_.hold(on);
+    if (on && !wasOn) refreshPrevious_ = true;
+    // While it is on the lesson window says what is compared (FrameLoop::drawOverlay); off, a notice.
+    if (on) {
+        s_.status = cat("compare: ", describeCompareMode(compare_));
+        log::info(s_.status);
+    } else {
+        notify("compare: off (the clock runs again unless paused)");
+    }
+}
+
+void FrameLoop::renderPreviousStepNow(const Placement& at, std::uint64_t index) {
+    refreshPrevious_ = false;
+    const std::optional<int> previous = picture_->previousStep();
+    if (!previous || *previous == s_.step || previousSeconds_ == clock_.seconds()) return;
+    const int current = std::exchange(s_.step, *previous);
+    FrameInfo frame = frameInfo(index, 0.0, at);
+    if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, 0.0);
+    s_.lesson->update(frame);
+    FrameRequest request;
+    request.target = picture_->target(at.extent);
+    (void)renderer_.render(*s_.lesson, frame, request);
+    picture_->keepAsPrevious(*previous);
+    previousSeconds_ = frame.seconds;
+    s_.step = current;
 }
 
 bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     int stepCount = int(s_.lesson->steps().size());
     KeyPresses keys = input_.takeKeyPresses();
-    if (overlay_ && overlay_->wantsKeyboard()) {
-        // Typing into one of the overlay's fields: the keys that are characters are the field's.
-        keys.next = keys.previous = keys.pause = keys.advanceFrame = false;
-        keys.textBigger = keys.textSmaller = false;
+    keys |= std::exchange(heldBack_, KeyPresses{});
+    if (overlay_) {
+        // A text field being edited owns the keys it uses (the arrows move its cursor, "." is a decimal
+        // point, Enter and Esc leave it); the F keys and Page Up/Down stay the app's. The overlay learns
+        // of a click, an Enter or an Esc only when it next draws, so keys pressed in the same moment wait
+        // one frame: the click may open a field, the Enter close one, and then it is clear whose they are.
+        const bool editing = overlay_->wantsTextInput();
+        const bool undecided = keys.clicked || (editing && keys.enterOrEscape);
+        KeyPresses fieldKeys = takeTextFieldKeys(keys);
+        if (undecided)
+            heldBack_ = fieldKeys;
+        else if (!editing)
+            keys |= fieldKeys;
     }
     // --press KEY@FRAME: the same presses, at the frame asked for.
     for (const ScriptedPress& p : s_.options.presses) {
@@ -193,37 +300,63 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     if (keys.previous) s_.step = std::max(s_.step - 1, 0);
     if (keys.toggleOverlay) overlayVisible_ = !overlayVisible_;
     if (keys.pause) clock_.togglePause();
-    if (keys.advanceFrame) clock_.stepOnce();
+    if (keys.advanceFrame) {
+        if (clock_.held())
+            notify(cat("the clock holds while the compare view is on (", windowKeyName(&KeyPresses::compare),
+                       " turns it off)"));
+        else
+            clock_.stepOnce();
+    }
     if (keys.textBigger) changeTextScale(kTextScaleStep);
     if (keys.textSmaller) changeTextScale(-kTextScaleStep);
     if (keys.resetLayout && overlay_) {
         overlay_->resetLayout();
-        s_.status = "layout reset";
+        notify("layout reset");
         saveUiSettings();
     }
-    if (keys.compare) {
-        compare_ = picture_ ? nextCompareMode(compare_) : CompareMode::Off;
-        s_.status = picture_ ? cat("compare: ", describeCompareMode(compare_)) : "compare: needs a window";
-        log::info(s_.status);
-    }
+    if (keys.compare) setCompare(nextCompareMode(compare_));
+    if (keys.pictureScale) notify(pictureScale_.cycle());
     if (keys.findSpecial && overlay_) {
         overlay_->inspector().setOpen(true);
         overlay_->inspector().findNextSpecial();
     }
     if (overlay_) {
         // Esc stops the cost panel's sweep rather than the app while one runs.
-        if (keys.cancel) overlay_->costPanel().cancel();
-        input_.setEscapeCancels(overlay_->costPanel().measurePending());
+        if (keys.quit && overlay_->costPanel().measurePending()) {
+            keys.quit = false;
+            overlay_->costPanel().cancel();
+            notify("measure cancelled (Esc)");
+        }
+        if (keys.measure) {
+            if (overlay_->costPanel().measurePending()) {
+                overlay_->costPanel().cancel();
+                notify("measure cancelled");
+            } else {
+                overlay_->showFramePanel(true, true);
+                overlay_->costPanel().requestMeasure();
+                notify("measuring the cost of quality, a slice a frame (Esc cancels)");
+            }
+        }
     }
     screenshotAsked_ = keys.screenshot;
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
         lastReloadCheck_ = now;
-        programs_.reloadChanged();
+        if (int reloaded = programs_.reloadChanged(); reloaded > 0) {
+            const std::size_t failed = programs_.errors().size();
+            notify(failed == 0 ? cat("a shader was saved: ", reloaded, " program(s) rebuilt")
+                               : cat("a shader was saved: ", failed,
+                                     " program(s) did not build (the last good one keeps running; the errors "
+                                     "are in the lesson window)"));
+        }
         if (lessonText_) (void)lessonText_->reloadIfChanged();
     }
     if (keys.reload) {
-        programs_.reloadAll();
-        s_.status = "reloaded shaders";
+        const int reloaded = programs_.reloadAll();
+        const std::size_t failed = programs_.errors().size();
+        notify(failed == 0 ? cat("reloaded ", reloaded, " shader programs")
+                           : cat("reloaded ", reloaded, " shader programs; ", failed,
+                                 " did not build (the last good one keeps running; the errors are in the "
+                                 "lesson window)"));
     }
     if (keys.nextLesson || keys.previousLesson) {
         const int direction = keys.nextLesson ? 1 : -1;
@@ -231,16 +364,23 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
             s_.switchLesson = direction;
             return false;
         }
-        s_.status = direction > 0 ? "this is the last lesson" : "this is the first lesson";
+        notify(direction > 0 ? "this is the last lesson" : "this is the first lesson");
     }
     return !keys.quit;
+}
+
+void FrameLoop::notify(std::string text) {
+    log::info(text);
+    s_.status = text;
+    notice_ = std::move(text);
+    noticeUntil_ = Clock::now() + kNoticeTime;
 }
 
 void FrameLoop::changeTextScale(float by) {
     if (!overlay_) return;
     const float scale = clampTextScale(overlay_->textScale() + by);
     overlay_->setTextScale(scale);
-    s_.status = cat("text scale ", scale);
+    notify(cat("text scale ", scale));
     saveUiSettings();
 }
 
@@ -256,25 +396,61 @@ void FrameLoop::saveUiSettings() {
     if (auto saved = fx::saveUiSettings(uiSettingsPath(), s_.ui); !saved) log::warning(saved.error());
 }
 
-FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, Size2D extent,
-                               const LayoutRect& place) const {
+void FrameLoop::endWindowFrame(Clock::time_point frameStart, double frameMs, double delta) {
+    // The scale learns from the frame's own work, never from the wait below.
+    if (!overlay_ || !overlay_->costPanel().measurePending()) pictureScale_.frameTook(frameMs);
+    // Never faster than the lesson clock: a fast renderer shows the lesson at the wall clock's pace.
+    const double least = std::max(clock_.fixedStep(), s_.options.minFrameMs / 1000.0);
+    std::this_thread::sleep_until(
+        frameStart + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(least)));
+    const double wall = std::chrono::duration<double>(Clock::now() - frameStart).count();
+    clockRate_.emplace_back(wall, delta);
+    double total = 0;
+    for (const auto& [w, d] : clockRate_) total += w;
+    while (clockRate_.size() > 2 && total - clockRate_.front().first > kClockRateWindowS) {
+        total -= clockRate_.front().first;
+        clockRate_.pop_front();
+    }
+}
+
+std::string FrameLoop::clockRateNotice() const {
+    if (clock_.paused() || clock_.held() || clockRate_.size() < 3) return {};
+    double wall = 0, lesson = 0;
+    for (const auto& [w, d] : clockRate_) {
+        wall += w;
+        lesson += d;
+    }
+    const double rate = wall > 0 ? lesson / wall : 1.0;
+    if (rate > 0.9) return {};
+    char text[16];
+    std::snprintf(text, sizeof text, "%.2g", rate);
+    return cat("lesson clock at ", text, "x the wall clock (one ", stepText(clock_.fixedStep()),
+               " step a frame, as headless)");
+}
+
+FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, const Placement& at) const {
     FrameInfo frame;
     frame.index = index;
     frame.deltaSeconds = delta;
-    frame.size = extent;
+    frame.seconds = clock_.seconds();
+    frame.world = renderer_.world(frame.seconds);
+    frame.clockSteps = clock_.steps();
+    frame.frameBudgetMs = plan_.headless ? 0.0 : pictureScale_.budgetMs();
+    frame.size = at.extent;
     frame.step = s_.step;
     frame.seed = s_.options.seed;
     frame.headless = plan_.headless;
     frame.previousFrame = index > 0 ? &record_.lastReport : nullptr;
-    frame.pointer = input_.pointer(context_.framebufferSize(), int(place.x), int(place.y), extent,
+    frame.pointer = input_.pointer(at.window, int(at.place.x), int(at.place.y),
+                                   {int(at.place.width), int(at.place.height)}, at.extent,
                                    overlay_ && overlayVisible_ && overlay_->wantsMouse());
     return frame;
 }
 
-void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, const FrameReport& report,
-                            double delta, Size2D window) {
+void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, const FrameReport& report,
+                            double delta, const Placement& at) {
     glBindFramebuffer(GL_FRAMEBUFFER, context_.presentFramebuffer());
-    glViewport(0, 0, window.width, window.height);
+    glViewport(0, 0, at.window.width, at.window.height);
     Lesson& lesson = *s_.lesson;
     OverlayModel model;
     model.title = cat(lesson.info().number, ". ", lesson.info().title);
@@ -289,7 +465,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
     model.step = &s_.step;
     model.params = &s_.params;
     model.frame = &report;
-    model.graph = &graph;
+    model.graph = graph;
     model.cameraNear = s_.scene.camera.near;
     model.cameraFar = s_.scene.camera.far;
     model.timing = cat(toString(renderer_.timer().method()));
@@ -299,37 +475,41 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph& graph, con
     model.glExpectedErrors = gl::debugCounters().expectedErrors;
     model.shaderErrors = programs_.errors();
     model.status = s_.status;
+    if (Clock::now() < noticeUntil_) model.notice = notice_;
     model.lessonPanel = [&] {
         Facts facts;
         lesson.facts(facts, frame);
-        drawFacts(facts);
+        drawFacts(facts, frame.size);
         lesson.drawPanel(frame);
     };
     fs::path presetPath = fs::path("out") / (s_.exe + ".preset.json");
     model.onSavePreset = [&, presetPath] {
         auto saved = writeFileAtomically(presetPath, s_.params.toJson());
-        s_.status = saved ? cat("saved ", presetPath.string()) : saved.error();
+        notify(saved ? cat("saved ", presetPath.string()) : saved.error());
     };
     model.onLoadPreset = [&, presetPath] {
         auto text = readFile(presetPath, file_limits::preset);
         Status loaded = text ? s_.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
-        s_.status = loaded ? cat("loaded ", presetPath.string()) : loaded.error();
+        notify(loaded ? cat("loaded ", presetPath.string()) : loaded.error());
     };
-    model.measureKnobs = knobSweepStarter();
+    model.measureKnobs = knobSweepStarter(at.extent);
     // Headless too: --press takes the same keys, and an --overlay capture shows what a window would.
     for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
     model.executable = s_.exe;
-    if (clock_.paused())
+    if (clock_.paused() && !clock_.held())
         model.clock =
             cat("paused at ", secondsText(clock_.seconds()), " s (space resumes, . steps one frame)");
     if (compare_ != CompareMode::Off) {
         model.compare =
             picture_ && picture_->previousStep()
                 ? cat("compare: ", describeCompareMode(compare_), " (step ", *picture_->previousStep() + 1,
-                      " against step ", s_.step + 1, "; F3 changes)")
+                      " against step ", s_.step + 1, ", both at ", secondsText(clock_.seconds()),
+                      " s: the clock holds while comparing; F3 changes)")
                 : "compare: change the step (arrows) to keep a picture to compare with";
     }
-    overlay_->draw(model, window.width, window.height, delta);
+    model.pictureScale = pictureScale_.notice({int(at.place.width), int(at.place.height)});
+    model.clockRate = clockRateNotice();
+    overlay_->draw(model, at.window.width, at.window.height, delta);
 }
 
 void FrameLoop::keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bool screenshot) {
@@ -342,8 +522,7 @@ void FrameLoop::keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bo
         // Never over an earlier one: the first free number for this lesson and step.
         fs::path shot = nextScreenshotPath("out", s_.exe, s_.step + 1);
         auto written = writePng(shot, record_.lastFinalBytes);
-        s_.status = written ? cat("saved ", shot.string()) : written.error();
-        log::info(s_.status);
+        notify(written ? cat("screenshot saved: ", shot.string()) : written.error());
     }
 }
 

@@ -47,7 +47,8 @@ struct Pointer {
     bool overUi = false;    // the overlay owns the mouse: lessons ignore it then
 };
 
-// The clock and the frame, as a lesson sees them. Time is the fixed-step clock when headless.
+// The clock and the frame, as a lesson sees them. Time is the lesson clock's (app/lesson_clock.hpp):
+// one fixed step a frame, in a window as headless, 0 while the clock is paused.
 struct FrameInfo {
     std::uint64_t index = 0;
     double seconds = 0;  // scene time, wrapped by lessons that feed it to shaders
@@ -55,6 +56,12 @@ struct FrameInfo {
     // that draw the scene (effects/scene/world.hpp). The runner makes the meshes and skins them.
     World world;
     double deltaSeconds = 0;
+    // The lesson clock's fixed steps so far, this frame's included (headless: index + 1). Something a
+    // step does every Nth frame counts these, so a paused clock or a slow window changes nothing.
+    std::uint64_t clockSteps = 0;
+    // In a window: what one frame may cost (ms, app/picture_scale.hpp). Work that takes longer (an
+    // accumulated reference) spreads itself over several frames. 0 headless: all of it in one frame.
+    double frameBudgetMs = 0;
     Size2D size;
     int step = 0;  // 0-based
     std::uint32_t seed = 1;

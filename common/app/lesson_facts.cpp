@@ -3,15 +3,20 @@
 namespace fx {
 
 void Facts::add(std::string name, std::string value, std::string label) {
-    facts_.push_back({std::move(name), std::move(value), std::move(label), true});
+    facts_.push_back({std::move(name), std::move(value), std::move(label), true, -1, 0});
 }
 
 void Facts::add(std::string name, bool value, std::string label) {
     add(std::move(name), std::string(value ? "true" : "false"), std::move(label));
 }
 
+void Facts::progress(std::string name, int done, int total, std::string label) {
+    facts_.push_back({std::move(name), std::to_string(done) + " of " + std::to_string(total),
+                      std::move(label), true, done, total});
+}
+
 void Facts::check(std::string name, std::string value) {
-    facts_.push_back({std::move(name), std::move(value), {}, false});
+    facts_.push_back({std::move(name), std::move(value), {}, false, -1, 0});
 }
 
 void Facts::check(std::string name, bool value) {

@@ -12,6 +12,10 @@ struct Fact {
     std::string value;  // "true" and "false" become JSON booleans in the report
     std::string label;  // the panel's words; empty: the name
     bool shown = true;  // false: for the report and the smoke checks only
+    // The words the panel shows before the value: the label, or the name where there is none.
+    const std::string& shownLabel() const { return label.empty() ? name : label; }
+    // Work spread over frames (done of total): the panel draws a bar, the report writes the value.
+    int done = -1, total = 0;
 };
 
 class Facts {
@@ -22,6 +26,8 @@ public:
         add(std::move(name), std::string(value), std::move(label));
     }
     void add(std::string name, bool value, std::string label = {});
+    // How far work spread over several frames is ("24 of 64"): a progress bar in the panel.
+    void progress(std::string name, int done, int total, std::string label = {});
     // A fact for the report and the smoke checks only ("expectErrorsInStep").
     void check(std::string name, std::string value);
     void check(std::string name, const char* value) { check(std::move(name), std::string(value)); }

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <set>
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,13 +20,6 @@ namespace fx {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool isLessonName(const std::string& name) {
-    // fxlab-NN-<slug>
-    return name.size() > 9 && name.rfind("fxlab-", 0) == 0 &&
-           std::isdigit(static_cast<unsigned char>(name[6])) &&
-           std::isdigit(static_cast<unsigned char>(name[7])) && name[8] == '-';
-}
 
 // Flags whose value names something of one lesson, and flags the neighbour gets anew.
 const std::set<std::string> kLessonOwnFlags = {"--step", "--scene", "--param", "--preset", "--inspect",
@@ -57,12 +51,19 @@ std::vector<char*> argv(const fs::path& executable, const std::vector<std::strin
 
 }  // namespace
 
+bool isLessonExecutableName(const std::string& name) {
+    // fxlab-NN-<slug>
+    return name.size() > 9 && name.rfind("fxlab-", 0) == 0 &&
+           std::isdigit(static_cast<unsigned char>(name[6])) &&
+           std::isdigit(static_cast<unsigned char>(name[7])) && name[8] == '-';
+}
+
 std::vector<fs::path> lessonExecutables(const fs::path& folder) {
     std::vector<fs::path> found;
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
         const std::string name = e.path().filename().string();
-        if (!isLessonName(name) || !e.is_regular_file(ec)) continue;
+        if (!isLessonExecutableName(name) || !e.is_regular_file(ec)) continue;
         if ((e.status(ec).permissions() & fs::perms::owner_exec) == fs::perms::none) continue;
         found.push_back(e.path());
     }
@@ -96,13 +97,15 @@ std::vector<std::string> neighbourArguments(const std::vector<std::string>& args
 
 std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& args,
                                               const fs::path& captureDir, int step) {
-    std::vector<std::string> one = without(args, {"--all-steps", "--capture", "--report", "--step"});
+    std::vector<std::string> one =
+        without(args, {"--all-steps", "--capture", "--report", "--step", "--graph"});
     // Headless: a fixed time step, the same pictures every time, and a run that ends by itself (a
     // window without --frames would run until closed).
     if (std::find(one.begin(), one.end(), "--headless") == one.end()) one.insert(one.begin(), "--headless");
     const fs::path folder = captureDir / cat("step-", step);
     for (std::string a : {std::string("--step"), cat(step), std::string("--capture"), folder.string(),
-                          std::string("--report"), (folder / "report.json").string()})
+                          std::string("--report"), (folder / "report.json").string(), std::string("--graph"),
+                          (folder / "graph.dot").string()})
         one.push_back(std::move(a));
     return one;
 }
@@ -114,12 +117,21 @@ Error execLesson(const fs::path& executable, const std::vector<std::string>& arg
     return Error{cat("could not start ", program, ": ", std::strerror(errno))};
 }
 
-Result<int> runAndWait(const fs::path& executable, const std::vector<std::string>& args) {
+Result<int> runAndWait(const fs::path& executable, const std::vector<std::string>& args,
+                       const fs::path& output) {
     std::string program;
     std::vector<char*> v = argv(executable, args, program);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    if (!output.empty()) {
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    }
     pid_t child = 0;
-    if (int error = posix_spawn(&child, program.c_str(), nullptr, nullptr, v.data(), environ); error != 0)
-        return Error{cat("could not start ", program, ": ", std::strerror(error))};
+    int error = posix_spawn(&child, program.c_str(), &actions, nullptr, v.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) return Error{cat("could not start ", program, ": ", std::strerror(error))};
     int status = 0;
     while (waitpid(child, &status, 0) < 0) {
         if (errno != EINTR) return Error{cat("waiting for ", program, ": ", std::strerror(errno))};

@@ -17,6 +17,9 @@
 
 namespace fx {
 
+// Whether a file name is a lesson executable's: fxlab-NN-<name>.
+bool isLessonExecutableName(const std::string& name);
+
 // The lesson executables in `folder` (fxlab-NN-name, executable regular files), in number order.
 std::vector<std::filesystem::path> lessonExecutables(const std::filesystem::path& folder);
 
@@ -31,15 +34,18 @@ std::optional<std::filesystem::path> neighbourLesson(const std::string& current,
 // lesson (--step, --scene, --param, --preset, --inspect, --knob, --press), and --size set to the window's.
 std::vector<std::string> neighbourArguments(const std::vector<std::string>& args, Size2D window);
 
-// The command line for step `step` (1-based) of --all-steps: headless, without --all-steps, --capture
-// and --report, with --step K --capture DIR/step-K --report DIR/step-K/report.json.
+// The command line for step `step` (1-based) of --all-steps: headless, without --all-steps, --capture,
+// --report and --graph, with --step K --capture DIR/step-K --report DIR/step-K/report.json
+// --graph DIR/step-K/graph.dot.
 std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& args,
                                               const std::filesystem::path& captureDir, int step);
 
 // Replaces this process with `executable` run with `args`; returns only when that failed.
 Error execLesson(const std::filesystem::path& executable, const std::vector<std::string>& args);
-// Runs `executable` with `args` and waits: its exit code, or the reason it could not run.
-Result<int> runAndWait(const std::filesystem::path& executable, const std::vector<std::string>& args);
+// Runs `executable` with `args` and waits: its exit code, or the reason it could not run. With an
+// `output` file, the program's standard output and error go there instead of this process's.
+Result<int> runAndWait(const std::filesystem::path& executable, const std::vector<std::string>& args,
+                       const std::filesystem::path& output = {});
 
 // This process's executable (/proc/self/exe).
 std::filesystem::path runningExecutable();

@@ -9,7 +9,9 @@
 #include <string_view>
 
 #include "app/lesson_text_files.hpp"
+#include "app/picture_scale.hpp"
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "render/frame_report.hpp"
 #include "scene/closest_name.hpp"
 
@@ -45,7 +47,8 @@ Result<long> parseWhole(std::string_view text, long min, long max, std::string_v
     long value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) {
-        return Error{cat(flag, ": expected ", what, " from ", min, " to ", max, ", got \"", text, "\"")};
+        return Error{
+            cat(flag, ": expected ", what, " from ", min, " to ", max, ", got \"", excerpt(text), "\"")};
     }
     return value;
 }
@@ -96,14 +99,15 @@ Apply oneOf(T RunOptions::*field, std::vector<Choice<T>> choices) {
             }
             words += (words.empty() ? "" : ", ") + c.word;
         }
-        return Error{cat(use.flag, ": expected one of ", words, "; got \"", use.value, "\"")};
+        return Error{cat(use.flag, ": expected one of ", words, "; got \"", excerpt(use.value), "\"")};
     };
 }
 
 Status parseSize(RunOptions& o, const FlagUse& use) {
     std::string_view v = use.value;
     auto x = v.find('x');
-    Error expected{cat(use.flag, ": expected WxH with sizes from 0 to ", kMaxSize, ", got \"", v, "\"")};
+    Error expected{
+        cat(use.flag, ": expected WxH with sizes from 0 to ", kMaxSize, ", got \"", excerpt(v), "\"")};
     if (x == std::string::npos) return expected;
     auto w = parseWhole(v.substr(0, x), 0, kMaxSize, use.flag, "a width");
     auto h = parseWhole(v.substr(x + 1), 0, kMaxSize, use.flag, "a height");
@@ -127,16 +131,64 @@ Status parseTimeStep(RunOptions& o, const FlagUse& use) {
     char* end = nullptr;
     double s = std::strtod(v.c_str(), &end);
     if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(s) || s <= 0 || s > 10) {
-        return Error{cat(use.flag, ": expected seconds greater than 0 and at most 10, got \"", v, "\"")};
+        return Error{
+            cat(use.flag, ": expected seconds greater than 0 and at most 10, got \"", excerpt(v), "\"")};
     }
     o.timeStep = s;
+    return Status::success();
+}
+
+// auto, a percentage (40%) or a share (0.4), from 10% to 100%.
+Status parsePictureScale(RunOptions& o, const FlagUse& use) {
+    std::string v = use.value;
+    if (v == "auto") {
+        o.pictureScale.reset();
+        return Status::success();
+    }
+    const bool percent = !v.empty() && v.back() == '%';
+    if (percent) v.pop_back();
+    char* end = nullptr;
+    double s = std::strtod(v.c_str(), &end);
+    if (percent) s /= 100.0;
+    if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(s) || s < 0.1 || s > 1.0) {
+        return Error{cat(use.flag,
+                         ": expected auto, or a share of the picture from 0.1 to 1 (or 10% to 100%), got \"",
+                         use.value, "\"")};
+    }
+    o.pictureScale = s;
+    return Status::success();
+}
+
+// W:H (16:9, 4:3), a ratio (1.85) or free.
+Status parseAspect(RunOptions& o, const FlagUse& use) {
+    const std::string& v = use.value;
+    if (v == "free") {
+        o.aspect = 0.0;
+        return Status::success();
+    }
+    Error expected{
+        cat(use.flag, ": expected W:H (16:9), a ratio from 0.1 to 10 (1.85) or free, got \"", v, "\"")};
+    const auto colon = v.find(':');
+    double ratio = 0;
+    if (colon != std::string::npos) {
+        auto w = parseWhole(std::string_view(v).substr(0, colon), 1, kMaxSize, use.flag, "a width");
+        auto h = parseWhole(std::string_view(v).substr(colon + 1), 1, kMaxSize, use.flag, "a height");
+        if (!w || !h) return expected;
+        ratio = double(*w) / double(*h);
+    } else {
+        char* end = nullptr;
+        ratio = std::strtod(v.c_str(), &end);
+        if (v.empty() || end != v.c_str() + v.size()) return expected;
+    }
+    if (!std::isfinite(ratio) || ratio < 0.1 || ratio > 10) return expected;
+    o.aspect = ratio;
     return Status::success();
 }
 
 Status addParam(RunOptions& o, const FlagUse& use) {
     // Only the shape here: names, types and ranges are checked once the lesson's parameters are known.
     if (use.value.find('=') == std::string::npos || use.value.front() == '=') {
-        return Error{cat(use.flag, ": expected name=value, got \"", use.value, "\"")};
+        return Error{cat(use.flag, ": expected name=value, got \"", excerpt(use.value), "\"")};
     }
     o.params.push_back(use.value);
     return Status::success();
@@ -161,7 +213,7 @@ Status addPress(RunOptions& o, const FlagUse& use) {
         std::string list;
         for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
         auto near = closestName(key, names);
-        return Error{cat(use.flag, ": no key named \"", key, "\"",
+        return Error{cat(use.flag, ": no key named \"", excerpt(key), "\"",
                          near ? cat(" (did you mean ", *near, "?)") : "", "; the keys: ", list)};
     }
     long frame = 0;
@@ -178,7 +230,8 @@ Status addPress(RunOptions& o, const FlagUse& use) {
 // WxH@FRAME: sizes as --size takes them.
 Status addResize(RunOptions& o, const FlagUse& use) {
     const auto at = use.value.find('@');
-    if (at == std::string::npos) return Error{cat(use.flag, ": expected WxH@FRAME, got \"", use.value, "\"")};
+    if (at == std::string::npos)
+        return Error{cat(use.flag, ": expected WxH@FRAME, got \"", excerpt(use.value), "\"")};
     RunOptions sized;
     if (auto status = parseSize(sized, {use.flag, use.value.substr(0, at), 0}); !status) return status;
     auto frame = parseWhole(std::string_view(use.value).substr(at + 1), 0, 1000000, use.flag,
@@ -241,16 +294,40 @@ const std::vector<Flag>& flags() {
          .apply = set(&RunOptions::captureFloat, true)},
         {.name = "--report",
          .value = "FILE",
-         .help = "write a JSON report: renderer, frame times, GL errors, texture statistics, passes",
+         .help = "write a JSON report: renderer, frame times, GL errors, texture statistics, passes\n"
+                 "(- writes it to standard output)",
          .apply = nonEmpty(&RunOptions::reportFile, "a path")},
         {.name = "--graph",
          .value = "FILE.dot",
-         .help = "write the last frame's compiled frame graph as Graphviz dot",
+         .help = "write the last frame's compiled frame graph as Graphviz dot (- for standard output)",
          .apply = nonEmpty(&RunOptions::graphFile, "a path")},
+        {.name = "--dump-shaders",
+         .value = "DIR",
+         .help = "write every shader the run compiles into DIR as the driver got it (includes and\n"
+                 "#defines resolved), named by program label, with DIR/index.tsv",
+         .apply = nonEmpty(&RunOptions::shaderDump, "a path")},
         {.name = "--time-step",
          .value = "S",
-         .help = "fixed time step in seconds (headless runs always use one; default 1/60)",
+         .help = "the lesson clock's step in seconds: every frame moves it one step, in a window as\n"
+                 "headless, however long the frame takes (default 1/60)",
          .apply = parseTimeStep},
+        {.name = "--picture-scale",
+         .value = "auto|S",
+         .help = cat("in a window (and with --overlay): render the picture at this share of its place\n"
+                     "(0.1 to 1, or 10% to 100%) instead of the automatic scale that keeps a frame\n"
+                     "within the frame budget (",
+                     int(kFrameBudgetMs), " ms); headless without the overlay: always the size asked"),
+         .apply = parsePictureScale},
+        {.name = "--min-frame-time",
+         .value = "MS",
+         .help = "in a window: every frame takes at least MS milliseconds (it waits the rest), to see\n"
+                 "a lesson as a slow renderer shows it (the lesson clock still moves one step a frame)",
+         .apply = whole(0, 10000, "milliseconds", [](RunOptions& o, long n) { o.minFrameMs = int(n); })},
+        {.name = "--aspect",
+         .value = "W:H|free",
+         .help = "in a window (and with --overlay): the picture's aspect, letterboxed in the space the\n"
+                 "panels leave (default 16:9, the aspect the lessons' text assumes); free: the whole space",
+         .apply = parseAspect},
         {.name = "--seed",
          .value = "N",
          .help = "seed for everything random (default 1)",
@@ -294,6 +371,12 @@ const std::vector<Flag>& flags() {
          .value = "DIR",
          .help = "with --bench: where the results go (default out/bench/<lesson>/)",
          .apply = nonEmpty(&RunOptions::benchOut, "a path")},
+        {.name = "--cost",
+         .value = "time|traffic",
+         .help = "with --bench: the plots' cost axis: time in full-screen copies (default), or the\n"
+                 "memory traffic a frame would move at 1920x1080, modelled (the same on every machine)",
+         .apply = oneOf<BenchCost>(&RunOptions::benchCost,
+                                   {{"time", BenchCost::time}, {"traffic", BenchCost::traffic}})},
         {.name = "--press",
          .value = "KEY@FRAME",
          .help = "press a window key at frame FRAME (0 when left out), as if typed; KEY is the\n"
@@ -308,8 +391,13 @@ const std::vector<Flag>& flags() {
          .apply = addResize},
         {.name = "--all-steps",
          .help = "with --capture DIR: capture every step of the lesson, each into DIR/step-K/\n"
-                 "(with its report.json), one run per step",
+                 "(with its report.json and graph.dot), one run per step",
          .apply = set(&RunOptions::allSteps, true)},
+        {.name = "--resource-log",
+         .value = "FILE",
+         .help = "every tenth frame, the process's memory and its live GL objects, written as CSV\n"
+                 "when the run ends (a soak's figures: tools/soak/run_soak.sh)",
+         .apply = nonEmpty(&RunOptions::resourceLog, "a path")},
         {.name = "--list-steps",
          .help = "print the lesson's steps and exit",
          .apply = set(&RunOptions::listSteps, true)},
@@ -332,7 +420,7 @@ Error unknownFlag(const std::string& word) {
     std::vector<std::string> names;
     for (const Flag& f : flags()) names.push_back(f.name);
     auto near = closestName(word, names);
-    return Error{cat("unknown option \"", word, "\"", near ? cat("; did you mean ", *near, "?") : "",
+    return Error{cat("unknown option \"", excerpt(word), "\"", near ? cat("; did you mean ", *near, "?") : "",
                      " (see --help)")};
 }
 
@@ -359,8 +447,8 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int ste
             value = args[++i];
             // A second --scene would silently replace the first: say so instead of guessing.
             if (!flag->repeatable && !given.insert(flag->name).second) {
-                return Error{
-                    cat(flag->name, ": given more than once (again as \"", value, "\"); give it once")};
+                return Error{cat(flag->name, ": given more than once (again as \"", excerpt(value),
+                                 "\"); give it once")};
             }
         }
         if (auto status = flag->apply(o, {flag->name, value, stepCount}); !status)
@@ -407,7 +495,7 @@ std::vector<std::string> unknownInspectWarnings(const std::vector<std::string>& 
         for (const auto& n : nearest) list += (list.empty() ? "" : ", ") + n;
         auto typo = closestName(name, known);
         warnings.push_back(
-            cat("--inspect: step ", step + 1, "'s frame has no texture named \"", name, "\"",
+            cat("--inspect: step ", step + 1, "'s frame has no texture named \"", excerpt(name), "\"",
                 typo ? cat(" (did you mean \"", *typo, "\"?)") : "",
                 known.empty() ? "; it has no textures" : cat("; the nearest names it has: ", list),
                 ". Another step may have it (--list-steps)."));

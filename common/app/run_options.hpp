@@ -11,6 +11,7 @@
 #include "app/window_input.hpp"
 #include "base/result.hpp"
 #include "base/timing_mode.hpp"
+#include "render/quality_sweep.hpp"
 
 namespace fx {
 
@@ -44,7 +45,8 @@ struct RunOptions {
     bool captureFloat = false;         // --capture-float
     std::filesystem::path reportFile;  // --report FILE
     std::filesystem::path graphFile;   // --graph FILE.dot: the last frame's graph (render/graph_dot.hpp)
-    std::optional<double> timeStep;    // --time-step S (fixed step; default 1/60 s headless)
+    std::filesystem::path shaderDump;  // --dump-shaders DIR: every shader as compiled (gl/shader_dump.hpp)
+    std::optional<double> timeStep;    // --time-step S (the lesson clock's step; default 1/60 s)
     std::uint32_t seed = 1;            // --seed N
     std::vector<std::string> params;   // --param name=value, checked once the lesson is known
     std::filesystem::path presetFile;  // --preset FILE
@@ -57,9 +59,14 @@ struct RunOptions {
     int benchFrames = 5;                        // --bench-frames N: measured frames per setting
     int benchValues = 0;                        // --bench-values N: only the first N values of each knob
     std::filesystem::path benchOut;             // --bench-out DIR (default out/bench/<NN-name>)
+    BenchCost benchCost = BenchCost::time;      // --cost time|traffic: the plots' cost axis
     std::vector<ScriptedPress> presses;         // --press KEY@FRAME
     std::vector<ScriptedResize> resizes;        // --resize WxH@FRAME
     bool allSteps = false;                      // --all-steps: with --capture, every step in DIR/step-K
+    std::filesystem::path resourceLog;   // --resource-log FILE: memory and GL objects (app/resource_log.hpp)
+    std::optional<double> pictureScale;  // --picture-scale S: pinned; nothing: automatic (a window)
+    double aspect = 16.0 / 9.0;          // --aspect W:H: the picture's aspect; 0: free
+    int minFrameMs = 0;                  // --min-frame-time MS: a slow renderer, imitated
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

@@ -27,6 +27,14 @@ nlohmann::ordered_json usesJson(const std::vector<TextureUseRecord>& uses) {
 
 }  // namespace
 
+void RunFacts::addFrame(double cpuMs, double passMs) {
+    frameCpuMs.push_back(cpuMs);
+    frameGpuMs.push_back(passMs);
+    if (frameCpuMs.size() > kKeptFrames) frameCpuMs.pop_front();
+    if (frameGpuMs.size() > kKeptFrames) frameGpuMs.pop_front();
+    ++framesRun;
+}
+
 nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& frame,
                                       const std::vector<CapturedTexture>& textures,
                                       const FloatImage& finalImage) {
@@ -45,8 +53,9 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     if (!f.lastGlError.empty()) j["lastGlError"] = f.lastGlError;
     j["timing"] = {{"method", f.timingMethod}, {"reason", f.timingReason}};
     auto frames = nlohmann::ordered_json::array();
+    const std::uint64_t first = f.framesRun - f.frameCpuMs.size();  // the frames kept are the last ones
     for (std::size_t i = 0; i < f.frameCpuMs.size(); ++i) {
-        frames.push_back({{"index", i},
+        frames.push_back({{"index", first + i},
                           {"cpuMs", f.frameCpuMs[i]},
                           {"passMs", i < f.frameGpuMs.size() ? f.frameGpuMs[i] : 0.0}});
     }
@@ -63,11 +72,20 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
         pj["timingMethod"] = p.timingMethod;
         pj["reads"] = usesJson(p.reads);
         pj["writes"] = usesJson(p.writes);
+        // The cost model at 1920x1080 (render/pass_traffic.hpp); taps null: not declared.
+        pj["taps"] = p.taps ? nlohmann::ordered_json(*p.taps) : nlohmann::ordered_json(nullptr);
+        pj["trafficBytes1080p"] = {{"read", p.traffic.readBytes}, {"written", p.traffic.writtenBytes}};
         pj["stateLeft"] = p.stateLeft;
         pj["stateInherited"] = p.stateInherited;
         passes.push_back(pj);
     }
     j["passes"] = passes;
+    const PassTraffic traffic = frame.modelledTraffic();
+    j["modelledTraffic1080p"] = {{"readBytes", traffic.readBytes},
+                                 {"writtenBytes", traffic.writtenBytes},
+                                 {"totalBytes", traffic.total()},
+                                 {"tapsPerPixel", frame.tapsPerOutputPixel()},
+                                 {"passesWithoutTaps", frame.undeclaredTaps()}};
     j["declaredOrder"] = frame.declaredOrder;
     j["derivedOrder"] = frame.derivedOrder;
     if (!frame.errors.empty()) j["graphErrors"] = frame.errors;
@@ -104,6 +122,10 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
             facts[k] = v;
     }
     j["facts"] = facts;
+    // The facts the overlay's panel shows, in its order and words (the handout lists them per step).
+    auto shown = nlohmann::ordered_json::array();
+    for (auto& [label, value] : f.shownFacts) shown.push_back({{"label", label}, {"value", value}});
+    j["shownFacts"] = shown;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const ParamFact& p : f.params)
         params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});

@@ -2,6 +2,7 @@
 // The JSON report of a run (--report FILE): who rendered, how long frames took and how that was
 // measured, GL errors, every pass with why it did or did not run, and statistics of every texture
 // (per channel min, max, mean, NaN and Inf counts) read back on the last frame.
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,12 +23,18 @@ struct RunFacts {
     std::string lesson, stepTitle, contextKind, renderer, glVersion, timingMethod, timingReason, scene;
     int step = 0;  // 1-based
     Size2D size;
-    std::vector<double> frameCpuMs;
-    std::vector<double> frameGpuMs;  // sum of the pass times the timer had for each frame
+    // The times of the last kKeptFrames frames (a window left open for a lesson must not grow by a
+    // number a frame), and how many frames ran in all.
+    static constexpr std::size_t kKeptFrames = 1000;
+    std::deque<double> frameCpuMs;
+    std::deque<double> frameGpuMs;  // sum of the pass times the timer had for each frame
+    std::uint64_t framesRun = 0;
+    void addFrame(double cpuMs, double passMs);
     std::int64_t glErrors = 0, glExpectedErrors = 0, glWarnings = 0;
     std::string lastGlError;
     std::vector<std::string> shaderErrors;
     std::vector<std::pair<std::string, std::string>> lessonFacts;
+    std::vector<std::pair<std::string, std::string>> shownFacts;  // label and value, as the panel shows them
     std::vector<ParamFact> params;
 };
 

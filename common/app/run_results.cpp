@@ -10,6 +10,11 @@ namespace fx {
 
 namespace {
 
+// --report and --graph: a file under the one rule (base/file_io.hpp), or standard output for "-".
+Status writeOutput(const std::filesystem::path& path, std::string_view text) {
+    return namesStandardOutput(path) ? writeStandardOutput(text) : writeFileAtomically(path, text);
+}
+
 nlohmann::ordered_json rectJson(const LayoutRect& r) {
     return {int(r.x), int(r.y), int(r.width), int(r.height)};
 }
@@ -55,7 +60,10 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
     facts.shaderErrors = programs.errors();
     Facts lessonFacts;
     s.lesson->facts(lessonFacts, record.lastFrame);
-    for (const Fact& f : lessonFacts.list()) facts.lessonFacts.emplace_back(f.name, f.value);
+    for (const Fact& f : lessonFacts.list()) {
+        facts.lessonFacts.emplace_back(f.name, f.value);
+        if (f.shown) facts.shownFacts.emplace_back(f.shownLabel(), f.value);
+    }
     for (const Param& p : s.params.all())
         facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
 
@@ -78,19 +86,28 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         auto report = buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal);
         if (record.lastLayout)
             report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
+        report["clock"] = {
+            {"seconds", record.clockSeconds}, {"steps", record.clockSteps}, {"paused", record.clockPaused}};
+        if (const auto& p = record.lastPictureScale) {
+            // The picture's place (its aspect kept) and the size the lesson rendered at within it.
+            report["picture"] = {{"place", {p->place.width, p->place.height}},
+                                 {"rendered", {p->rendered.width, p->rendered.height}},
+                                 {"scale", p->scale},
+                                 {"automatic", p->automatic}};
+        }
         auto json = report.dump(2) + "\n";
-        if (auto written = writeFileAtomically(plan.reportFile, json); !written) {
+        if (auto written = writeOutput(plan.reportFile, json); !written) {
             log::error(written.error());
             exitCode = 1;
-        } else {
+        } else if (!namesStandardOutput(plan.reportFile)) {
             log::info("report written to ", plan.reportFile.string());
         }
     }
     if (!s.options.graphFile.empty()) {
-        if (auto written = writeFileAtomically(s.options.graphFile, toDot(record.lastReport)); !written) {
+        if (auto written = writeOutput(s.options.graphFile, toDot(record.lastReport)); !written) {
             log::error(written.error());
             exitCode = 1;
-        } else {
+        } else if (!namesStandardOutput(s.options.graphFile)) {
             log::info("frame graph written to ", s.options.graphFile.string(), " (dot -Tpng draws it)");
         }
     }

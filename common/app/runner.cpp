@@ -15,6 +15,7 @@
 #include "base/log.hpp"
 #include "base/paths.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "gl/shader_dump.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_post.hpp"
 #include "scene/scene_settings.hpp"
@@ -103,10 +104,12 @@ std::optional<int> loadLessonScene(RunSession& s) {
         std::cerr << s.exe << ": " << applied.error() << "\n";
         return 2;
     }
-    if (auto unused = s.params.unusedSettings(settings); !unused.empty()) {
+    if (auto unused = s.params.unusedSettings(settings, sceneSettingDefaults()); !unused.empty()) {
         std::string list;
         for (const std::string& setting : unused) list += (list.empty() ? "" : ", ") + setting;
-        log::info(sceneFile.filename().string(), ": no parameter of this lesson starts from ", list);
+        log::info(sceneFile.filename().string(),
+                  ": this lesson reads other settings of the same effect, but none of ", list,
+                  " (no parameter of this lesson starts from it)");
     }
     return std::nullopt;
 }
@@ -138,6 +141,13 @@ int captureEveryStep(const RunSession& s) {
     const fs::path self = runningExecutable();
     int failures = 0;
     for (int step = 1; step <= steps; ++step) {
+        // DIR/step-K is made here, under the rule for every file written: a link there is not followed
+        // out of DIR (the step's own run would take the folder as given).
+        if (Status made = makeFolderIn(s.options.captureDir, cat("step-", step)); !made) {
+            log::error(made.error());
+            ++failures;
+            continue;
+        }
         auto code = runAndWait(self, stepCaptureArguments(s.args, s.options.captureDir, step));
         if (!code || *code != 0) {
             log::error(s.exe, ": step ", step,
@@ -181,7 +191,13 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
         printParams(s.params);
         return 0;
     }
+    if (auto dumping = gl::setShaderDumpFolder(s.options.shaderDump); !dumping) {
+        std::cerr << exe << ": --dump-shaders: " << dumping.error() << "\n";
+        return 2;
+    }
     int code = run(s);
+    // A shader that could not be written is a failed run: the folder would silently miss a variant.
+    if (code == 0 && gl::shaderDumpFailures() > 0) code = 1;
     if (s.switchLesson != 0) {
         // The window is closed and the lesson released: the neighbour takes this process's place.
         if (auto next = neighbourLesson(s.exe, s.switchLesson)) {

@@ -3,6 +3,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 namespace fx {
 namespace {
 
@@ -28,6 +30,11 @@ constexpr WindowKey kWindowKeys[] = {
      &KeyPresses::compare},
     {GLFW_KEY_F4, 0, "F4", "F4", "inspector: go to the next NaN or Inf texel and pin the probe",
      &KeyPresses::findSpecial},
+    {GLFW_KEY_F6, 0, "F6", "F6",
+     "picture scale: automatic (within the frame budget), 100%, 50%, 25% (also --picture-scale)",
+     &KeyPresses::pictureScale},
+    {GLFW_KEY_F7, 0, "F7", "F7",
+     "measure the cost of the quality knobs (the Cost of quality tab; Esc cancels)", &KeyPresses::measure},
     {GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD, "+", "plus", "larger text (kept for the next start)",
      &KeyPresses::textBigger},
     {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT, "-", "minus", "smaller text", &KeyPresses::textSmaller},
@@ -37,41 +44,60 @@ constexpr WindowKey kWindowKeys[] = {
     {GLFW_KEY_F5, 0, "F5", "F5", "reload shaders (they also reload when saved)", &KeyPresses::reload},
     {GLFW_KEY_F12, 0, "F12", "F12", "save a screenshot to out/ (named by lesson and step, never replaced)",
      &KeyPresses::screenshot},
-    {GLFW_KEY_ESCAPE, 0, "Esc", "Esc", "quit", &KeyPresses::quit},
+    {GLFW_KEY_ESCAPE, 0, "Esc", "Esc", "quit (while the cost panel measures: cancel the measure)",
+     &KeyPresses::quit},
 };
 
 // GLFW callbacks are plain functions: the presses of the one lesson window go here.
 KeyPresses* pending = nullptr;
 KeyPresses presses;
-bool escapeCancels = false;
 
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || !pending) return;
+    if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER || key == GLFW_KEY_ESCAPE)
+        pending->enterOrEscape = true;
     // Ctrl/Alt/Super chords are someone else's (the window manager's, ImGui's text fields').
     if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
     // Shift+= is "+" on most layouts; the key is the same.
     for (const WindowKey& k : kWindowKeys) {
         if (k.key != key && (k.alternate == 0 || k.alternate != key)) continue;
-        // While something long is under way (the cost panel's sweep), Esc cancels it instead of quitting.
-        if (k.press == &KeyPresses::quit && escapeCancels)
-            pending->cancel = true;
-        else
-            pending->*k.press = true;
+        pending->*k.press = true;
     }
+}
+
+void onMouseButton(GLFWwindow*, int, int action, int) {
+    if (action == GLFW_PRESS && pending) pending->clicked = true;
 }
 
 }  // namespace
 
 KeyPresses& KeyPresses::operator|=(const KeyPresses& o) {
     for (const WindowKey& k : kWindowKeys) this->*k.press = this->*k.press || o.*k.press;
-    cancel = cancel || o.cancel;  // no key of its own: Esc while a sweep runs
+    clicked = clicked || o.clicked;
+    enterOrEscape = enterOrEscape || o.enterOrEscape;
     return *this;
+}
+
+KeyPresses takeTextFieldKeys(KeyPresses& keys) {
+    KeyPresses field;
+    for (bool KeyPresses::*press :
+         {&KeyPresses::next, &KeyPresses::previous, &KeyPresses::pause, &KeyPresses::advanceFrame,
+          &KeyPresses::textBigger, &KeyPresses::textSmaller, &KeyPresses::quit})
+        field.*press = std::exchange(keys.*press, false);
+    return field;
 }
 
 std::vector<WindowKeyHelp> windowKeysHelp() {
     std::vector<WindowKeyHelp> keys;
     for (const WindowKey& k : kWindowKeys) keys.push_back({k.name, k.action, k.token});
     return keys;
+}
+
+std::string windowKeyName(bool KeyPresses::*press) {
+    for (const WindowKey& k : kWindowKeys) {
+        if (k.press == press) return k.name;
+    }
+    return "?";
 }
 
 std::optional<KeyPresses> keyPressNamed(std::string_view token) {
@@ -89,6 +115,7 @@ WindowInput::WindowInput(GLFWwindow* window) : window_(window) {
     presses = {};
     pending = &presses;
     glfwSetKeyCallback(window_, onKey);
+    glfwSetMouseButtonCallback(window_, onMouseButton);
 }
 
 WindowInput::~WindowInput() {
@@ -101,22 +128,20 @@ KeyPresses WindowInput::takeKeyPresses() {
     return window_ ? taken : KeyPresses{};
 }
 
-void WindowInput::setEscapeCancels(bool on) {
-    escapeCancels = on;
-}
-
-Pointer WindowInput::pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture,
+Pointer WindowInput::pointer(Size2D framebuffer, int placeX, int placeY, Size2D place, Size2D picture,
                              bool overUi) const {
     Pointer p;
-    if (!window_ || framebuffer.empty() || picture.empty()) return p;
+    if (!window_ || framebuffer.empty() || picture.empty() || place.empty()) return p;
     double x = 0, y = 0;
     glfwGetCursorPos(window_, &x, &y);
     int windowWidth = 0, windowHeight = 0;
     glfwGetWindowSize(window_, &windowWidth, &windowHeight);
     if (windowWidth <= 0 || windowHeight <= 0) return p;
-    // Window coordinates (top-left origin, screen units) to the picture's pixels (bottom-left origin).
+    // Window coordinates (top-left origin, screen units) to the place's pixels, then to the picture's
+    // (bottom-left origin), which may be smaller than its place.
     double sx = double(framebuffer.width) / windowWidth, sy = double(framebuffer.height) / windowHeight;
-    const double px = x * sx - pictureX, py = y * sy - pictureY;
+    const double px = (x * sx - placeX) * picture.width / place.width;
+    const double py = (y * sy - placeY) * picture.height / place.height;
     p.x = float(px);
     p.y = float(picture.height - py);
     p.present = px >= 0 && py >= 0 && px < picture.width && py < picture.height;

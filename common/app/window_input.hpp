@@ -18,12 +18,19 @@ struct KeyPresses {
     bool pause = false, advanceFrame = false;      // the clock
     bool textBigger = false, textSmaller = false;  // the overlay's text scale
     bool resetLayout = false, compare = false, findSpecial = false;
+    bool pictureScale = false, measure = false;  // the frame budget's scale; the cost panel's sweep
     bool nextLesson = false, previousLesson = false;
-    bool quit = false;
-    bool cancel = false;  // Esc while something long is under way (setEscapeCancels)
+    bool quit = false;  // Esc: quits, or cancels the cost panel's sweep while one runs (FrameLoop)
+    // Not keys of the app: a mouse button went down, Enter or Esc was pressed (either may open or close
+    // one of the overlay's text fields, which decides whose the other keys are: FrameLoop::takeKeys).
+    bool clicked = false, enterOrEscape = false;
 
     KeyPresses& operator|=(const KeyPresses& o);
 };
+
+// The keys a text field being edited uses itself (arrows, space, ".", "+", "-", Esc), moved out of
+// `keys` into the result; the F keys and Page Up/Down stay in `keys`.
+KeyPresses takeTextFieldKeys(KeyPresses& keys);
 
 // The keys of a lesson window and what each does, for --help and the overlay's Keys tab. The same
 // table decides what a press does, so the help and the window cannot disagree.
@@ -32,6 +39,8 @@ struct WindowKeyHelp {
     std::string token;  // the name --press takes ("space", "F2", "pagedown")
 };
 std::vector<WindowKeyHelp> windowKeysHelp();
+// The name of the key that sets `press` ("F6"), as the screen writes it.
+std::string windowKeyName(bool KeyPresses::*press);
 
 // The press of the key --press names by its token; nothing when no key has that token.
 std::optional<KeyPresses> keyPressNamed(std::string_view token);
@@ -46,11 +55,11 @@ public:
 
     // The presses since the last call.
     KeyPresses takeKeyPresses();
-    // While on, Esc cancels what is under way (the cost panel's sweep) instead of quitting.
-    void setEscapeCancels(bool on);
-    // The mouse in the picture's pixels, bottom-left origin. `picture` is the picture's place in the
-    // framebuffer (x, y from the top-left, in framebuffer pixels); the pointer is present only over it.
-    Pointer pointer(Size2D framebuffer, int pictureX, int pictureY, Size2D picture, bool overUi) const;
+    // The mouse in the picture's pixels, bottom-left origin. The picture is drawn into `placeX`,
+    // `placeY` (from the top-left, framebuffer pixels) at `place`'s size, scaled from `picture` (the
+    // size it was rendered at: the frame budget's scale); the pointer is present only over it.
+    Pointer pointer(Size2D framebuffer, int placeX, int placeY, Size2D place, Size2D picture,
+                    bool overUi) const;
 
 private:
     GLFWwindow* window_;

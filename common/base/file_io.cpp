@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -47,6 +48,8 @@ std::string describeFileType(mode_t mode) {
     if (S_ISCHR(mode)) return "a character device";
     if (S_ISBLK(mode)) return "a block device";
     if (S_ISSOCK(mode)) return "a socket";
+    if (S_ISLNK(mode)) return "a symbolic link";
+    if (S_ISREG(mode)) return "a regular file";
     return "not a regular file";
 }
 
@@ -67,63 +70,58 @@ int writeAll(int fd, std::span<const std::byte> bytes) {
     return 0;
 }
 
-// /dev/stdout and friends: a path that stands for a descriptor this process already has open.
-bool namesOpenDescriptor(const fs::path& path) {
-    std::string text = path.lexically_normal().string();
-    for (std::string_view prefix : {"/dev/stdout", "/dev/stderr", "/dev/fd/", "/proc/self/fd/"})
-        if (text.starts_with(prefix)) return true;
-    return text.starts_with("/proc/") && text.find("/fd/") != std::string::npos;
+// Why `name` is not a name inside the folder (empty, absolute, climbing out with ".."), or nothing.
+std::optional<std::string> outsideTheFolder(const fs::path& name) {
+    if (name.empty()) return "no file name given";
+    if (name.is_absolute()) return "an absolute path where a name inside the folder is expected";
+    for (const fs::path& part : name)
+        if (part == "..") return "\"..\" would leave the folder";
+    if (!name.has_filename()) return "names a folder, not a file";
+    return std::nullopt;
 }
 
-Status writeThrough(const fs::path& path, std::span<const std::byte> bytes, bool append) {
-    // O_NONBLOCK: opening a FIFO that nobody reads fails (ENXIO) instead of waiting for a reader.
-    int flags = O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK | (append ? O_APPEND : 0);
-    Descriptor fd(::open(path.c_str(), flags));
-    if (fd.get() < 0) {
-        int saved = errno;
-        if (saved == ENXIO) return Error{cat(path.string(), ": cannot write (nothing is reading it)")};
-        return Error{cat(path.string(), ": cannot write (", reason(saved), ")")};
-    }
-    // Back to blocking writes: a pipe that is full should wait for its reader, not fail.
-    int current = ::fcntl(fd.get(), F_GETFL);
-    if (current >= 0) ::fcntl(fd.get(), F_SETFL, current & ~O_NONBLOCK);
-    if (int saved = writeAll(fd.get(), bytes); saved != 0)
-        return Error{cat(path.string(), ": write failed (", reason(saved), ")")};
-    if (fd.close() != 0) return Error{cat(path.string(), ": write failed (", reason(errno), ")")};
-    return Status::success();
+// Why `mode` at `shown` may not be replaced, or nothing when it may (a regular file).
+std::optional<Error> refusedTarget(const fs::path& shown, mode_t mode) {
+    if (S_ISREG(mode)) return std::nullopt;
+    if (S_ISLNK(mode))
+        return Error{cat(shown.string(),
+                         ": is a symbolic link; fxlab never writes through a link (remove it or choose "
+                         "another name)")};
+    if (S_ISDIR(mode)) return Error{cat(shown.string(), ": is a folder; give a file name")};
+    return Error{cat(shown.string(), ": is ", describeFileType(mode),
+                     "; fxlab writes only regular files (choose a file name)")};
 }
 
-Status replaceAtomically(const fs::path& path, std::span<const std::byte> bytes) {
+// Opens the chosen folder (creating it), then each folder of `name` below it without following a link.
+// Returns the descriptor of the folder that holds the file; `shown` tracks the path for messages.
+Result<int> openFolderChain(const fs::path& folder, const fs::path& subfolders, fs::path& shown) {
+    const fs::path top = folder.empty() ? fs::path(".") : folder;
     std::error_code ec;
-    if (path.has_parent_path()) {
-        fs::create_directories(path.parent_path(), ec);
-        if (ec) return Error{cat(path.string(), ": cannot create folder (", ec.message(), ")")};
+    fs::create_directories(top, ec);
+    if (ec) return Error{cat(top.string(), ": cannot create folder (", ec.message(), ")")};
+    int fd = ::open(top.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return Error{cat(top.string(), ": cannot open the folder (", reason(errno), ")")};
+    shown = folder;
+    for (const fs::path& part : subfolders) {
+        if (part.empty() || part == ".") continue;
+        shown /= part;
+        Descriptor parent(fd);
+        if (::mkdirat(parent.get(), part.c_str(), 0777) != 0 && errno != EEXIST)
+            return Error{cat(shown.string(), ": cannot create folder (", reason(errno), ")")};
+        struct stat info {};
+        if (::fstatat(parent.get(), part.c_str(), &info, AT_SYMLINK_NOFOLLOW) != 0)
+            return Error{cat(shown.string(), ": cannot create folder (", reason(errno), ")")};
+        if (!S_ISDIR(info.st_mode)) {
+            if (S_ISLNK(info.st_mode))
+                return Error{cat(shown.string(), ": is a symbolic link; fxlab writes only inside ",
+                                 folder.string(), " and never follows a link out of it")};
+            return Error{cat(shown.string(), ": is ", describeFileType(info.st_mode), ", not a folder")};
+        }
+        // O_NOFOLLOW: a link swapped in since the check above is refused, not followed.
+        fd = ::openat(parent.get(), part.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (fd < 0) return Error{cat(shown.string(), ": cannot open the folder (", reason(errno), ")")};
     }
-    // The temporary file sits beside the target so that rename() stays on one file system. O_EXCL
-    // never follows a link planted at the temporary name.
-    fs::path temp = path;
-    temp += cat(".tmp", ::getpid());
-    int flags = O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC;
-    int raw = ::open(temp.c_str(), flags, 0666);
-    if (raw < 0 && errno == EEXIST) {  // left over from a process with the same id that died
-        ::unlink(temp.c_str());
-        raw = ::open(temp.c_str(), flags, 0666);
-    }
-    if (raw < 0) return Error{cat(path.string(), ": cannot write (", reason(errno), ")")};
-    Descriptor fd(raw);
-    int saved = writeAll(fd.get(), bytes);
-    if (saved == 0 && ::fsync(fd.get()) != 0) saved = errno;
-    if (fd.close() != 0 && saved == 0) saved = errno;
-    if (saved != 0) {
-        ::unlink(temp.c_str());
-        return Error{cat(path.string(), ": write failed (", reason(saved), ")")};
-    }
-    if (::rename(temp.c_str(), path.c_str()) != 0) {
-        saved = errno;
-        ::unlink(temp.c_str());
-        return Error{cat(path.string(), ": cannot move the finished file into place (", reason(saved), ")")};
-    }
-    return Status::success();
+    return fd;
 }
 
 }  // namespace
@@ -178,28 +176,82 @@ Result<std::string> readTextFile(const fs::path& path) {
     return readFile(path, file_limits::text);
 }
 
+Status writeFileInFolder(const fs::path& folder, const fs::path& name, std::span<const std::byte> bytes) {
+    const fs::path shownTarget = folder / name;
+    if (auto why = outsideTheFolder(name)) return Error{cat(shownTarget.string(), ": ", *why)};
+    fs::path shown;
+    auto opened = openFolderChain(folder, name.parent_path(), shown);
+    if (!opened) return Error{cat(shownTarget.string(), ": cannot write: ", opened.error())};
+    Descriptor dir(*opened);
+    const std::string leaf = name.filename().string();
+    shown /= leaf;
+
+    struct stat info {};
+    if (::fstatat(dir.get(), leaf.c_str(), &info, AT_SYMLINK_NOFOLLOW) == 0) {
+        if (auto refused = refusedTarget(shown, info.st_mode)) return *refused;
+    } else if (errno != ENOENT) {
+        return Error{cat(shown.string(), ": cannot write (", reason(errno), ")")};
+    }
+
+    // The temporary file sits beside the target so that the rename stays on one file system. O_EXCL
+    // and O_NOFOLLOW never follow anything planted at the temporary name.
+    const std::string temp = cat(leaf, ".tmp", ::getpid());
+    const int flags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+    int raw = ::openat(dir.get(), temp.c_str(), flags, 0666);
+    if (raw < 0 && errno == EEXIST) {  // left over from a process with the same id that died
+        ::unlinkat(dir.get(), temp.c_str(), 0);
+        raw = ::openat(dir.get(), temp.c_str(), flags, 0666);
+    }
+    if (raw < 0) return Error{cat(shown.string(), ": cannot write (", reason(errno), ")")};
+    Descriptor fd(raw);
+    int saved = writeAll(fd.get(), bytes);
+    if (saved == 0 && ::fsync(fd.get()) != 0) saved = errno;
+    if (fd.close() != 0 && saved == 0) saved = errno;
+    if (saved != 0) {
+        ::unlinkat(dir.get(), temp.c_str(), 0);
+        return Error{cat(shown.string(), ": write failed (", reason(saved), ")")};
+    }
+    // rename replaces whatever name is there now, a link planted since the check included, and never
+    // writes through it.
+    if (::renameat(dir.get(), temp.c_str(), dir.get(), leaf.c_str()) != 0) {
+        saved = errno;
+        ::unlinkat(dir.get(), temp.c_str(), 0);
+        return Error{cat(shown.string(), ": cannot move the finished file into place (", reason(saved), ")")};
+    }
+    return Status::success();
+}
+
+Status writeFileInFolder(const fs::path& folder, const fs::path& name, std::string_view text) {
+    return writeFileInFolder(folder, name, std::as_bytes(std::span(text.data(), text.size())));
+}
+
 Status writeFileAtomically(const fs::path& path, std::span<const std::byte> bytes) {
     if (path.empty()) return Error{"cannot write a file with an empty name"};
-    if (namesOpenDescriptor(path)) return writeThrough(path, bytes, true);
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0) {  // follows links: what is there in the end
-        if (S_ISDIR(info.st_mode)) return Error{cat(path.string(), ": is a folder; give a file name")};
-        if (!S_ISREG(info.st_mode)) return writeThrough(path, bytes, false);
-    }
-    // A link (or chain of links) is replaced at its end, so the link itself survives. A dangling link
-    // creates its target.
-    struct stat link {};
-    if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-        std::error_code ec;
-        fs::path target = fs::weakly_canonical(path, ec);
-        if (ec) return Error{cat(path.string(), ": cannot follow the link (", ec.message(), ")")};
-        return replaceAtomically(target, bytes);
-    }
-    return replaceAtomically(path, bytes);
+    if (!path.has_filename()) return Error{cat(path.string(), ": is a folder; give a file name")};
+    return writeFileInFolder(path.parent_path(), path.filename(), bytes);
 }
 
 Status writeFileAtomically(const fs::path& path, std::string_view text) {
     return writeFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+Status makeFolderIn(const fs::path& folder, const fs::path& name) {
+    if (auto why = outsideTheFolder(name)) return Error{cat((folder / name).string(), ": ", *why)};
+    fs::path shown;
+    auto opened = openFolderChain(folder, name, shown);
+    if (!opened) return Error{opened.error()};
+    ::close(*opened);
+    return Status::success();
+}
+
+bool namesStandardOutput(const fs::path& path) {
+    return path.native() == "-";
+}
+
+Status writeStandardOutput(std::string_view text) {
+    if (int saved = writeAll(STDOUT_FILENO, std::as_bytes(std::span(text.data(), text.size()))); saved != 0)
+        return Error{cat("standard output: write failed (", reason(saved), ")")};
+    return Status::success();
 }
 
 }  // namespace fx

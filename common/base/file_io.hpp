@@ -41,16 +41,30 @@ Result<std::string> readFile(const std::filesystem::path& path, FileLimit limit)
 // readFile with file_limits::text.
 Result<std::string> readTextFile(const std::filesystem::path& path);
 
-// Creates missing parent folders. On failure nothing is left at `path` or beside it, and the message
-// carries the system's reason.
-//  - A regular file (or nothing) at `path` is replaced atomically. A symbolic link is followed: its
-//    target is replaced and the link stays a link.
-//  - A folder is refused.
-//  - Anything else (a device such as /dev/null, a FIFO, /dev/stdout) is written through, never
-//    replaced; a FIFO nobody reads is refused instead of blocking.
-//  - Paths naming this process's open files (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N) are
-//    always written through, appending, so `--report /dev/stdout > r.json` writes into r.json.
+// The one rule for every file fxlab writes (docs/reliability.md, "Every file written"):
+//  - The file is written to a temporary file beside it and renamed over the target, so it is complete
+//    or not there at all; on failure nothing is left at the target or beside it.
+//  - Only a regular file (or nothing) at the target is replaced. A symbolic link (working or dangling),
+//    a folder, a device, a FIFO or a socket there is refused with a message naming it; nothing is
+//    written through it and it stays as it was.
+//  - Nothing outside the chosen folder is touched: `folder` (the one the user or the program chose) is
+//    created if missing and may be reached through links the user named, but every name below it
+//    (`name` may go through subfolders: "step-2/final.png") is a real folder or file inside it, never a
+//    link, and `name` may not climb out ("..") or be absolute.
+// Messages carry the path and the system's reason.
+Status writeFileInFolder(const std::filesystem::path& folder, const std::filesystem::path& name,
+                         std::span<const std::byte> bytes);
+Status writeFileInFolder(const std::filesystem::path& folder, const std::filesystem::path& name,
+                         std::string_view text);
+// writeFileInFolder with the path's own folder as the chosen one: `path`'s last name is the file.
 Status writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 Status writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+// Makes `name` (a folder below `folder`) under the same rule, for a program that writes there later
+// (the --all-steps runs' DIR/step-K): a link or a file in the way is refused.
+Status makeFolderIn(const std::filesystem::path& folder, const std::filesystem::path& name);
+
+// "-" as an output path: the text goes to standard output instead of a file (--report -, --graph -).
+bool namesStandardOutput(const std::filesystem::path& path);
+Status writeStandardOutput(std::string_view text);
 
 }  // namespace fx

@@ -38,15 +38,10 @@ std::string joinedText(const std::vector<std::string_view>& lines) {
 
 }  // namespace
 
-Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file) {
-    std::vector<StepSection> sections;
+std::vector<LessonSection> parseLessonSections(std::string_view markdown) {
+    std::vector<LessonSection> sections{{0, {}, {}, 1}};
     std::vector<std::string_view> body;
-    bool inStep = false, inCode = false;
-    auto close = [&] {
-        if (inStep) sections.back().text = joinedText(body);
-        body.clear();
-        inStep = false;
-    };
+    bool inCode = false;
     int lineNumber = 0;
     std::size_t start = 0;
     while (start <= markdown.size()) {
@@ -57,34 +52,47 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
         ++lineNumber;
         if (startsWith(trimmed(line), "```")) inCode = !inCode;
         if (inCode || !isSectionBoundary(line)) {
-            if (inStep) body.push_back(line);
-            if (end == markdown.size()) break;
-            continue;
-        }
-        close();
-        std::string_view heading = trimmed(line.substr(line.find(' ') + 1));
-        if (startsWith(line, "## ") && startsWith(heading, "Step")) {
-            // "## Step N: title"
-            std::string_view rest = heading.substr(4);
-            std::size_t colon = rest.find(':');
-            std::string_view number =
-                colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(0, colon));
-            int n = 0;
-            auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), n);
-            std::string_view title =
-                colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(colon + 1));
-            if (rest.empty() || rest.front() != ' ' || number.empty() || ec != std::errc() ||
-                ptr != number.data() + number.size() || n < 1 || title.empty()) {
-                return Error{cat(file, ":", lineNumber, ": \"", trimmed(line),
-                                 "\" is not a step heading; write \"## Step N: title\" (N from 1)")};
-            }
-            sections.push_back({n, std::string(title), {}, lineNumber});
-            inStep = true;
+            body.push_back(line);
+        } else {
+            sections.back().text = joinedText(body);
+            body.clear();
+            const int level = startsWith(line, "## ") ? 2 : 1;
+            sections.push_back(
+                {level, std::string(trimmed(line.substr(line.find(' ') + 1))), {}, lineNumber});
         }
         if (end == markdown.size()) break;
     }
-    close();
+    sections.back().text = joinedText(body);
+    if (sections.front().text.empty()) sections.erase(sections.begin());
     return sections;
+}
+
+bool isStepSection(const LessonSection& section) {
+    return section.level == 2 && startsWith(section.heading, "Step");
+}
+
+Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file) {
+    std::vector<StepSection> steps;
+    for (const LessonSection& section : parseLessonSections(markdown)) {
+        const std::string_view heading = section.heading;
+        if (!isStepSection(section)) continue;
+        // "## Step N: title"
+        std::string_view rest = heading.substr(4);
+        std::size_t colon = rest.find(':');
+        std::string_view number =
+            colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(0, colon));
+        int n = 0;
+        auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), n);
+        std::string_view title =
+            colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(colon + 1));
+        if (rest.empty() || rest.front() != ' ' || number.empty() || ec != std::errc() ||
+            ptr != number.data() + number.size() || n < 1 || title.empty()) {
+            return Error{cat(file, ":", section.line, ": \"## ", heading,
+                             "\" is not a step heading; write \"## Step N: title\" (N from 1)")};
+        }
+        steps.push_back({n, std::string(title), section.text, section.line});
+    }
+    return steps;
 }
 
 Result<std::vector<std::string>> matchLessonText(const std::vector<StepSection>& sections,

@@ -27,6 +27,19 @@ struct StepSection {
     int line = 0;      // the heading's line, for messages
 };
 
+// Any section of a lesson.md: the text before the first heading (level 0, no heading), a "# title"
+// (level 1) or a "## heading" (level 2) with the lines up to the next such heading ("### x" stays
+// inside; headings inside ``` code blocks are not headings). The handout shows the whole file.
+struct LessonSection {
+    int level = 0;
+    std::string heading;  // without the #s
+    std::string text;     // blank lines at either end trimmed
+    int line = 0;         // the heading's line (1 for the text before any heading)
+};
+std::vector<LessonSection> parseLessonSections(std::string_view markdown);
+// Whether a section is a step's ("## Step ..."): such a heading must be "## Step N: title".
+bool isStepSection(const LessonSection& section);
+
 // The step sections of a markdown file, in the order written, with nothing checked against a
 // lesson. Other sections ("## The frame") are prose around the steps and are skipped; headings inside
 // ``` code blocks are not headings. A heading that starts with "## Step" but is not "## Step N: title"

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace fx::markdown {
 namespace {
@@ -36,20 +41,31 @@ std::string_view listMarker(std::string_view line, std::string_view& rest) {
     return {};
 }
 
-// A table row "| a | b |" as text ("a  |  b"); a separator row "|---|---|" as nothing.
-std::string tableRow(std::string_view line) {
-    std::string out;
+bool isTableSeparator(std::string_view line) {
+    return trimmed(line).find_first_not_of("|-: ") == std::string_view::npos;
+}
+
+// The cells of a table row "| a | b |", as written.
+std::vector<std::string_view> tableCells(std::string_view line) {
+    std::vector<std::string_view> cells;
     line = trimmed(line);
-    if (line.find_first_not_of("|-: ") == std::string_view::npos) return out;
     if (startsWith(line, "|")) line.remove_prefix(1);
     if (!line.empty() && line.back() == '|') line.remove_suffix(1);
     std::size_t start = 0;
     while (start <= line.size()) {
         std::size_t bar = line.find('|', start);
         if (bar == std::string_view::npos) bar = line.size();
-        std::string_view cell = trimmed(line.substr(start, bar - start));
-        if (!cell.empty()) out += (out.empty() ? "" : "  |  ") + std::string(cell);
+        cells.push_back(trimmed(line.substr(start, bar - start)));
         start = bar + 1;
+    }
+    return cells;
+}
+
+// A table row as text ("a  |  b"), its empty cells left out.
+std::string tableRow(const std::vector<std::string_view>& cells) {
+    std::string out;
+    for (std::string_view cell : cells) {
+        if (!cell.empty()) out += (out.empty() ? "" : "  |  ") + std::string(cell);
     }
     return out;
 }
@@ -126,6 +142,42 @@ char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length) {
     return c;
 }
 
+namespace {
+
+// Every balanced pair of `open` and `close` in a text (nested pairs counted; an escaped bracket
+// counts for nothing), found in one pass and looked up by where it opens. A search from every bracket
+// would read the rest of the text each time: hours for a few megabytes of unclosed "[".
+class BalancedPairs {
+public:
+    BalancedPairs(std::string_view text, char open, char close) {
+        if (text.size() >= std::numeric_limits<std::uint32_t>::max()) return;  // files are far smaller
+        std::vector<std::uint32_t> opened;
+        for (std::size_t i = 0; i < text.size(); ++i) {
+            if (text[i] == '\\' && i + 1 < text.size()) {
+                ++i;
+            } else if (text[i] == open) {
+                opened.push_back(std::uint32_t(i));
+            } else if (text[i] == close && !opened.empty()) {
+                pairs_.push_back({opened.back(), std::uint32_t(i)});
+                opened.pop_back();
+            }
+        }
+        std::sort(pairs_.begin(), pairs_.end());
+    }
+
+    // The index of the `close` that balances the `open` at text[at], or npos.
+    std::size_t closeOf(std::size_t at) const {
+        const auto it =
+            std::lower_bound(pairs_.begin(), pairs_.end(), std::pair{std::uint32_t(at), std::uint32_t(0)});
+        return it != pairs_.end() && it->first == at ? it->second : std::string_view::npos;
+    }
+
+private:
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+};
+
+}  // namespace
+
 std::vector<Span> parseSpans(std::string_view text) {
     std::vector<Span> spans;
     std::string plain;
@@ -137,6 +189,9 @@ std::vector<Span> parseSpans(std::string_view text) {
         flush();
         spans.push_back({style, std::string(s)});
     };
+    // A link's or picture's label may hold brackets of its own ("[0, 1]"): its "]" is the one that
+    // balances the "[", and the target's ")" the one that balances its "(".
+    std::optional<BalancedPairs> brackets, parens;  // found on the first "[" (most text has none)
     std::size_t i = 0;
     while (i < text.size()) {
         const char c = text[i];
@@ -178,14 +233,22 @@ std::vector<Span> parseSpans(std::string_view text) {
         if (c == '[' || startsWith(rest, "![")) {
             const bool picture = c == '!';
             std::size_t open = i + (picture ? 1 : 0);
-            std::size_t closeBracket = text.find("](", open);
-            std::size_t closeParen =
-                closeBracket == std::string_view::npos ? closeBracket : text.find(')', closeBracket);
-            if (closeParen != std::string_view::npos &&
-                text.substr(open + 1, closeBracket - open - 1).find('[') == std::string_view::npos) {
+            if (!brackets) {
+                brackets.emplace(text, '[', ']');
+                parens.emplace(text, '(', ')');
+            }
+            const std::size_t closeBracket = brackets->closeOf(open);
+            const std::size_t closeParen = closeBracket != std::string_view::npos &&
+                                                   closeBracket + 1 < text.size() &&
+                                                   text[closeBracket + 1] == '('
+                                               ? parens->closeOf(closeBracket + 1)
+                                               : std::string_view::npos;
+            if (closeParen != std::string_view::npos) {
                 std::string_view label = text.substr(open + 1, closeBracket - open - 1);
                 if (picture) {
                     emit(Style::Picture, label);
+                    spans.back().target =
+                        std::string(text.substr(closeBracket + 2, closeParen - closeBracket - 2));
                 } else {
                     plain += label;
                 }
@@ -254,9 +317,16 @@ std::vector<Block> parseBlocks(std::string_view text) {
         }
         if (startsWith(line, "|")) {
             close();
-            std::string row = tableRow(line);
+            if (isTableSeparator(line)) {
+                // The row above a separator is the table's header.
+                if (!blocks.empty() && !blocks.back().cells.empty()) blocks.back().tableHeader = true;
+                continue;
+            }
+            const std::vector<std::string_view> cells = tableCells(line);
+            std::string row = tableRow(cells);
             if (!row.empty()) {
                 current.kind = BlockKind::Paragraph;
+                for (std::string_view cell : cells) current.cells.push_back(parseSpans(cell));
                 pending = row;
                 open = true;
                 close();

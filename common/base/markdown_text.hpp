@@ -14,6 +14,7 @@ enum class Style { Plain, Strong, Emphasis, Code, Picture };
 struct Span {
     Style style = Style::Plain;
     std::string text;
+    std::string target = {};  // a picture: its file, as written between the parentheses
 };
 
 enum class BlockKind { Paragraph, ListItem, Heading, CodeBlock };
@@ -23,6 +24,10 @@ struct Block {
     std::string marker;       // list items: "-" or "3."
     int indent = 0;           // list nesting, 0 for the outermost
     std::vector<Span> spans;  // a code block: one Plain span, its lines joined with '\n'
+    // A table row (a Paragraph whose spans hold its cells joined by "  |  "): each cell's spans, empty
+    // cells included, and whether the row is a header (the row above a "|---|" line).
+    std::vector<std::vector<Span>> cells = {};
+    bool tableHeader = false;
 };
 
 std::vector<Block> parseBlocks(std::string_view text);

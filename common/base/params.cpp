@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/json_document.hpp"
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 
 namespace fx {
 namespace {
@@ -16,9 +18,11 @@ namespace {
 // Infinity is written as a word: a scene file (JSON) has no number for it.
 constexpr std::string_view kInfinity = "infinity";
 
-std::string formatNumber(double v) {
+// A number as messages write it (base/message_text.hpp), as the float every setting and parameter is
+// held in (0.02, not 0.019999999552965164), infinity as the word.
+std::string numberText(double v) {
     if (std::isinf(v)) return v > 0 ? std::string(kInfinity) : "-" + std::string(kInfinity);
-    return cat(v);
+    return formatNumber(static_cast<float>(v));
 }
 
 Result<double> parseNumber(std::string_view text) {
@@ -26,8 +30,8 @@ Result<double> parseNumber(std::string_view text) {
     if (s.empty()) return Error{"no value"};
     char* end = nullptr;
     double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) return Error{cat("\"", s, "\" is not a number")};
-    if (!std::isfinite(v)) return Error{cat("\"", s, "\" is not a finite number")};
+    if (end != s.c_str() + s.size()) return Error{cat("\"", excerpt(s), "\" is not a number")};
+    if (!std::isfinite(v)) return Error{cat("\"", excerpt(s), "\" is not a finite number")};
     return v;
 }
 
@@ -88,7 +92,7 @@ std::string SettingSpec::rangeText() const {
         for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
         return list;
     }
-    return cat(minOpen ? "(" : "[", formatNumber(min), ", ", formatNumber(max), std::isinf(max) ? ")" : "]");
+    return cat(minOpen ? "(" : "[", numberText(min), ", ", numberText(max), std::isinf(max) ? ")" : "]");
 }
 
 std::string SettingSpec::valueText(double value) const {
@@ -96,13 +100,13 @@ std::string SettingSpec::valueText(double value) const {
         auto i = static_cast<std::size_t>(std::lround(value));
         return i < choices.size() ? choices[i] : cat(i);
     }
-    return formatNumber(value);
+    return numberText(value);
 }
 
 std::string Param::valueText(double value) const {
     switch (type) {
         case ParamType::Float:
-            return formatNumber(value);
+            return numberText(value);
         case ParamType::Int:
             return cat(static_cast<long>(std::lround(value)));
         case ParamType::Bool:
@@ -122,8 +126,8 @@ std::string Param::text() const {
 std::string Param::rangeText() const {
     switch (type) {
         case ParamType::Float:
-            if (std::isinf(max)) return cat("a number from ", formatNumber(min), " up, or ", kInfinity);
-            return cat("a number from ", formatNumber(min), " to ", formatNumber(max));
+            if (std::isinf(max)) return cat("a number from ", numberText(min), " up, or ", kInfinity);
+            return cat("a number from ", numberText(min), " to ", numberText(max));
         case ParamType::Int:
             return cat("a whole number from ", static_cast<long>(min), " to ", static_cast<long>(max));
         case ParamType::Bool:
@@ -296,12 +300,12 @@ Result<double> parseFor(const Param& p, std::string_view text) {
         case ParamType::Bool:
             if (text == "true" || text == "1" || text == "on") return 1.0;
             if (text == "false" || text == "0" || text == "off") return 0.0;
-            return bad(cat("\"", text, "\" is not true or false"));
+            return bad(cat("\"", excerpt(text), "\" is not true or false"));
         case ParamType::Choice: {
             for (std::size_t i = 0; i < p.choices.size(); ++i) {
                 if (p.choices[i] == text) return double(i);
             }
-            return bad(cat("\"", text, "\" is not a choice"));
+            return bad(cat("\"", excerpt(text), "\" is not a choice"));
         }
         case ParamType::Int:
         case ParamType::Float: {
@@ -309,8 +313,8 @@ Result<double> parseFor(const Param& p, std::string_view text) {
             auto v = parseNumber(text);
             if (!v) return bad(v.error());
             if (p.type == ParamType::Int && std::floor(*v) != *v)
-                return bad(cat(text, " is not a whole number"));
-            if (*v < p.min || *v > p.max) return bad(cat(text, " is out of range"));
+                return bad(cat(excerpt(text), " is not a whole number"));
+            if (*v < p.min || *v > p.max) return bad(cat(excerpt(text), " is out of range"));
             return *v;
         }
     }
@@ -324,8 +328,8 @@ Status ParamSet::set(std::string_view name, std::string_view text, ParamSource s
     if (!p) {
         std::string known;
         for (auto& q : params_) known += (known.empty() ? "" : ", ") + q.name;
-        return Error{
-            cat("no parameter named \"", name, "\"; this lesson has: ", known.empty() ? "(none)" : known)};
+        return Error{cat("no parameter named \"", excerpt(name),
+                         "\"; this lesson has: ", known.empty() ? "(none)" : known)};
     }
     auto v = parseFor(*p, text);
     if (!v) return Error{v.error()};
@@ -336,7 +340,7 @@ Status ParamSet::set(std::string_view name, std::string_view text, ParamSource s
 Status ParamSet::assign(std::string_view assignment, ParamSource source) {
     auto eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-        return Error{cat("\"", assignment, "\" is not of the form name=value")};
+        return Error{cat("\"", excerpt(assignment), "\" is not of the form name=value")};
     }
     return set(assignment.substr(0, eq), assignment.substr(eq + 1), source);
 }
@@ -361,12 +365,21 @@ Status ParamSet::applyScene(const std::vector<SettingText>& settings, const std:
     return Status::success();
 }
 
-std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>& settings) const {
+std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>& settings,
+                                                  const std::vector<SettingText>& defaults) const {
+    // "postEffects.bloom.knee" is in the group "postEffects.bloom".
+    auto group = [](const std::string& setting) { return setting.substr(0, setting.rfind('.')); };
     std::vector<std::string> unused;
     for (const SettingText& s : settings) {
-        bool used = std::any_of(params_.begin(), params_.end(),
-                                [&](const Param& p) { return p.sceneSetting == s.setting; });
-        if (!used) unused.push_back(s.setting);
+        const bool used = std::any_of(params_.begin(), params_.end(),
+                                      [&](const Param& p) { return p.sceneSetting == s.setting; });
+        const bool atDefault = std::any_of(defaults.begin(), defaults.end(), [&](const SettingText& d) {
+            return d.setting == s.setting && d.text == s.text;
+        });
+        const bool groupRead = std::any_of(params_.begin(), params_.end(), [&](const Param& p) {
+            return !p.sceneSetting.empty() && group(p.sceneSetting) == group(s.setting);
+        });
+        if (!used && !atDefault && groupRead) unused.push_back(s.setting);
     }
     return unused;
 }
@@ -378,17 +391,21 @@ std::string ParamSet::toJson() const {
 }
 
 Status ParamSet::fromJson(std::string_view json, std::string_view fileName, ParamSource source) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(json);
-    } catch (const nlohmann::json::parse_error& e) {
-        return Error{cat(fileName, ": not valid JSON (", e.what(), ")")};
-    }
-    if (!j.is_object()) return Error{cat(fileName, ": expected an object of parameter names to values")};
+    // The scenes' strict reader: a key given twice, a NUL byte or an over-long string is refused, and a
+    // syntax error says where. A preset is one flat object of short values.
+    auto document = readJsonDocument(json, fileName, {"preset", 4096, 8});
+    if (!document) return Error{document.error()};
+    const nlohmann::json& j = *document;
+    if (!j.is_object())
+        return Error{
+            cat(fileName, ": expected an object of parameter names to values, got ", describeJsonType(j))};
     std::vector<std::pair<Param*, double>> checked;
     for (auto& [key, value] : j.items()) {
         Param* p = findMutable(key);
-        if (!p) return Error{cat(fileName, ": ", key, ": no such parameter")};
+        if (!p) return Error{cat(fileName, ": ", excerpt(key), ": no such parameter")};
+        if (!value.is_string() && !value.is_number() && !value.is_boolean())
+            return Error{
+                cat(fileName, ": ", key, ": expected a number or a string, got ", describeJsonType(value))};
         std::string text = value.is_string() ? value.get<std::string>() : value.dump();
         auto v = parseFor(*p, text);
         if (!v) return Error{cat(fileName, ": ", key, ": ", v.error())};

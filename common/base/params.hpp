@@ -151,8 +151,13 @@ public:
     // file, the setting and the parameter's range.
     Status applyScene(const std::vector<SettingText>& settings, const std::vector<std::string>& known,
                       std::string_view sceneFile);
-    // The settings in `settings` that no parameter takes.
-    std::vector<std::string> unusedSettings(const std::vector<SettingText>& settings) const;
+    // The settings in `settings` that no parameter takes but that a user could have meant for this
+    // lesson: set to something other than its default (`defaults`; a field a file leaves out reads as
+    // its default, so a setting at its default may not have been written at all), in a group
+    // ("postEffects.bloom") of which the lesson does read another setting. A lesson without bloom is
+    // not told about the bloom of another lesson's scene.
+    std::vector<std::string> unusedSettings(const std::vector<SettingText>& settings,
+                                            const std::vector<SettingText>& defaults) const;
 
     // The overlay changed this parameter.
     void markEdited(const Param& param);

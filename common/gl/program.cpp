@@ -2,6 +2,7 @@
 
 #include "base/log.hpp"
 #include "base/paths.hpp"
+#include "gl/shader_dump.hpp"
 #include "gl/shader_source.hpp"
 
 namespace fx::gl {
@@ -36,7 +37,8 @@ struct CompiledStage {
     std::vector<fs::path> files;
 };
 
-Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std::string& defines) {
+Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std::string& defines,
+                                   const std::string& programLabel) {
     auto source = expandShaderSource(resolveShaderPath(file), shaderDir(), defines);
     if (!source) return Error{source.error()};
     ShaderName shader(glCreateShader(stage));
@@ -45,6 +47,7 @@ Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std
     auto length = static_cast<GLint>(source->text.size());
     glShaderSource(shader.name(), 1, &text, &length);
     glCompileShader(shader.name());
+    dumpShaderStage(programLabel, stage, shader.name(), *source);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
@@ -77,7 +80,7 @@ Result<Program> Program::build(const ProgramSources& sources) {
 
     std::vector<CompiledStage> compiled;
     for (auto& [stage, path] : stages) {
-        auto result = compileStage(stage, path, sources.defines);
+        auto result = compileStage(stage, path, sources.defines, program.label_);
         if (!result) return Error{result.error()};
         for (auto& f : result->files) program.files_.push_back(f);
         compiled.push_back(std::move(*result));
@@ -233,14 +236,21 @@ std::vector<std::shared_ptr<ReloadableProgram::State>> ProgramRegistry::live() c
     return out;
 }
 
-void ProgramRegistry::reloadAll() {
+int ProgramRegistry::reloadAll() {
     std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
-    for (auto& p : live()) (void)p->reload();
+    int reloaded = 0;
+    for (auto& p : live()) {
+        (void)p->reload();
+        ++reloaded;
+    }
+    return reloaded;
 }
 
-void ProgramRegistry::reloadChanged() {
+int ProgramRegistry::reloadChanged() {
     std::erase_if(programs_, [](const auto& weak) { return weak.expired(); });
-    for (auto& p : live()) p->reloadIfChanged();
+    int reloaded = 0;
+    for (auto& p : live()) reloaded += p->reloadIfChanged() ? 1 : 0;
+    return reloaded;
 }
 
 std::vector<std::string> ProgramRegistry::errors() const {

@@ -98,8 +98,9 @@ public:
     ProgramRegistry(const ProgramRegistry&) = delete;
     ProgramRegistry& operator=(const ProgramRegistry&) = delete;
 
-    void reloadAll();
-    void reloadChanged();
+    // Both return how many programs were built again (a failed build counts: its error is new).
+    int reloadAll();
+    int reloadChanged();
     // The errors of the programs whose last build failed, in the order they were made.
     std::vector<std::string> errors() const;
     // The error of the first program that never built (no last good program to draw with), if any.

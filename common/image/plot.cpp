@@ -361,7 +361,8 @@ private:
 }  // namespace
 
 ByteImage renderScatterPlot(const ScatterPlot& plot, int width, int height, std::vector<PlotBox>* labels) {
-    ScatterPlotPainter painter(plot, width, height);
+    const ScatterPlot grouped = groupEqualCosts(plot);
+    ScatterPlotPainter painter(grouped, width, height);
     ByteImage image = painter.paint();
     if (labels) *labels = painter.labelBoxes();
     return image;

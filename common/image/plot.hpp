@@ -48,7 +48,18 @@ struct ScatterPlot {
     // Unset: logarithmic when every x is positive and the largest is 20 times the smallest or more
     // (a reference 50 times slower than the settings would squeeze them into one column).
     std::optional<bool> logX;
+    // Grey lines under the plot, after the ones the layout adds (groupEqualCosts says what it grouped).
+    std::vector<std::string> notes;
 };
+
+// Settings whose costs cannot be told apart show as such. Points whose x spreads overlap (chained in
+// order of cost) are drawn at one cost, the median of theirs, with the spread of all of them, so their
+// left-to-right order is no longer the noise of a few frames; of those, points with the same error
+// (to a part in a million) become one marker labelled with every setting in the order they are given
+// (the knob's values: "16 = 32 = 64"), instead of markers stacked on one spot with one label showing.
+// A note names each group. Points without a spread group only with equal x. The bench's picture and
+// the overlay's cost panel both draw the grouped plot.
+ScatterPlot groupEqualCosts(const ScatterPlot& plot);
 
 // True when positive data from `low` to `high` call for a logarithmic axis (high >= 20 low).
 bool wantsLogAxis(double low, double high);
@@ -114,7 +125,8 @@ std::vector<std::optional<PlotBox>> placeLabels(const std::vector<LabelRequest>&
                                                 const std::vector<PlotBox>& markers, const PlotBox& area,
                                                 const std::function<double(const PlotBox&)>& cost = {});
 
-// RGBA, bottom-up like every ByteImage. `labels`, when given, receives the box of every label drawn.
+// RGBA, bottom-up like every ByteImage, of the plot with its equal costs grouped (groupEqualCosts).
+// `labels`, when given, receives the box of every label drawn.
 ByteImage renderScatterPlot(const ScatterPlot& plot, int width = 960, int height = 600,
                             std::vector<PlotBox>* labels = nullptr);
 

@@ -65,6 +65,70 @@ std::vector<std::size_t> paretoFront(const std::vector<PlotPoint>& points) {
     return front;
 }
 
+ScatterPlot groupEqualCosts(const ScatterPlot& plot) {
+    ScatterPlot out = plot;
+    out.points.clear();
+    const std::vector<PlotPoint>& in = plot.points;
+    std::vector<std::size_t> byCost;
+    for (std::size_t i = 0; i < in.size(); ++i)
+        if (std::isfinite(in[i].x) && std::isfinite(in[i].y)) byCost.push_back(i);
+    std::stable_sort(byCost.begin(), byCost.end(),
+                     [&](std::size_t a, std::size_t b) { return in[a].x < in[b].x; });
+    // Runs of points each of which reaches the spread of the run so far.
+    std::vector<std::vector<std::size_t>> groups;
+    double reach = 0.0;
+    for (std::size_t i : byCost) {
+        if (!groups.empty() && in[i].lowX() <= reach) {
+            groups.back().push_back(i);
+        } else {
+            groups.push_back({i});
+        }
+        reach = groups.back().size() == 1 ? in[i].highX() : std::max(reach, in[i].highX());
+    }
+    std::vector<std::pair<std::size_t, PlotPoint>> shown;  // first member's index, the point drawn
+    for (std::vector<std::size_t>& group : groups) {
+        std::sort(group.begin(), group.end());  // the order the points were given in
+        std::vector<double> xs;
+        double low = in[group.front()].lowX(), high = in[group.front()].highX();
+        for (std::size_t i : group) {
+            xs.push_back(in[i].x);
+            low = std::min(low, in[i].lowX()), high = std::max(high, in[i].highX());
+        }
+        std::sort(xs.begin(), xs.end());
+        const double x =
+            xs.size() % 2 ? xs[xs.size() / 2] : 0.5 * (xs[xs.size() / 2 - 1] + xs[xs.size() / 2]);
+        std::vector<std::string> labels;
+        for (std::size_t i : group) labels.push_back(in[i].label);
+        // Of the group, those with one error are one marker.
+        std::vector<bool> merged(group.size(), false);
+        for (std::size_t a = 0; a < group.size(); ++a) {
+            if (merged[a]) continue;
+            PlotPoint p = in[group[a]];
+            for (std::size_t b = a + 1; b < group.size(); ++b) {
+                const PlotPoint& q = in[group[b]];
+                if (merged[b] || std::abs(q.y - p.y) > 1e-6 * std::max(std::abs(p.y), 1e-12)) continue;
+                merged[b] = true;
+                p.label += " = " + q.label;
+                p.isReference = p.isReference || q.isReference;
+                p.isCurrent = p.isCurrent || q.isCurrent;
+            }
+            if (group.size() > 1) p.x = x, p.xLow = low, p.xHigh = high;
+            shown.emplace_back(group[a], p);
+        }
+        if (group.size() > 1) {
+            std::string names;
+            for (const std::string& l : labels) names += (names.empty() ? "" : ", ") + l;
+            out.notes.push_back(cat("same cost within the spread, drawn at one: ", names));
+        }
+    }
+    std::sort(shown.begin(), shown.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& [index, point] : shown) out.points.push_back(std::move(point));
+    // What cannot be drawn stays, for the layout to name.
+    for (const PlotPoint& p : in)
+        if (!(std::isfinite(p.x) && std::isfinite(p.y))) out.points.push_back(p);
+    return out;
+}
+
 bool wantsLogAxis(double low, double high) {
     return low > 0.0 && std::isfinite(high) && high >= 20.0 * low;
 }
@@ -158,6 +222,7 @@ PlotLayout layoutScatterPlot(const ScatterPlot& plot, int width, int height) {
     }
     if (!skipped.empty())
         layout.notes.push_back(noteWithNames("not drawn (NaN or infinite values)", skipped, width));
+    for (const std::string& note : plot.notes) layout.notes.push_back(note);
     bool logY = plot.logY && hasData;
     if (logY && !(minPositiveY <= maxY)) {
         logY = false;

@@ -61,6 +61,11 @@ Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::s
                                 const char* kind) {
     if (encoded.size() > static_cast<std::size_t>(INT_MAX)) return Error{cat(what, ": file too large")};
     int width = 0, height = 0, channelsInFile = 0;
+    // The header first: a small file can claim a huge picture (a 20000 x 20000 PNG of one colour
+    // compresses to kilobytes and decodes to 1.6 GB), so the size is checked before anything is decoded.
+    if (stbi_info_from_memory(reinterpret_cast<const unsigned char*>(encoded.data()),
+                              static_cast<int>(encoded.size()), &width, &height, &channelsInFile))
+        if (Status fits = checkImagePixels(width, height, what); !fits) return Error{fits.error()};
     std::unique_ptr<unsigned char, StbiFree> pixels(
         stbi_load_from_memory(reinterpret_cast<const unsigned char*>(encoded.data()),
                               static_cast<int>(encoded.size()), &width, &height, &channelsInFile, 4));
@@ -75,6 +80,12 @@ Result<ByteImage> decodeEncoded(std::span<const std::byte> encoded, const std::s
 }
 
 }  // namespace
+
+Status checkImagePixels(std::int64_t width, std::int64_t height, const std::string& what) {
+    if (width * height <= kMaxImagePixels) return Status::success();
+    return Error{cat(what, ": ", width, " x ", height, " pixels is over the limit for an image (",
+                     kMaxImagePixels, " pixels, 8192 x 8192)")};
+}
 
 Result<ByteImage> readPng(const std::filesystem::path& path) {
     auto bytes = readFile(path, file_limits::png);

@@ -60,7 +60,16 @@ public:
     void pollEvents() override { glfwPollEvents(); }
     bool shouldClose() const override { return glfwWindowShouldClose(window_) != 0; }
     bool headless() const override { return false; }
-    void resize(Size2D size) override { glfwSetWindowSize(window_, size.width, size.height); }
+    void resize(Size2D size) override {
+        // X refuses a 0-wide window with a fatal BadValue: a size of 0 is the minimised window that
+        // --resize 0x0 stands for, so ask the window system for that instead.
+        if (size.empty()) {
+            glfwIconifyWindow(window_);
+            return;
+        }
+        if (glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0) glfwRestoreWindow(window_);
+        glfwSetWindowSize(window_, size.width, size.height);
+    }
     GLFWwindow* window() const override { return window_; }
     bool hidden() const override {
         return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0 ||

@@ -35,9 +35,11 @@ TextureHandle FrameGraph::declareTexture(std::string name, const TextureDesc& de
     return TextureHandle{static_cast<std::uint32_t>(textures_.size() - 1)};
 }
 
-TextureHandle FrameGraph::importTexture(std::string name, const TextureSpec& spec, NativeTexture native) {
+TextureHandle FrameGraph::importTexture(std::string name, const TextureSpec& spec, NativeTexture native,
+                                        std::optional<TextureSize> sizeRule) {
     GraphTexture texture;
     texture.view = {std::move(name), spec, native, TextureOrigin::Imported};
+    texture.importedSize = sizeRule;
     textures_.push_back(std::move(texture));
     textureGroups_.resize(textures_.size(), 0);
     textureGroups_.back() = openGroup_ ? openGroup_->id() : 0;
@@ -189,6 +191,20 @@ Status FrameGraph::compile() {
     return Error{message};
 }
 
+TextureSpec FrameGraph::modelSpec(const GraphTexture& texture) const {
+    switch (texture.view.origin) {
+        case TextureOrigin::Transient:
+            return resolve(texture.desc, kTrafficModelSize);
+        case TextureOrigin::PresentedOutput:
+            return {kTrafficModelSize.width, kTrafficModelSize.height, texture.view.spec.format, 1};
+        case TextureOrigin::Imported:
+            break;
+    }
+    if (!texture.importedSize) return texture.view.spec;
+    return resolve({*texture.importedSize, texture.view.spec.format, texture.view.spec.mipLevels},
+                   kTrafficModelSize);
+}
+
 void FrameGraph::buildReport() {
     report_ = {};
     report_.outputSize = outputSize_;
@@ -220,11 +236,15 @@ void FrameGraph::buildReport() {
             record.status = PassStatus::FrameSkipped;
             record.reason = "frame skipped: the frame graph has errors";
         }
+        std::vector<ModelledAccess> modelled;
         for (const auto& a : pass.accesses()) {
             const TextureView& view = textures_[a.texture.index].view;
             TextureUseRecord use{view.name, view.spec, a.usage, a.reads && a.writes};
             (a.writes ? record.writes : record.reads).push_back(std::move(use));
+            modelled.push_back({modelSpec(textures_[a.texture.index]), a.reads, a.writes});
         }
+        record.taps = pass.taps();
+        record.traffic = modelTraffic(modelled.data(), modelled.size());
         reportSlot_[p] = report_.passes.size();
         report_.passes.push_back(std::move(record));
     }

@@ -55,8 +55,10 @@ public:
     // A transient texture: allocated from the pool only if a pass that writes it runs.
     TextureHandle declareTexture(std::string name, const TextureDesc& desc);
     // A texture owned elsewhere (history, a cached map). Its content outlives the frame, so a pass
-    // that writes it is never culled for "output unused".
-    TextureHandle importTexture(std::string name, const TextureSpec& spec, NativeTexture native);
+    // that writes it is never culled for "output unused". `sizeRule`: the size it follows, when it
+    // follows the output (history at half resolution), for the traffic model (render/pass_traffic.hpp).
+    TextureHandle importTexture(std::string name, const TextureSpec& spec, NativeTexture native,
+                                std::optional<TextureSize> sizeRule = std::nullopt);
     Pass& addPass(std::string name, Pass::Body body = {});
 
     // Tells the graph that `requirement` (see Pass::needs) cannot be met this frame, and why; the
@@ -116,6 +118,8 @@ private:
     Status executeDeclared(TexturePool& pool, PassExecutor& executor);
     void resolveTextures();
     void buildReport();
+    // The texture as the traffic model sees it: at kTrafficModelSize where it follows the output.
+    TextureSpec modelSpec(const GraphTexture& texture) const;
     PassRecord& recordOf(std::uint32_t pass);
     TextureRecord& recordOf(TextureHandle texture) { return report_.textures[texture.index]; }
 

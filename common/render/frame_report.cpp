@@ -12,6 +12,30 @@ double FrameReport::timedMs() const {
     return total;
 }
 
+PassTraffic FrameReport::modelledTraffic() const {
+    PassTraffic total;
+    for (const PassRecord& p : passes) {
+        if (p.status == PassStatus::Runs) total += p.traffic;
+    }
+    return total;
+}
+
+double FrameReport::tapsPerOutputPixel() const {
+    double taps = 0;
+    for (const PassRecord& p : passes) {
+        if (p.status == PassStatus::Runs && p.taps) taps += fx::tapsPerOutputPixel(*p.taps, p.traffic);
+    }
+    return taps;
+}
+
+std::vector<std::string> FrameReport::undeclaredTaps() const {
+    std::vector<std::string> names;
+    for (const PassRecord& p : passes) {
+        if (p.status == PassStatus::Runs && !p.taps) names.push_back(p.name);
+    }
+    return names;
+}
+
 std::vector<std::string> FrameReport::executedPasses() const {
     std::vector<std::string> names;
     for (const PassRecord& p : passes) {
@@ -63,6 +87,10 @@ std::string describe(const FrameReport& report) {
     for (const auto& p : report.passes) {
         out += cat("  ", p.executed ? "ran    " : "skipped", " ", p.name);
         if (p.timeMs) out += cat(" (", *p.timeMs, " ms, ", p.timingMethod, ")");
+        if (p.status == PassStatus::Runs) {
+            out += cat(" [", megabytesText(p.traffic.total()), " at 1080p",
+                       p.taps ? cat(", ", *p.taps, " taps") : std::string(), "]");
+        }
         if (!p.reason.empty()) out += cat(": ", p.reason);
         out += "\n";
     }
@@ -74,6 +102,8 @@ std::string describe(const FrameReport& report) {
             out += t.allocated ? ", allocated" : cat(", not allocated: ", t.reason);
         out += "\n";
     }
+    out += cat("  modelled traffic at 1080p: ", megabytesText(report.modelledTraffic().total()), ", ",
+               report.tapsPerOutputPixel(), " taps per output pixel\n");
     out += cat("  pool: ", report.pool.liveBytes, " bytes live, ", report.pool.inUseBytes, " in use, ",
                report.pool.peakBytes, " peak\n");
     return out;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/graph_texture.hpp"
+#include "render/pass_traffic.hpp"
 #include "render/texture_pool.hpp"
 
 namespace fx {
@@ -40,6 +41,10 @@ struct PassRecord {
     std::string reason;                    // empty when it runs
     std::vector<TextureUseRecord> reads;   // sampled reads
     std::vector<TextureUseRecord> writes;  // writes, including modifies
+    // The cost model (render/pass_traffic.hpp): texture lookups per pixel written, as the pass declared
+    // them (none: not declared), and the memory traffic at kTrafficModelSize.
+    std::optional<double> taps;
+    PassTraffic traffic;
     // Filled by the executor: time of this pass (possibly a few frames old, from a query ring) and
     // how it was measured ("GL_TIME_ELAPSED", "glFinish wall clock").
     std::optional<double> timeMs;
@@ -77,6 +82,12 @@ struct FrameReport {
     const PassRecord* findPass(std::string_view name) const;
     // The summed time of every timed pass.
     double timedMs() const;
+    // The modelled memory traffic of the passes that run (compiled to run), at kTrafficModelSize.
+    PassTraffic modelledTraffic() const;
+    // Their taps per output pixel (each pass's taps weighted by its share of the output's pixels);
+    // passes that declared none count 0, and undeclaredTaps() lists them.
+    double tapsPerOutputPixel() const;
+    std::vector<std::string> undeclaredTaps() const;
     // The names of the passes that ran, in the order they ran (what a lesson compares with a chapter's).
     std::vector<std::string> executedPasses() const;
     const TextureRecord* findTexture(std::string_view name) const;

@@ -19,6 +19,9 @@ namespace fx {
 struct GraphTexture {
     TextureView view;  // name, origin, spec (resolved at compile for transients), native handle
     TextureDesc desc;  // as declared; transients only
+    // Imports: the size rule the texture follows, when it follows the output (the traffic model takes it
+    // at the model's size); none: its own size.
+    std::optional<TextureSize> importedSize;
     bool inspected = false;
     bool captured = false;
     // Roots keep their writers alive: imports (their content outlives the frame, the presented

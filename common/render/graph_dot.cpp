@@ -15,6 +15,7 @@ constexpr std::string_view kCulledLine = "#9a9a9a";
 constexpr std::size_t kWrapColumn = 36;
 constexpr std::string_view kInheritedLine = "#c0392b";
 constexpr std::size_t kInheritedListed = 2;
+constexpr std::string_view kLeftToRight = "rankdir=LR";
 
 // "depth test: off (inherited)" -> "depth test: off": the label already says "inherits".
 std::string withoutSuffix(std::string_view item) {
@@ -134,12 +135,18 @@ std::string textureStatement(const TextureRecord& texture, std::size_t node) {
 
 }  // namespace
 
+std::string topToBottom(std::string dot) {
+    if (auto at = dot.find(kLeftToRight); at != std::string::npos)
+        dot.replace(at, kLeftToRight.size(), "rankdir=TB");
+    return dot;
+}
+
 std::string toDot(const FrameReport& report) {
     std::map<std::string, std::size_t, std::less<>> textureIndex;
     for (std::size_t t = 0; t < report.textures.size(); ++t) textureIndex.emplace(report.textures[t].name, t);
 
     std::string out = "digraph frame {\n";
-    out += cat("  graph [rankdir=LR, bgcolor=\"white\", fontname=\"Helvetica\", labelloc=t, label=",
+    out += cat("  graph [", kLeftToRight, ", bgcolor=\"white\", fontname=\"Helvetica\", labelloc=t, label=",
                quoted(cat("frame at ", toString(report.outputSize),
                           report.errors.empty() ? std::string()
                                                 : cat(", ", report.errors.size(), " error(s): nothing ran"))),

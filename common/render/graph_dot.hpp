@@ -14,4 +14,8 @@ namespace fx {
 // From the report of a compiled (and usually executed) frame: FrameGraph::report().
 std::string toDot(const FrameReport& report);
 
+// A graph toDot wrote, drawn top to bottom instead of left to right: a long chain of passes fits a
+// page taller than it is wide this way (the handout picks whichever direction fits its page better).
+std::string topToBottom(std::string dot);
+
 }  // namespace fx

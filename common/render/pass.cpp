@@ -78,6 +78,11 @@ Pass& Pass::setTag(std::int64_t tag) {
     return *this;
 }
 
+Pass& Pass::setTaps(double perOutputPixel) {
+    taps_ = std::max(perOutputPixel, 0.0);
+    return *this;
+}
+
 TextureAccess* Pass::addAccess(TextureHandle texture, bool reads, bool writes, TextureUsage usage) {
     if (!graph_.owns(texture)) {
         declarationErrors_.push_back(

@@ -64,11 +64,17 @@ public:
     Pass& keepAlive();
     // Any number the lesson or executor wants back in the report (a step, an effect id).
     Pass& setTag(std::int64_t tag);
+    // Texture lookups per pixel it writes (texture(), texelFetch(), imageLoad): a 13-tap downsample
+    // declares 13; a pass that draws geometry counts per covered pixel. The report and the pass table
+    // show them beside the modelled memory traffic (render/pass_traffic.hpp).
+    Pass& setTaps(double perOutputPixel);
 
     // --- Facts ---
     const std::string& name() const { return name_; }
     std::uint32_t declaredIndex() const { return index_; }
     std::int64_t tag() const { return tag_; }
+    // Absent until setTaps: the report then says the pass did not declare them.
+    std::optional<double> taps() const { return taps_; }
     // The PassGroup open on the graph when the pass was added; 0: none.
     std::uint32_t group() const { return group_; }
     const PassState& state() const { return state_; }
@@ -101,6 +107,7 @@ private:
     PassState state_;
     std::vector<TextureAccess> accesses_;
     std::int64_t tag_ = 0;
+    std::optional<double> taps_;
     std::uint32_t group_ = 0;
     bool keepAlive_ = false;
     PassSwitch switch_ = PassSwitch::On;

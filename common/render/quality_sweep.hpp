@@ -1,16 +1,21 @@
 #pragma once
 // One measured setting of a quality knob: what the bench writes and the overlay's cost panel draws
 // (time against error, the reference marked).
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace fx {
 
-// One pass's share of a measured setting: its median time and that time in full-screen copies.
+// One pass's share of a measured setting: its median time and that time in full-screen copies, and
+// what the cost model gives it (render/pass_traffic.hpp): memory traffic at 1920x1080 and its taps.
 struct PassCost {
     std::string pass;
     double medianMs = 0;
     double copies = 0;
+    std::uint64_t trafficBytes = 0;
+    std::optional<double> taps;
 };
 
 struct SweepPoint {
@@ -31,6 +36,10 @@ struct SweepPoint {
     double minMultiple = 0, maxMultiple = 0;
     double copyMs = 0;               // the median of the copies interleaved with this setting
     std::vector<PassCost> passes{};  // every timed pass, in execution order
+    // The frame's modelled memory traffic at 1920x1080 and its taps per output pixel: the same on every
+    // machine (render/pass_traffic.hpp), the cost axis of `--cost traffic`.
+    std::uint64_t trafficBytes = 0;
+    double tapsPerPixel = 0;
 };
 
 struct SweepResult {
@@ -43,20 +52,32 @@ struct SweepResult {
     std::vector<SweepPoint> points;
 };
 
+// What a plot's cost axis is (--cost): the measured time in full-screen copies (milliseconds when no
+// copy was timed), or the modelled memory traffic at 1920x1080 (render/pass_traffic.hpp), which reads
+// the same on every machine.
+enum class BenchCost { time, traffic };
+
 // Where a sweep is: rows measured so far (the reference image counts as one) of how many, and what
 // the next one is.
 struct SweepProgress {
     int done = 0, total = 0;
-    std::string next;  // "levels = 4", empty when done
+    std::string next;           // "levels = 4", empty when done
+    int frame = 0, frames = 0;  // of the row under way: frames rendered, of how many (0 of 0: none)
+    // The share of the whole sweep done, rows and the row under way's frames.
+    double fraction() const {
+        if (total <= 0) return 0.0;
+        return (done + (frames > 0 ? double(frame) / frames : 0.0)) / total;
+    }
 };
 
-// A sweep measured a row at a time, so an app can draw frames (and a progress bar) between rows and
-// stop early: dropping it mid-way puts the parameters back (app/bench.hpp: KnobSweep).
+// A sweep measured a slice at a time (one frame of a row), so an app can draw its own frames (and a
+// progress bar) between slices and stop early: dropping it mid-way puts the parameters back
+// (app/bench.hpp: KnobSweep).
 class SweepRun {
 public:
     virtual ~SweepRun() = default;
     virtual bool done() const = 0;
-    virtual void next() = 0;  // measures one row
+    virtual void next() = 0;  // measures one slice (a row is done after several)
     virtual SweepProgress progress() const = 0;
     virtual const SweepResult& result() const = 0;
 };

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 
 namespace fx {
@@ -42,7 +43,7 @@ Result<fs::path> resolveAssetPath(std::string_view written, const fs::path& scen
     fs::path resolved = normalised(absolute);
     fs::path root = normalised(fs::absolute(assetRoot));
     if (!isInside(resolved, root)) {
-        return Error{cat("\"", scene_limits::excerpt(written), "\" resolves to ", resolved.string(),
+        return Error{cat("\"", excerpt(written), "\" resolves to ", resolved.string(),
                          ", which is outside the asset root ", root.string(),
                          " (scenes may only use files under it)")};
     }

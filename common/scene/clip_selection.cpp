@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/closest_name.hpp"
 #include "scene/scene_limits.hpp"
 
@@ -19,7 +20,7 @@ std::string listOf(const std::vector<std::string>& names) {
 }  // namespace
 
 Result<AnimationClip> selectClips(const GltfModel& model, const Animation& animation) {
-    if (model.clips.empty()) return Error{"the file has no animation clips"};
+    if (model.clips.empty()) return Error{"has no animation clips"};
     std::vector<const AnimationClip*> chosen;
     if (animation.playsAllClips()) {
         for (const auto& clip : model.clips) chosen.push_back(&clip);
@@ -31,8 +32,8 @@ Result<AnimationClip> selectClips(const GltfModel& model, const Animation& anima
             if (!clip) {
                 std::string hint;
                 if (auto near = closestName(name, available)) hint = cat(" (did you mean \"", *near, "\"?)");
-                return Error{cat("has no clip \"", scene_limits::excerpt(name), "\"", hint,
-                                 "; its clips: ", listOf(available))};
+                return Error{
+                    cat("has no clip \"", excerpt(name), "\"", hint, "; its clips: ", listOf(available))};
             }
             chosen.push_back(clip);
         }

@@ -13,6 +13,7 @@
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "scene/gltf_model_builder.hpp"
+#include "scene/gltf_precheck.hpp"
 
 namespace fx {
 namespace {
@@ -141,31 +142,41 @@ void computeNormals(MeshData& mesh) {
     }
 }
 
+Result<GltfModel> parseGltfBytes(std::span<const std::byte> bytes, const fs::path& baseDir,
+                                 const fs::path& nominalFile) {
+    const bool binary = isGlb(bytes);
+    // What tinygltf would refuse without naming the rule, refused here with it.
+    std::optional<std::string_view> document =
+        binary ? glbJsonChunk(bytes)
+               : std::optional<std::string_view>(
+                     std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    if (document)
+        if (auto refusal = findUnnamedGltfRefusal(*document))
+            return Error{cat(nominalFile.string(), ": ", *refusal)};
+    tinygltf::TinyGLTF loader;
+    useFxlabFileReader(loader);
+    CapturedImages images;
+    loader.SetImageLoader(&captureImage, &images);
+    tinygltf::Model m;
+    std::string err, warn;
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const auto size = static_cast<unsigned int>(bytes.size());
+    bool ok = binary ? loader.LoadBinaryFromMemory(&m, &err, &warn, data, size, baseDir.string())
+                     : loader.LoadASCIIFromString(&m, &err, &warn, reinterpret_cast<const char*>(data), size,
+                                                  baseDir.string());
+    return finish(ok, m, err, warn, nominalFile, baseDir, images);
+}
+
 Result<GltfModel> loadGltf(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(file, ec)) return Error{cat(file.string(), ": no such file")};
-    tinygltf::TinyGLTF loader;
-    useFxlabFileReader(loader);
-    CapturedImages images;
-    loader.SetImageLoader(&captureImage, &images);
-    tinygltf::Model m;
-    std::string err, warn;
-    bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
-    bool ok = binary ? loader.LoadBinaryFromFile(&m, &err, &warn, file.string())
-                     : loader.LoadASCIIFromFile(&m, &err, &warn, file.string());
-    return finish(ok, m, err, warn, file, file.parent_path(), images);
+    auto bytes = readFile(file, file_limits::gltf);
+    if (!bytes) return Error{bytes.error()};
+    return parseGltfBytes(std::as_bytes(std::span(bytes->data(), bytes->size())), file.parent_path(), file);
 }
 
 Result<GltfModel> parseGltf(const std::string& json, const fs::path& baseDir, const fs::path& nominalFile) {
-    tinygltf::TinyGLTF loader;
-    useFxlabFileReader(loader);
-    CapturedImages images;
-    loader.SetImageLoader(&captureImage, &images);
-    tinygltf::Model m;
-    std::string err, warn;
-    bool ok = loader.LoadASCIIFromString(&m, &err, &warn, json.c_str(),
-                                         static_cast<unsigned int>(json.size()), baseDir.string());
-    return finish(ok, m, err, warn, nominalFile, baseDir, images);
+    return parseGltfBytes(std::as_bytes(std::span(json.data(), json.size())), baseDir, nominalFile);
 }
 
 }  // namespace fx

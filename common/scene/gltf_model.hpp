@@ -49,14 +49,11 @@ struct ModelPrimitive {
     bool generatedNormals = false;
 
     bool skinned() const { return !influences.empty(); }
-    bool operator==(const ModelPrimitive&) const = default;
 };
 
 struct ModelMesh {
     std::string name;
     std::vector<ModelPrimitive> primitives;
-
-    bool operator==(const ModelMesh&) const = default;
 };
 
 struct GltfModel {

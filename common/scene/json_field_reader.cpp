@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 
 namespace fx {
@@ -16,40 +17,7 @@ bool NumberRange::contains(double value) const {
 }
 
 std::string NumberRange::text() const {
-    return cat(lowOpen ? "(" : "[", low, ", ", high, highOpen ? ")" : "]");
-}
-
-std::string fieldPath(std::string_view parent, std::string_view key) {
-    return parent.empty() ? std::string(key) : cat(parent, ".", key);
-}
-
-std::string indexPath(std::string_view parent, std::size_t index) {
-    return cat(parent, "[", index, "]");
-}
-
-std::string describeJsonType(const nlohmann::json& value) {
-    switch (value.type()) {
-        case nlohmann::json::value_t::null:
-            return "null";
-        case nlohmann::json::value_t::object:
-            return "an object";
-        case nlohmann::json::value_t::array:
-            return "an array";
-        case nlohmann::json::value_t::string:
-            return "a string";
-        case nlohmann::json::value_t::boolean:
-            return "a boolean";
-        case nlohmann::json::value_t::number_integer:
-        case nlohmann::json::value_t::number_unsigned:
-        case nlohmann::json::value_t::number_float:
-            return "a number";
-        default:
-            return "an unsupported value";
-    }
-}
-
-void failField(std::string path, std::string reason) {
-    throw SceneFieldError{std::move(path), std::move(reason)};
+    return cat(lowOpen ? "(" : "[", formatNumber(low), ", ", formatNumber(high), highOpen ? ")" : "]");
 }
 
 float readNumber(const nlohmann::json& value, const std::string& path, NumberRange range) {
@@ -58,12 +26,13 @@ float readNumber(const nlohmann::json& value, const std::string& path, NumberRan
     // JSON has no NaN or infinity, but a literal such as 1e400 parses as infinity.
     if (!std::isfinite(number))
         failField(path, "the number is not finite (too large for a double: it overflowed)");
-    if (!range.contains(number)) failField(path, cat(number, " is out of range ", range.text()));
+    if (!range.contains(number))
+        failField(path, cat(formatNumber(number), " is out of range ", range.text()));
     // The program uses the value as a float: 1e-300 passes as a double and is 0 as a float, and
     // 179.99999999 rounds up to 180. Check what the program will see.
     const float asFloat = static_cast<float>(number);
     if (!range.contains(double(asFloat)))
-        failField(path, cat(number, " becomes ", asFloat,
+        failField(path, cat(formatNumber(number), " becomes ", formatNumber(asFloat),
                             " as a float (the precision fxlab computes with), which is out of range ",
                             range.text()));
     return asFloat;
@@ -74,8 +43,9 @@ int readInteger(const nlohmann::json& value, const std::string& path, NumberRang
     double number = value.get<double>();
     if (value.is_number_unsigned()) number = static_cast<double>(value.get<std::uint64_t>());
     if (value.is_number_float() && (!std::isfinite(number) || std::floor(number) != number))
-        failField(path, cat("expected an integer, got ", number));
-    if (!range.contains(number)) failField(path, cat(number, " is out of range ", range.text()));
+        failField(path, cat("expected an integer, got ", formatNumber(number)));
+    if (!range.contains(number))
+        failField(path, cat(formatNumber(number), " is out of range ", range.text()));
     return static_cast<int>(number);
 }
 
@@ -193,8 +163,7 @@ void JsonFieldReader::reportUnknown(std::string_view kind) {
         if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
         std::string hint;
         if (auto near = closestName(it.key(), known_)) hint = cat(" (did you mean \"", *near, "\"?)");
-        warnings_.push_back(
-            cat(pathOf(scene_limits::excerpt(it.key())), ": unknown ", kind, ", ignored", hint));
+        warnings_.push_back(cat(pathOf(excerpt(it.key())), ": unknown ", kind, ", ignored", hint));
     }
 }
 

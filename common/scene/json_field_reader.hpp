@@ -13,19 +13,19 @@
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
+#include "base/json_document.hpp"
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/closest_name.hpp"
 #include "scene/scene_enums.hpp"
 #include "scene/scene_limits.hpp"
 
 namespace fx {
 
-// What the scene reader throws at the first bad value. parseScene catches it and returns an Error that
-// names the file; no exception leaves the loader. Throwing keeps the many reads free of error plumbing.
-struct SceneFieldError {
-    std::string path;
-    std::string reason;
-};
+// What the scene reader throws at the first bad value (failField, base/json_document.hpp). parseScene
+// catches it and returns an Error that names the file; no exception leaves the loader. Throwing keeps the
+// many reads free of error plumbing.
+using SceneFieldError = JsonFieldError;
 
 // An interval of allowed numbers. Every range is bounded, so a value that passes fits in a float.
 struct NumberRange {
@@ -41,14 +41,6 @@ struct NumberRange {
     bool contains(double value) const;
     std::string text() const;  // "(0, 180)", "[1, 512]"
 };
-
-std::string fieldPath(std::string_view parent, std::string_view key);  // "camera" + "near" -> "camera.near"
-std::string indexPath(std::string_view parent, std::size_t index);     // "lights" + 2 -> "lights[2]"
-
-// "a string", "an array", "null": how a value's type reads in a message.
-std::string describeJsonType(const nlohmann::json& value);
-
-[[noreturn]] void failField(std::string path, std::string reason);
 
 // Value readers for one JSON value at `path`.
 // The number as the float the program will use; the range is checked on that float too.
@@ -137,8 +129,8 @@ private:
         for (const auto& entry : enumNames(E{})) names.emplace_back(entry.name);
         std::string hint;
         if (auto near = closestName(name, names)) hint = cat(" (did you mean \"", *near, "\"?)");
-        failField(pathOf(key), cat("unknown value \"", scene_limits::excerpt(name), "\"", hint,
-                                   "; allowed: ", allowedNames<E>()));
+        failField(pathOf(key),
+                  cat("unknown value \"", excerpt(name), "\"", hint, "; allowed: ", allowedNames<E>()));
     }
 
     const nlohmann::json& value_;

@@ -16,15 +16,11 @@ inline constexpr std::size_t kMaxLightGrids = 64;
 inline constexpr std::size_t kMaxEmitters = 256;
 inline constexpr std::size_t kMaxClouds = 16;
 inline constexpr std::size_t kMaxClipsPerObject = 256;
+// Vertices of glTF models over all objects: each object holds its own copy on the GPU (32 to 48 bytes a
+// vertex), so this bounds the scene's mesh memory at about 400 MB. Checked when the models are read.
+inline constexpr std::size_t kMaxDrawnVertices = std::size_t(1) << 23;
 // Any string in the file (names, descriptions, paths, field names), in bytes.
 inline constexpr std::size_t kMaxStringBytes = 4096;
 // Objects and arrays inside one another.
 inline constexpr std::size_t kMaxNesting = 32;
-// The most of a bad value a message quotes.
-inline constexpr std::size_t kExcerptBytes = 48;
-
-// `text` as a message quotes it: whole when short, else its first kExcerptBytes bytes (cut at a
-// character boundary) and how long it was.
-std::string excerpt(std::string_view text);
-
 }  // namespace fx::scene_limits

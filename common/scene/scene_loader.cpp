@@ -9,12 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "base/file_io.hpp"
+#include "base/json_document.hpp"
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "base/paths.hpp"
 #include "scene/asset_path.hpp"
 #include "scene/clip_selection.hpp"
 #include "scene/gltf_loader.hpp"
-#include "scene/json_document.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
 
@@ -63,8 +64,7 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
         const std::string& name = scene.objects.back().name;
         // Lessons find objects by name; a repeated name would make that ambiguous.
         if (!name.empty() && !names.insert(name).second)
-            object.warn("name",
-                        cat("another object is already called \"", scene_limits::excerpt(name), "\""));
+            object.warn("name", cat("another object is already called \"", excerpt(name), "\""));
     });
     reader.forEachObject("emitters", scene_limits::kMaxEmitters, [&](JsonFieldReader& emitter) {
         scene.emitters.push_back(parseEmitter(emitter, assets));
@@ -85,6 +85,7 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
 // quietly draws without it.
 void checkModels(const Scene& scene) {
     std::map<fs::path, GltfModel> models;
+    std::size_t vertices = 0;  // over all objects: each draws its own copy
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         if (object.gltf.empty()) continue;
@@ -95,6 +96,14 @@ void checkModels(const Scene& scene) {
             if (!model) failField(fieldPath(where, "gltf"), cat("cannot load the model: ", model.error()));
             cached = models.emplace(object.gltf.resolved, std::move(*model)).first;
         }
+        vertices += cached->second.vertexCount();
+        if (vertices > scene_limits::kMaxDrawnVertices)
+            failField(fieldPath(where, "gltf"),
+                      cat("the models of objects[0] to objects[", i, "] have ", vertices,
+                          " vertices together (this one ", cached->second.vertexCount(),
+                          ", each object its own copy on "
+                          "the GPU); a scene may draw at most ",
+                          scene_limits::kMaxDrawnVertices, " (docs/scene-format.md, Limits)"));
         if (object.animation.clips.empty()) continue;
         auto clip = selectClips(cached->second, object.animation);
         if (!clip)
@@ -124,7 +133,7 @@ AssetRef AssetPathReader::required(JsonFieldReader& object, std::string_view key
         std::error_code ec;
         if (!fs::is_regular_file(asset.resolved, ec))
             object.fail(key, cat("file not found: ", asset.resolved.string(), " (written as \"",
-                                 scene_limits::excerpt(asset.path), "\")"));
+                                 excerpt(asset.path), "\")"));
     }
     return asset;
 }
@@ -136,16 +145,16 @@ Result<Scene> parseScene(std::string_view json, const fs::path& nominalFile,
     if (ec) file = nominalFile;
     const std::string fileName = file.string();
     try {
-        nlohmann::json root = parseJsonDocument(json);
+        nlohmann::json root =
+            parseJsonDocument(json, {"scene", scene_limits::kMaxStringBytes, scene_limits::kMaxNesting});
         Scene scene = parseSections(root, file, options);
         if (options.checkFilesExist && options.loadModels) checkModels(scene);
         for (const auto& warning : scene.warnings) log::warning(fileName, ": ", warning);
         return scene;
     } catch (const JsonSyntaxError& error) {
-        return Error{
-            cat(fileName, ":", error.at.line, ":", error.at.column, ": JSON syntax error: ", error.reason)};
+        return Error{describeJsonError(fileName, error)};
     } catch (const SceneFieldError& error) {
-        return Error{cat(fileName, ": ", error.path, ": ", error.reason)};
+        return Error{describeJsonError(fileName, error)};
     } catch (const std::exception& error) {
         // Nothing above should get here; if it does, the caller still gets a message instead of a crash.
         return Error{cat(fileName, ": cannot read the scene: ", error.what())};

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -28,10 +29,11 @@ Lens parseLens(JsonFieldReader& reader) {
     if (focusMm <= nearestFocusMm) {
         reader.fail(
             "focusDistance",
-            cat(lens.focusDistanceM, " m is not beyond the focal length (", lens.focalLengthMm,
+            cat(formatNumber(lens.focusDistanceM), " m is not beyond the focal length (",
+                formatNumber(lens.focalLengthMm),
                 " mm): the thin-lens formula divides by (focus distance - focal length), which is zero, "
                 "negative or lost to rounding here; focus farther than ",
-                nearestFocusMm / 1000.0, " m"));
+                formatNumber(nearestFocusMm / 1000.0), " m"));
     }
     reader.reportUnknown();
     return lens;
@@ -81,7 +83,8 @@ Camera parseCamera(JsonFieldReader& reader) {
     camera.near = reader.number("near", camera.near, NumberRange::aboveZero(1.0e4));
     camera.far = reader.number("far", camera.far, NumberRange::aboveZero(1.0e7));
     if (camera.far <= camera.near)
-        reader.fail("far", cat(camera.far, " is not greater than near (", camera.near, ")"));
+        reader.fail("far", cat(formatNumber(camera.far), " is not greater than near (",
+                               formatNumber(camera.near), ")"));
     if (camera.far / camera.near > 1.0e5f)
         reader.warn("far", cat("far / near = ", camera.far / camera.near,
                                ": a 24-bit depth buffer will show z-fighting; raise near"));

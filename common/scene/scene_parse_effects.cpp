@@ -1,5 +1,6 @@
 // Reads "emitters", "clouds" and "postEffects".
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -11,7 +12,8 @@ constexpr double kMaxLiveParticles = 100000.0;
 glm::vec4 readParticleColor(JsonFieldReader& reader, std::string_view key, glm::vec4 fallback) {
     glm::vec4 color = reader.vec4(key, fallback, kHdrColorRange);
     if (color.a > 1.0f)
-        failField(indexPath(reader.pathOf(key), 3), cat("alpha ", color.a, " is out of range [0, 1]"));
+        failField(indexPath(reader.pathOf(key), 3),
+                  cat("alpha ", formatNumber(color.a), " is out of range [0, 1]"));
     return color;
 }
 
@@ -95,8 +97,8 @@ ParticleEmitter parseEmitter(JsonFieldReader& reader, const AssetPathReader& ass
         reader.number("lifetime", emitter.lifetimeSeconds, NumberRange::aboveZero(60.0));
     double alive = double(emitter.ratePerSecond) * double(emitter.lifetimeSeconds);
     if (alive > kMaxLiveParticles)
-        reader.fail("rate", cat("rate x lifetime = ", alive, " particles alive at once; at most ",
-                                kMaxLiveParticles));
+        reader.fail("rate", cat("rate x lifetime = ", formatNumber(alive),
+                                " particles alive at once; at most ", kMaxLiveParticles));
     emitter.startSize = reader.number("startSize", emitter.startSize, NumberRange::aboveZero(100.0));
     emitter.endSize = reader.number("endSize", emitter.endSize, NumberRange::closed(0.0, 100.0));
     emitter.startColor = readParticleColor(reader, "startColor", emitter.startColor);
@@ -117,7 +119,7 @@ CloudLayer parseCloudLayer(JsonFieldReader& reader, const AssetPathReader& asset
     cloud.bottom = readSetting(reader, "bottom", "clouds[0].bottom", cloud.bottom);  // every layer's
     cloud.top = readSetting(reader, "top", "clouds[0].top", cloud.top);
     if (cloud.bottom >= cloud.top)
-        reader.fail("bottom", cat(cloud.bottom, " is not below top (", cloud.top,
+        reader.fail("bottom", cat(formatNumber(cloud.bottom), " is not below top (", formatNumber(cloud.top),
                                   "); the slab would have no thickness"));
     cloud.densityTexture = assets.required(reader, "densityTexture");
     if (reader.has("noise")) {

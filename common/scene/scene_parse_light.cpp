@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_parse.hpp"
 
 namespace fx {
@@ -66,9 +67,9 @@ Light parseLight(JsonFieldReader& reader) {
             reader.number("innerCone", std::min(light.innerConeDegrees, light.outerConeDegrees),
                           NumberRange::closed(0.0, 89.0));
         if (light.innerConeDegrees > light.outerConeDegrees)
-            reader.fail("innerCone",
-                        cat(light.innerConeDegrees, " is wider than outerCone (", light.outerConeDegrees,
-                            "); the light would brighten toward the edge"));
+            reader.fail("innerCone", cat(formatNumber(light.innerConeDegrees), " is wider than outerCone (",
+                                         formatNumber(light.outerConeDegrees),
+                                         "); the light would brighten toward the edge"));
     } else {
         reader.unused("innerCone", notForType);
         reader.unused("outerCone", notForType);

@@ -1,5 +1,6 @@
 // Reads one entry of "objects": what it is (primitive or glTF), where, its material and how it moves.
 #include "base/log.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_parse.hpp"
 
@@ -35,8 +36,9 @@ Primitive parsePrimitive(JsonFieldReader& reader) {
     }
     // The capsule's height includes both half-sphere caps, so it can be no shorter than their diameter.
     if (primitive.shape == PrimitiveShape::capsule && primitive.height < 2.0f * primitive.radius)
-        reader.fail("height", cat(primitive.height, " is less than the diameter of the caps (2 x radius = ",
-                                  2.0f * primitive.radius, ")"));
+        reader.fail("height", cat(formatNumber(primitive.height),
+                                  " is less than the diameter of the caps (2 x radius = ",
+                                  formatNumber(2.0f * primitive.radius), ")"));
     reader.reportUnknown();
     return primitive;
 }
@@ -82,8 +84,7 @@ Animation parseAnimation(JsonFieldReader& reader) {
                 failField(indexPath(path, i), "\"*\" (every clip) stands alone: write \"clip\": \"*\"");
             for (const std::string& before : animation.clips)
                 if (before == name)
-                    failField(indexPath(path, i),
-                              cat("\"", scene_limits::excerpt(name), "\" is listed twice"));
+                    failField(indexPath(path, i), cat("\"", excerpt(name), "\" is listed twice"));
             animation.clips.push_back(name);
         }
     } else {

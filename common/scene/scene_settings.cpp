@@ -228,6 +228,15 @@ std::vector<SettingText> sceneSettings(const Scene& scene) {
     return out;
 }
 
+std::vector<SettingText> sceneSettingDefaults() {
+    Scene everything;
+    everything.postEffects = {BloomSettings{}, ColorMatrixSettings{}, RadialBlurSettings{},
+                              DepthOfFieldSettings{}, ToneMapSettings{}};
+    everything.camera.lens = Lens{};
+    everything.clouds.push_back(CloudLayer{});
+    return sceneSettings(everything);
+}
+
 std::vector<std::string> sceneSettingPaths() {
     std::vector<std::string> paths;
     for (const SettingSpec& s : sceneSettingSpecs()) paths.push_back(s.path);

@@ -27,6 +27,8 @@ const SettingSpec& sceneSetting(std::string_view path);
 std::vector<SettingText> sceneSettings(const Scene& scene);
 // Every path sceneSettings can name, whether this scene has the setting or not.
 std::vector<std::string> sceneSettingPaths();
+// Every setting at the value a scene file that leaves the field out gets.
+std::vector<SettingText> sceneSettingDefaults();
 
 // The settings whose path starts with `prefix` ("postEffects.bloom."), in the table's order.
 std::vector<const SettingSpec*> settingsUnder(std::string_view prefix);

@@ -53,7 +53,8 @@ ScatterPlot sweepPlot(const SweepResult& result, const std::string& knob) {
     return plot;
 }
 
-void drawScatterPlot(const ScatterPlot& plot, ImVec2 size) {
+void drawScatterPlot(const ScatterPlot& given, ImVec2 size) {
+    const ScatterPlot plot = groupEqualCosts(given);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImDrawList* draw = ImGui::GetWindowDrawList();
     // The y label is drawn inside the frame, so the layout need not make room for it on the left.
@@ -176,7 +177,7 @@ void CostPanel::runPending(const Measure& measure) {
         if (!running_) return;
     }
     if (!running_) return;
-    // One row per frame: the app keeps drawing, the bar moves, and Esc is read between rows.
+    // One slice per frame: the app keeps drawing, the bar moves, and Esc is read between slices.
     if (!running_->done()) running_->next();
     if (running_->done()) {
         setResult(running_->result());
@@ -211,20 +212,25 @@ void CostPanel::draw(const Measure& measure) {
     } else if (measurePending()) {
         // The sweep under way: a bar, what comes next, and a way out.
         SweepProgress p = progress().value_or(SweepProgress{});
-        float fraction = p.total > 0 ? float(p.done) / float(p.total) : 0.0f;
-        std::string overlayText = cat(p.done, " / ", p.total);
+        const float fraction = float(p.fraction());
+        std::string overlayText = cat(p.done, " / ", p.total, " settings");
         ImGui::ProgressBar(fraction, ImVec2(220, 0), overlayText.c_str());
         ImGui::SameLine();
         if (ImGui::Button("cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape, false)) cancel();
         ImGui::SameLine();
-        ImGui::TextDisabled("measuring %s (Esc cancels)", p.next.c_str());
+        if (p.frames > 0)
+            ImGui::TextDisabled("measuring %s, frame %d of %d (Esc cancels)", p.next.c_str(), p.frame,
+                                p.frames);
+        else
+            ImGui::TextDisabled("measuring %s (Esc cancels)", p.next.c_str());
     } else {
         if (ImGui::Button("measure")) pending_ = true;
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip(
                 "render the lesson at every setting of each quality knob (the others at their\n"
-                "references), one setting per frame, time it against a full-screen copy, and\n"
-                "compare its picture with the reference setting's");
+                "references) at the picture's size, one frame of a setting per frame of the app\n"
+                "(the picture holds still meanwhile), time it against a full-screen copy, and\n"
+                "compare its picture with the reference setting's (F7 starts it too)");
         }
         if (!cancelled_.empty()) {
             ImGui::SameLine();

@@ -1,6 +1,6 @@
 #pragma once
 // The cost of the lesson's quality knobs: "measure" sweeps every knob in the running app (as
-// ./fxlab bench does), one setting per frame with a progress bar (Esc or "cancel" stops it), and the
+// ./fxlab bench does), a slice per frame with a progress bar (Esc or "cancel" stops it), and the
 // panel draws cost in full-screen copies against error for each setting, with each setting's spread,
 // the reference and the setting in use marked and the settings nothing beats joined (the Pareto front).
 #include <functional>
@@ -26,8 +26,9 @@ class CostPanel {
 public:
     using Measure = std::function<std::unique_ptr<SweepRun>()>;
 
-    // The "measure" button asks; runPending, which the overlay calls before it starts each ImGui
-    // frame (a sweep renders frames of its own), starts the sweep and then measures one row per call.
+    // The "measure" button asks; runPending, which the runner calls between its frames instead of
+    // rendering the lesson (a sweep renders frames of its own, and none of the runner's textures may be
+    // held then), starts the sweep and then measures one slice per call.
     void draw(const Measure& measure);
     // True while a sweep is asked for or under way.
     bool measurePending() const { return pending_ || running_ != nullptr; }

@@ -42,33 +42,47 @@ bool drawParamWidget(const Param& p) {
     return false;
 }
 
+void drawParam(ParamSet& params, const Param& p) {
+    ImGui::PushID(p.name.c_str());
+    if (drawParamWidget(p)) params.markEdited(p);
+    bool hovered = ImGui::IsItemHovered();
+    // Where the value came from, beside it: a teacher sees at once what the scene set.
+    ParamSource source = p.source();
+    ImGui::SameLine();
+    std::string tag = cat("[", toString(source), "]");
+    if (source == ParamSource::lessonDefault) {
+        ImGui::TextDisabled("%s", tag.c_str());
+    } else {
+        ImGui::TextColored(ui_style::kHeading, "%s", tag.c_str());
+    }
+    hovered = hovered || ImGui::IsItemHovered();
+    if (hovered) {
+        std::string from = cat("from: ", toString(source));
+        if (source == ParamSource::scene) from += cat(" (", p.sceneSetting, ")");
+        if (!p.sceneSetting.empty() && source != ParamSource::scene)
+            from += cat("; the scene setting ", p.sceneSetting, " starts it when the scene has one");
+        ImGui::SetTooltip("%s\n(%s%s)\n%s", p.description.c_str(), p.rangeText().c_str(),
+                          p.knob ? "; a quality knob" : "", from.c_str());
+    }
+    ImGui::PopID();
+}
+
 }  // namespace
 
 void drawParams(ParamSet& params, int step) {
-    for (const Param* each : params.forStep(step)) {
-        const Param& p = *each;
-        ImGui::PushID(p.name.c_str());
-        if (drawParamWidget(p)) params.markEdited(p);
-        bool hovered = ImGui::IsItemHovered();
-        // Where the value came from, beside it: a teacher sees at once what the scene set.
-        ParamSource source = p.source();
-        ImGui::SameLine();
-        std::string tag = cat("[", toString(source), "]");
-        if (source == ParamSource::lessonDefault) {
-            ImGui::TextDisabled("%s", tag.c_str());
-        } else {
-            ImGui::TextColored(ui_style::kHeading, "%s", tag.c_str());
-        }
-        hovered = hovered || ImGui::IsItemHovered();
-        if (hovered) {
-            std::string from = cat("from: ", toString(source));
-            if (source == ParamSource::scene) from += cat(" (", p.sceneSetting, ")");
-            if (!p.sceneSetting.empty() && source != ParamSource::scene)
-                from += cat("; the scene setting ", p.sceneSetting, " starts it when the scene has one");
-            ImGui::SetTooltip("%s\n(%s%s)\n%s", p.description.c_str(), p.rangeText().c_str(),
-                              p.knob ? "; a quality knob" : "", from.c_str());
-        }
-        ImGui::PopID();
+    // The step's own parameters first; those that act only in other steps folded underneath, so a
+    // step's panel shows what changes its picture and the rest stays one click away.
+    std::vector<const Param*> others;
+    for (const Param& p : params.all()) {
+        if (p.actsIn(step))
+            drawParam(params, p);
+        else
+            others.push_back(&p);
+    }
+    if (others.empty()) return;
+    if (ImGui::TreeNode("other steps", "other steps (%d)", int(others.size()))) {
+        for (const Param* p : others) drawParam(params, *p);
+        ImGui::TreePop();
     }
 }
 
@@ -109,8 +123,14 @@ void drawLessonWindowContents(const OverlayModel& m) {
                 if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
             }
         }
-        // While the clock stands still or the picture compares, the lesson window says so (wrapped).
-        for (const std::string* line : {&m.clock, &m.compare}) {
+        // What the teacher just did, confirmed where the eye is; then while the clock stands still, the
+        // picture compares or gives way to a slow renderer, the lesson window says so (wrapped).
+        if (!m.notice.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kNotice);
+            ImGui::TextWrapped("%s", m.notice.c_str());
+            ImGui::PopStyleColor();
+        }
+        for (const std::string* line : {&m.clock, &m.compare, &m.pictureScale}) {
             if (line->empty()) continue;
             ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
             ImGui::TextWrapped("%s", line->c_str());
@@ -138,7 +158,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         for (auto& e : m.shaderErrors) ImGui::TextWrapped("%s", e.c_str());
     }
     const int step = m.step ? *m.step : 0;
-    if (m.params && !m.params->forStep(step).empty() &&
+    if (m.params && !m.params->all().empty() &&
         ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
         drawParams(*m.params, step);
         if (ImGui::Button("Reset")) m.params->resetAll();
@@ -157,6 +177,11 @@ void drawLessonWindowContents(const OverlayModel& m) {
     ImGui::Separator();
     ImGui::TextDisabled("%s", m.renderer.c_str());
     if (m.frame) ImGui::TextDisabled("frame %.2f ms, timing: %s", m.frameMs, m.timing.c_str());
+    if (!m.clockRate.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s", m.clockRate.c_str());
+        ImGui::PopTextWrapPos();
+    }
     if (m.glErrors > 0)
         ImGui::TextColored(ui_style::kError, "GL errors: %lld", static_cast<long long>(m.glErrors));
     if (m.glExpectedErrors > 0) {

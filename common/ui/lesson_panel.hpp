@@ -5,7 +5,8 @@
 
 namespace fx {
 
-// The parameters that act in `step` (0-based), each with its widget and where its value came from.
+// The parameters that act in `step` (0-based), each with its widget and where its value came from;
+// then, folded under "other steps", those that act only in other steps.
 void drawParams(ParamSet& params, int step);
 void drawLessonWindowContents(const OverlayModel& model);
 

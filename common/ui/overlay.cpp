@@ -58,6 +58,7 @@ void drawKeys(const OverlayModel& m) {
 }  // namespace
 
 Overlay::Overlay(GLFWwindow* window) : window_(window), started_(startImGui(window)) {
+    if (window_ && started_.platform) keys_ = std::make_unique<KeyLatch>(window_);
     if (started_.renderer) {
         inspector_ = std::make_unique<Inspector>();
         baseStyle_ = ImGui::GetStyle();
@@ -66,11 +67,18 @@ Overlay::Overlay(GLFWwindow* window) : window_(window), started_(startImGui(wind
 
 Overlay::~Overlay() {
     inspector_.reset();  // its GL objects go while the context is current
+    keys_.reset();       // the backend's key callback back before the backend puts the app's back
     stopImGui(started_);
 }
 
 bool Overlay::wantsKeyboard() const {
     return ImGui::GetIO().WantCaptureKeyboard;
+}
+bool Overlay::wantsTextInput() const {
+    // As things stand after the last frame's widgets: io.WantTextInput is set at the start of a frame and
+    // still says "typing" for the frame after Enter closed the field. (An item held with the mouse
+    // counts too: keys pressed while dragging a slider are not the app's either.)
+    return ImGui::IsAnyItemActive();
 }
 bool Overlay::wantsMouse() const {
     return ImGui::GetIO().WantCaptureMouse;
@@ -168,12 +176,6 @@ void Overlay::drawFrameWindow(const OverlayModel& m, const PanelLayout& layout) 
 
 void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSeconds) {
     if (!ok() || width <= 0 || height <= 0) return;
-    // A sweep renders frames of its own: it runs before this frame's ImGui frame starts, with the
-    // runner's framebuffer and viewport put back afterwards.
-    if (cost_.measurePending()) {
-        GlStateScope keep;
-        cost_.runPending(m.measureKnobs);
-    }
     if (m.textRevision != fontsForRevision_ || textScale_ != appliedScale_) prepareFonts(m);
     if (textScale_ != appliedScale_) applyTextScale();
     ImGuiIO& io = ImGui::GetIO();
@@ -192,6 +194,7 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
     }
     if (window_) {
         ImGui_ImplGlfw_NewFrame();
+        if (keys_) keys_->beforeNewFrame();
     } else {
         io.DisplaySize = ImVec2(float(width), float(height));
         io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;

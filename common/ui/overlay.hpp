@@ -18,6 +18,7 @@
 #include "ui/cost_panel.hpp"
 #include "ui/imgui_backend.hpp"
 #include "ui/inspector.hpp"
+#include "ui/key_latch.hpp"
 #include "ui/overlay_fonts.hpp"
 #include "ui/overlay_model.hpp"
 #include "ui/panel_layout.hpp"
@@ -38,6 +39,8 @@ public:
     // Draws into the framebuffer bound now, at width x height. GL state is left as it was found.
     void draw(const OverlayModel& model, int width, int height, double deltaSeconds);
     bool wantsKeyboard() const;
+    // A text field is being edited (or a widget held): the keys it uses are its own (FrameLoop::takeKeys).
+    bool wantsTextInput() const;
     // Names of the textures the overlay wants to show next frame; the runner marks them inspected,
     // which keeps them (and the passes that make them) alive.
     std::vector<std::string> wantedTextures() const;
@@ -69,6 +72,7 @@ private:
 
     GLFWwindow* window_;
     ImGuiBackends started_;
+    std::unique_ptr<KeyLatch> keys_;  // in a window: no key press is lost between two frames
     std::unique_ptr<Inspector> inspector_;
     CostPanel cost_;
     OverlayFonts fonts_;

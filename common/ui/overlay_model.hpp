@@ -40,6 +40,14 @@ struct OverlayModel {
     std::int64_t glExpectedErrors = 0;
     std::vector<std::string> shaderErrors;  // shown until fixed (the last good program keeps running)
     std::string status;                     // one line: "saved out/screenshot-3.png", "reloaded shaders"
+    // The last thing the teacher did, confirmed at the top of the lesson window for a few seconds
+    // (F12's file, "this is the last lesson", a shader reload and its errors); empty when none is new.
+    std::string notice;
+    // While the picture renders smaller than its place: how and why ("picture at 40% of 896x504 ...:
+    // slow renderer"), at the top of the lesson window.
+    std::string pictureScale;
+    // While the lesson clock runs slower than the wall clock (a slow renderer): by how much, in the footer.
+    std::string clockRate;
     std::function<void()> lessonPanel;
     std::function<void()> onSavePreset, onLoadPreset;
     // The camera's planes, for showing depth textures linearised.

@@ -42,4 +42,16 @@ PanelLayout computePanelLayout(int width, int height, const LayoutShares& given,
     return l;
 }
 
+LayoutRect keepAspect(const LayoutRect& place, double aspect) {
+    if (!(aspect > 0) || !std::isfinite(aspect) || place.width < 1 || place.height < 1) return place;
+    // Round to the nearest whole pixel, at least one: a 1x1 place still gets a 1x1 picture.
+    float width = place.width, height = std::max(1.0f, std::round(place.width / float(aspect)));
+    if (height > place.height) {
+        height = place.height;
+        width = std::clamp(std::round(place.height * float(aspect)), 1.0f, place.width);
+    }
+    return {place.x + std::floor((place.width - width) * 0.5f),
+            place.y + std::floor((place.height - height) * 0.5f), width, height};
+}
+
 }  // namespace fx

@@ -44,4 +44,9 @@ struct PanelLayout {
 PanelLayout computePanelLayout(int width, int height, const LayoutShares& shares, bool inspectorOpen,
                                float titleHeight, float minColumn);
 
+// The largest rectangle of `aspect` (width / height) inside `place`, centred, in whole pixels: the
+// picture keeps the aspect its lesson's text assumes at any window size, with a dark ground in the
+// bars beside or above it. An aspect of 0 (or not finite) keeps the place as it is.
+LayoutRect keepAspect(const LayoutRect& place, double aspect);
+
 }  // namespace fx

@@ -1,11 +1,13 @@
 #include "ui/pass_table.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <imgui.h>
 
 #include "base/log.hpp"
 #include "ui/ui_style.hpp"
+#include "ui/word_wrap.hpp"
 
 namespace fx {
 
@@ -46,24 +48,41 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             "(textures the overlay keeps alive to show them count too)",
             ui_style::byteSizeText(frame.pool.inUseBytes, inUse, sizeof inUse));
     }
+    const PassTraffic traffic = frame.modelledTraffic();
+    ImGui::TextWrapped("modelled memory traffic (MB/taps): %s a frame at 1920x1080, %.1f taps a pixel",
+                       megabytesText(traffic.total()).c_str(), frame.tapsPerOutputPixel());
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "what a GPU would move through memory (render/pass_traffic.hpp): every texture a pass\n"
+            "samples read once, every texture it writes written once, at 1920x1080 whatever the\n"
+            "window's size; taps: texture lookups per pixel written, over the whole output");
+    }
     for (const std::string& e : frame.errors)
         ImGui::TextColored(ui_style::kError, "graph error: %s", e.c_str());
-    const int columns = oneMethod ? 7 : 8;
+    const int columns = oneMethod ? 8 : 9;
 
+    // The frame window is a narrow column: every column keeps a width its header and its words fit
+    // in, the pass (and its number) stay in place, and the columns to the right scroll sideways, so no
+    // name is squeezed to a letter a line and no header is cut. Widths follow the text size.
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_Resizable | ImGuiTableFlags_ScrollY |
-                                  ImGuiTableFlags_SizingStretchProp;
+                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("passes", columns, flags)) return;
-    ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 18.0f);
-    ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-    ImGui::TableSetupColumn(copyMs > 0.0 ? "ms (copies)" : "ms", ImGuiTableColumnFlags_WidthFixed,
-                            copyMs > 0.0 ? 104.0f : 52.0f);
-    ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthFixed, 64.0f);
-    if (!oneMethod) ImGui::TableSetupColumn("timed by", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("ran / why not", ImGuiTableColumnFlags_WidthStretch, 1.8f);
-    ImGui::TableSetupColumn("state inherited / left", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-    ImGui::TableSetupColumn("wrote", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+    ImGui::TableSetupScrollFreeze(2, 1);
+    const float em = ImGui::GetFontSize();
+    auto column = [em](const char* header, float ems) {
+        const float headerWidth = ImGui::CalcTextSize(header).x;
+        ImGui::TableSetupColumn(header, ImGuiTableColumnFlags_WidthFixed, std::max(ems * em, headerWidth));
+    };
+    column("#", 1.5f);
+    column("pass", 10.5f);
+    column(copyMs > 0.0 ? "ms (copies)" : "ms", copyMs > 0.0 ? 8.0f : 4.0f);
+    column("share", 4.5f);
+    column("MB/taps", 5.0f);  // the cost model (a tooltip on each cell says what each number is)
+    if (!oneMethod) column("timed by", 8.0f);
+    column("ran / why not", 13.0f);
+    column("state inherited / left", 13.0f);
+    column("wrote", 11.0f);
     ImGui::TableHeadersRow();
     int order = 0;
     for (const PassRecord& p : frame.passes) {
@@ -77,9 +96,7 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             ImGui::TextUnformatted("-");
         }
         ImGui::TableNextColumn();
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(p.name.c_str());
-        ImGui::PopTextWrapPos();
+        drawWrappedName(p.name);
         ImGui::TableNextColumn();
         if (p.timeMs && copyMs > 0.0) {
             ImGui::Text("%.3f (%.2f)", *p.timeMs, *p.timeMs / copyMs);
@@ -95,6 +112,13 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             ImGui::ProgressBar(share, ImVec2(-1.0f, ImGui::GetTextLineHeight()), text);
             ImGui::PopStyleColor();
         }
+        // The cost model: megabytes read + written at 1920x1080, then the declared taps.
+        ImGui::TableNextColumn();
+        if (p.status == PassStatus::Runs)
+            ImGui::Text("%.1f/%s", double(p.traffic.total()) / 1e6, p.taps ? cat(*p.taps).c_str() : "-");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "modelled memory traffic at 1920x1080 (MB) / texture lookups per pixel written");
         if (!oneMethod) {
             ImGui::TableNextColumn();
             ImGui::PushTextWrapPos(0.0f);
@@ -124,9 +148,8 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             ImGui::PopStyleColor();
         }
         ImGui::TableNextColumn();
-        for (const TextureUseRecord& w : p.writes) {
-            ImGui::TextUnformatted(w.alsoRead ? cat(w.texture, " (+=)").c_str() : w.texture.c_str());
-        }
+        for (const TextureUseRecord& w : p.writes)
+            drawWrappedName(w.alsoRead ? cat(w.texture, " (+=)") : w.texture);
         if (!p.executed) ImGui::PopStyleColor();
         ImGui::PopID();
     }

@@ -79,9 +79,11 @@ void PictureView::present(GLuint window, int windowHeight, const LayoutRect& pla
     const int y = windowHeight - int(place.bottom());
     const bool comparing = mode != CompareMode::Off && previous_ && program_;
     if (!comparing) {
-        // The exact pixels the lesson drew: the picture is as large as its place.
+        // The exact pixels the lesson drew when the picture is as large as its place; scaled up smoothly
+        // when the frame budget rendered it smaller (app/picture_scale.hpp).
+        const bool exact = size_.width == width && size_.height == height;
         glBlitNamedFramebuffer(target_.framebuffer.name(), window, 0, 0, size_.width, size_.height, x, y,
-                               x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                               x + width, y + height, GL_COLOR_BUFFER_BIT, exact ? GL_NEAREST : GL_LINEAR);
         return;
     }
     const GLuint p = program_.name();

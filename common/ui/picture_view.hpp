@@ -1,8 +1,9 @@
 #pragma once
-// The lesson's picture in a window: the lesson renders into a target of the picture's own size, which
-// is then drawn into its place in the window (ui/panel_layout.hpp), beside the overlay's panels and
-// never under them. The same place shows the compare view: the previous step's picture, kept when the
-// step changes, against this one, split or as an amplified difference (shaders/ui/compare.frag).
+// The lesson's picture in a window: the lesson renders into a target of the picture's own size (or a
+// share of it, the frame budget's scale), which is then drawn into its place in the window
+// (ui/panel_layout.hpp), beside the overlay's panels and never under them. The same place shows the compare
+// view: the previous step's picture, kept when the step changes, against this one, split or as an amplified
+// difference (shaders/ui/compare.frag).
 #include <optional>
 
 #include "base/size2d.hpp"

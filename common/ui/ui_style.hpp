@@ -9,6 +9,7 @@ inline const ImVec4 kMuted{0.55f, 0.55f, 0.55f, 1.0f};  // culled passes, textur
 inline const ImVec4 kHeading{1.0f, 0.85f, 0.4f, 1.0f};  // step titles, selected names
 inline const ImVec4 kError{1.0f, 0.35f, 0.35f, 1.0f};
 inline const ImVec4 kWarning{1.0f, 0.7f, 0.3f, 1.0f};
+inline const ImVec4 kNotice{0.45f, 0.9f, 1.0f, 1.0f};    // a key's confirmation (F12's file, a reload)
 inline const ImVec4 kNan{1.0f, 0.0f, 1.0f, 1.0f};        // magenta
 inline const ImVec4 kInf{1.0f, 0.78f, 0.0f, 1.0f};       // amber
 inline const ImVec4 kNegative{0.0f, 0.67f, 1.0f, 1.0f};  // azure

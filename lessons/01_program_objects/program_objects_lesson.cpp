@@ -286,14 +286,14 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
                   .joinGroup(groupedPass_);
     grouped[0] = a.create("skinning.grouped.color", colorDesc, TextureUsage::ColorAttachment);
     grouped[1] = a.create("skinning.grouped.depth", depthDesc, TextureUsage::DepthAttachment);
-    a.setState(sceneState);
+    a.setState(sceneState).setTaps(0);  // this lesson's shaders sample no texture
     auto& b = graph
                   .addPass("skinning T*(J*p)",
                            [this, drawSphere](PassContext&) { drawSphere(skinParenthesised_.name()); })
                   .joinGroup(parenthesisedPass_);
     parenthesised[0] = b.create("skinning.parenthesised.color", colorDesc, TextureUsage::ColorAttachment);
     parenthesised[1] = b.create("skinning.parenthesised.depth", depthDesc, TextureUsage::DepthAttachment);
-    b.setState(sceneState);
+    b.setState(sceneState).setTaps(0);
     // Both products run every frame so their times stand side by side; the knob picks which is shown.
     // A bench frame keeps only the shown one: the graph culls the other.
     if (!frame.benchmark) {
@@ -306,7 +306,8 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         ->addPass(graph, "present",
                   [present, shown](PassContext& ctx) { present->draw({ctx.native(shown)}); })
         .read(shown)
-        .writeColor(graph.output());
+        .writeColor(graph.output())
+        .setTaps(1);
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -348,7 +349,8 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
                 }
             })
         .writeColor(graph.output())
-        .setState(sceneState);
+        .setState(sceneState)
+        .setTaps(0);
 }
 
 void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {

@@ -1,6 +1,7 @@
 #include "raw_programs.hpp"
 
 #include "base/paths.hpp"
+#include "gl/shader_dump.hpp"
 #include "gl/shader_source.hpp"
 
 namespace lesson01 {
@@ -17,10 +18,12 @@ fx::gl::ProgramName buildProgramWithoutChecks(const std::filesystem::path& verte
     GLuint vs = glCreateShader(GL_VERTEX_SHADER);
     glShaderSource(vs, 1, &vsSource, nullptr);
     glCompileShader(vs);
+    if (vsText) fx::gl::dumpShaderStage(label, GL_VERTEX_SHADER, vs, *vsText);  // --dump-shaders, not a check
     fx::gl::labelObject(GL_SHADER, vs, label + ".vert");
     GLuint fs = glCreateShader(GL_FRAGMENT_SHADER);
     glShaderSource(fs, 1, &fsSource, nullptr);
     glCompileShader(fs);
+    if (fsText) fx::gl::dumpShaderStage(label, GL_FRAGMENT_SHADER, fs, *fsText);
     fx::gl::labelObject(GL_SHADER, fs, label + ".frag");
     GLuint program = glCreateProgram();
     fx::gl::labelObject(GL_PROGRAM, program, label + " (unchecked)");

@@ -89,14 +89,21 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
     Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
                                     "Step 3: the skinning product of the shadow map the scene uses");
     order.knob = Knob{{0, 1}, 1, "order"};
-    params.addInt("crowd", &crowd_, 1, 400,
-                  "Step 3: characters in the crowd (a grid; the first is the scene's)");
-    params.addChoice("material_upload", &materialUpload_, {"always", "ask_program"},
-                     "Step 4: upload material uniforms to the skinned shadow program always (the chapter's "
-                     "GL error flood) or only if the program has them (the fix)");
-    params.addChoice("cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
-                     "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: "
-                     "the skinned lattice mannequin casts a solid shadow) or on every shadow program");
+    order.inSteps({ProductOrder});
+    params
+        .addInt("crowd", &crowd_, 1, 400,
+                "Step 3: characters in the crowd (a grid; the first is the scene's)")
+        .inSteps({ProductOrder});
+    params
+        .addChoice("material_upload", &materialUpload_, {"always", "ask_program"},
+                   "Step 4: upload material uniforms to the skinned shadow program always (the chapter's "
+                   "GL error flood) or only if the program has them (the fix)")
+        .inSteps({ErrorFlood});
+    params
+        .addChoice("cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
+                   "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: "
+                   "the skinned lattice mannequin casts a solid shadow) or on every shadow program")
+        .inSteps({CutoutShadows});
 }
 
 Status SkinnedShadowsLesson::init(const Scene& scene) {

@@ -114,7 +114,7 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (frame.step == StraightToWindow) {
         // The chapter's old order: the draw state is set before the shadow map is created.
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene()));
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene())).setTaps(0);
         DeclaredShadowMap shadow = shadows_->declare(graph, frame.world, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
@@ -124,7 +124,7 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene()));
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene())).setTaps(0);
         declareStraightToWindow(graph, frame, shadow);
     } else if (frame.step == EachPassSetsItsState) {
         declareStraightToWindow(graph, frame, shadow);
@@ -163,7 +163,8 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
             ->addPass(graph, "to the window",
                       [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
             .read(color)
-            .writeColor(graph.output());
+            .writeColor(graph.output())
+            .setTaps(1);
     } else {
         HdrSceneTargets linear =
             litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");

@@ -51,6 +51,7 @@ Pass& LitScenePass::addPass(FrameGraph& graph, const World& world, const Declare
         world.draw(name);
     });
     if (hasMap) pass.read(map);
+    pass.setTaps(2 + (hasMap ? shadowLookupTaps(lookup) : 0));  // base colour, emissive, the PCF taps
     if (options.declaresState) {
         PassState state = sceneDrawState(world.scene());
         if (options.viewport) state.viewport = *options.viewport;

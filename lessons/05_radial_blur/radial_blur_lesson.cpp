@@ -87,10 +87,12 @@ void RadialBlurLesson::declareParams(ParamSet& params) {
     params.addSetting("centre_x", &centreX_, sceneSetting("postEffects.radialBlur.center[0]"), "Drag it");
     params.addSetting("centre_y", &centreY_, sceneSetting("postEffects.radialBlur.center[1]"), "Drag it");
     params.addSetting("length", &length_, sceneSetting("postEffects.radialBlur.length"));
-    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"), "Steps 2 to 4");
+    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"), "Steps 2 to 4")
+        .inSteps({ChapterStart, Guarded, SampleCount});
     Param& samples = params.addSetting("samples", &samples_, sceneSetting("postEffects.radialBlur.taps"),
                                        "Step 4, spread over the chapter's 8-tap streak");
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
+    samples.inSteps({SampleCount});
 }
 
 RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {

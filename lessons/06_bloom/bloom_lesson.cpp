@@ -146,40 +146,59 @@ std::vector<std::string> BloomLesson::steps() const {
 }
 
 void BloomLesson::declareParams(ParamSet& params) {
-    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5");
-    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5");
-    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
-                      "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
-                      "part, for any level count");
-    params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
-                    "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)");
+    // The steps with a bloom chain (steps 1 and 2 compare the scene's formats before there is one).
+    const std::vector<int> chainSteps = {Chapter000, Chapter001, Beyond, WholeFrameStep};
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5")
+        .inSteps(chainSteps);
+    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
+    params
+        .addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+                    "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
+                    "part, for any level count")
+        .inSteps({Chapter000, Beyond, WholeFrameStep});
+    params
+        .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
+                  "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)")
+        .inSteps({Chapter001});
     Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
                                       "Steps 3 to 5 (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
-    params.addFloat(
-        "down_offset", &downOffset_, 0.0f, 2.0f,
-        "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)");
-    params.addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
-                    "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)");
+    levels.inSteps(chainSteps);
+    params
+        .addFloat(
+            "down_offset", &downOffset_, 0.0f, 2.0f,
+            "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)")
+        .inSteps({Chapter001, Beyond});
+    params
+        .addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
+                  "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)")
+        .inSteps({Chapter001, Beyond});
     Param& format =
         params.addChoice("format", &format_, chainFormatNames(),
                          "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
     // The other sweeps hold the format at the one step 5 uses (RGBA16F): the error of every row is
     // measured against the Gaussian reference, not against another format.
     format.knob = Knob{{0, 1, 2, 3}, 0, "format"};
-    params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)");
+    format.inSteps(chainSteps);
+    params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)")
+        .inSteps({Beyond});
     Param& finish = params.addChoice(
         "finish", &finish_, std::vector<std::string>(std::begin(kFinishNames), std::end(kFinishNames)),
         "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at "
         "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
         "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
-    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5");
-    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"), "Step 5");
-    params.addBool(
-        "reference", &reference_,
-        "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
-        "(slow)");
+    finish.inSteps({Beyond});
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5")
+        .inSteps({Beyond});
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"), "Step 5")
+        .inSteps({Beyond});
+    params
+        .addBool(
+            "reference", &reference_,
+            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
+            "(slow)")
+        .inSteps({Beyond});
     std::vector<std::string> orders;
     for (const EffectOrder& o : effectOrders()) orders.push_back(o.name);
     params

@@ -56,15 +56,19 @@ void FireLesson::declareParams(ParamSet& params) {
     workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
     params.addFloat("spin", &spin_, -720.0f, 720.0f,
                     "Degrees per second the fire's sprites turn (the chapter's exercise: 120)");
-    params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)");
-    params.addBool("sort", &sort_, "Steps 2 and 3: draw back to front (the fix for the spawn order)");
+    params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)")
+        .inSteps({Hitch});
+    params.addBool("sort", &sort_, "Steps 2 and 3: draw back to front (the fix for the spawn order)")
+        .inSteps({Hitch, Instanced});
     Param& soft =
         params.addFloat("soft_distance", &soft_, 0.01f, 4.0f,
                         "Step 5: the particles fade out over this distance in front of the scene (m)");
     soft.knob = Knob{{0.05, 0.1, 0.3, 1.0}, 0.3, "soft-fade distance (m)"};
+    soft.inSteps({Beyond});
     Param& offscreen = params.addChoice("offscreen", &offscreen_, {"full", "half", "quarter"},
                                         "Step 5: the resolution of the off-screen particle target");
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
+    offscreen.inSteps({Beyond});
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
     params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
     params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
@@ -72,6 +76,7 @@ void FireLesson::declareParams(ParamSet& params) {
 }
 
 Status FireLesson::init(const Scene& scene) {
+    device_ = gl::queryDeviceLimits();  // the particle pool is fitted to it
     // One sprite for every emitter that has one (one texture, one draw); a sprite that cannot be read
     // stops the run with its path.
     const ParticleEmitter* first = nullptr;
@@ -119,7 +124,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         Pass& sim = graph.addPass("particles.simulate", [this, cam](PassContext&) {
             simulate(std::exchange(pendingDt_, 0.0), cam);
         });
-        sim.keepAlive();
+        sim.keepAlive().setTaps(0);  // the simulation: buffers only
 
         // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the
         // graph runs this pass only when someone inspects or captures it.
@@ -130,6 +135,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         poolTexture_ =
             poolView.create("particles.pool", {TextureSize::absolute(256, rows), TextureFormat::RGBA32F, 1},
                             TextureUsage::Storage);
+        poolView.setTaps(0);  // one texel per slot, from the pool's buffer
 
         if (!wanted.premultiplied) {
             // Steps 1 to 4: straight into scene.color, tested against scene.depth with depth writes off
@@ -151,7 +157,8 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                            .blend = true,
                            .blendFunction = BlendFunction::alpha(),
                            .faceCulling = false,
-                           .colorMask = ColorMask{}});
+                           .colorMask = ColorMask{}})
+                .setTaps(1);  // the sprite
             if (particles && !inView) drawPass.notCalledFor(notInView);
         } else {
             // Step 5: premultiplied particles into their own target (a fraction of the output), faded
@@ -188,6 +195,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                           .faceCulling = false,
                                           .colorMask = ColorMask{},
                                           .clearColor = ClearColor{0, 0, 0, 0}});
+            off.setTaps(2);  // the sprite and the scene's depth (the soft fade)
             if (particles && !inView) off.notCalledFor(notInView);
             const FullscreenPass* composite = &*composite_;
             Pass& over =
@@ -198,7 +206,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             PassState state = FullscreenPass::state();
             state.blend = true;
             state.blendFunction = BlendFunction::premultipliedAlpha();
-            over.read(color).modify(hdr.color, TextureUsage::ColorAttachment).setState(state);
+            over.read(color).modify(hdr.color, TextureUsage::ColorAttachment).setState(state).setTaps(1);
         }
     }
 
@@ -260,10 +268,12 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     }
     out.add("live", std::to_string(live), "particles alive");
     out.add("capacity", std::to_string(system_.capacity()), "pool slots");
+    out.add("particleBudget", budget_.summary(), "pool slots against the device and the budget");
     out.add("replaced", std::to_string(replaced), "pool full: oldest particles replaced");
     out.add("dropped", std::to_string(system_.droppedCount()), "pool full: new particles dropped");
-    out.add("simulateCpuMs", cat(simulateMs_), "simulation on the CPU (ms)");
-    out.add("drawCpuMs", cat(drawCpuMs_), "issuing the draws on the CPU (ms)");
+    // CPU time inside the calls: on a software renderer that holds the driver's own work too.
+    out.add("simulateCpuMs", cat(simulateMs_), "simulating: CPU time in this frame's simulation calls (ms)");
+    out.add("drawCpuMs", cat(drawCpuMs_), "drawing: CPU time inside the draw calls (ms)");
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
     std::uint64_t bytes = setup_.path == Path::gpu ? (gpu_ ? gpu_->bytes() : 0) : renderer_->instanceBytes();
     out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");

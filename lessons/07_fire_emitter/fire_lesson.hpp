@@ -15,6 +15,7 @@
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/particles/gpu_particles.hpp"
+#include "effects/particles/particle_budget.hpp"
 #include "effects/particles/particle_renderer.hpp"
 #include "effects/particles/particle_system.hpp"
 #include "effects/post/fullscreen_pass.hpp"
@@ -57,7 +58,7 @@ public:
         bool operator==(const Setup&) const = default;
     };
     Setup setupFor(const fx::FrameInfo& frame) const;
-    // The 0.5 s long frame of step 2 lands on this frame (the third of a run, then every 120th).
+    // The 0.5 s long frame of step 2 lands on this frame (the lesson clock's third step, then every 120th).
     bool hitchOn(const fx::FrameInfo& frame) const;
 
 private:
@@ -94,6 +95,9 @@ private:
     // The simulation, rebuilt when the step's setup changes.
     Setup setup_;
     bool configured_ = false;
+    fx::gl::DeviceLimits device_;
+    std::vector<fx::EmitterSetup> fitted_;  // setup_'s emitters fitted to the particle budget
+    fx::ParticleBudget budget_;
     fx::ParticleSystem system_;
     std::optional<fx::GpuParticles> gpu_;   // the GPU path's pool, made when that path is configured
     double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm

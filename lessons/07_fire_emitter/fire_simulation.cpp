@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "fire_lesson.hpp"
 
@@ -76,14 +77,20 @@ FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
 }
 
 bool FireLesson::hitchOn(const FrameInfo& frame) const {
-    return frame.step == Hitch && hitch_ > 0.0f && frame.index % 120 == 2;
+    // Counted on the lesson clock: a paused clock adds no hitch, and a window at any frame rate has its
+    // hitches on the same frames as a headless run (the third step, then every 120th).
+    return frame.step == Hitch && hitch_ > 0.0f && frame.deltaSeconds > 0 && frame.clockSteps % 120 == 3;
 }
 
 void FireLesson::configure(const Setup& setup) {
     setup_ = setup;
     configured_ = true;
+    // The scene and the parameters together may ask for more than the device holds: fitted first.
+    fitted_ = setup.emitters;
+    budget_ = fitParticleBudget(fitted_, device_);
+    if (budget_.clamped()) log::warning("lesson 07: ", budget_.warning());
     const bool gpu = setup.path == Path::gpu;
-    system_ = ParticleSystem(setup.emitters, !gpu);
+    system_ = ParticleSystem(fitted_, !gpu);
     if (gpu)
         gpu_.emplace(system_);
     else
@@ -93,7 +100,7 @@ void FireLesson::configure(const Setup& setup) {
 
 void FireLesson::restart() {
     const bool gpu = setup_.path == Path::gpu;
-    system_ = ParticleSystem(setup_.emitters, !gpu);
+    system_ = ParticleSystem(fitted_, !gpu);
     if (gpu_) gpu_->clear();
     // Start from a steady flame. The fixed rules catch up in one step (every spawn owed, born at its
     // time); the chapter's timer needs frame by frame.

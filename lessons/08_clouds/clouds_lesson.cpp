@@ -153,24 +153,31 @@ void CloudsLesson::declareParams(ParamSet& params) {
     params.addSetting("top", &top_, sceneSetting("clouds[0].top"));
     params.addSetting("scale0", &scale0_, sceneSetting("clouds[0].noise[0].scale"));
     params.addSetting("scale1", &scale1_, sceneSetting("clouds[0].noise[1].scale"));
-    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"), "Steps 8 and 9");
+    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"), "Steps 8 and 9")
+        .inSteps({ThresholdHeight, Beyond});
     // A float on purpose: the overlay can ask for 8.5 samples (rounded down; hard case 10).
     Param& steps = params.addSetting("steps", &steps_, sceneSetting("clouds[0].steps"), "Steps 5 to 9");
     steps.knob = Knob{{2, 4, 8, 16, 32, 64, 128}, double(kCloudMaxSteps), "samples"};
-    params.addBool("reject_behind", &rejectBehind_,
-                   "Step 2 on: hits behind the eye are rejected (off: the mirrored layer in the sky)");
+    steps.inSteps({March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
+    params
+        .addBool("reject_behind", &rejectBehind_,
+                 "Step 2 on: hits behind the eye are rejected (off: the mirrored layer in the sky)")
+        .inSteps({Plane});
     params.addFloat("camera_lift", &cameraLift_, -20.0f, 20.0f,
                     "Moves the camera up or down (m): put the eye inside the slab to compare steps 5 and 6");
     Param& dither =
         params.addChoice("dither", &dither_, {"none", "bayer", "ign", "r2"},
                          "Step 9: ray-start jitter (Bayer 4x4 is fixed; IGN and R2 move every frame)");
     dither.knob = Knob{{0, 1, 2, 3}, 0, "dither"};
+    dither.inSteps({Beyond});
     Param& accumulate = params.addChoice("accumulate", &accumulate_, {"off", "on"},
                                          "Step 9: average the clouds over frames, reprojected (up to 16)");
     accumulate.knob = Knob{{0, 1}, 0, "accumulation"};
+    accumulate.inSteps({Beyond});
     Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"},
                                          "Step 9: march at the output's resolution or half of it");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
+    resolution.inSteps({Beyond});
     std::vector<std::string> presetNames;
     std::vector<double> presetValues;
     for (int i = 0; i < kQualityPresetCount; ++i) {
@@ -181,13 +188,19 @@ void CloudsLesson::declareParams(ParamSet& params) {
                                      "Step 9: a combination of samples, jitter, accumulation and resolution "
                                      "(knobs: the four knobs above)");
     preset.knob = Knob{presetValues, 0, "combination"};
-    params.addBool("beer_lambert", &beerLambert_,
-                   "Step 9: opacity from each step's length (the same picture at any sample count)");
-    params.addBool("distance_occlusion", &distanceOcclusion_,
-                   "Step 9: stop each ray at the surface's distance instead of comparing heights");
-    params.addBool(
-        "cloud_shadow", &cloudShadows_,
-        "Step 9: the clouds' shadows on the ground, marched toward the sun through the same density");
+    preset.inSteps({Beyond});
+    params
+        .addBool("beer_lambert", &beerLambert_,
+                 "Step 9: opacity from each step's length (the same picture at any sample count)")
+        .inSteps({Beyond});
+    params
+        .addBool("distance_occlusion", &distanceOcclusion_,
+                 "Step 9: stop each ray at the surface's distance instead of comparing heights")
+        .inSteps({Beyond});
+    params
+        .addBool("cloud_shadow", &cloudShadows_,
+                 "Step 9: the clouds' shadows on the ground, marched toward the sun through the same density")
+        .inSteps({Beyond});
 }
 
 Status CloudsLesson::init(const Scene& scene) {
@@ -358,7 +371,9 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (frame.step >= ThresholdHeight)
         out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
     if (frame.step == Beyond) {
-        out.add("framesAveraged", std::to_string(temporal_->framesAveraged()), "frames in the average");
+        // The running average weighs a new frame 1/16 at least: past 16 frames it holds 16 frames' worth.
+        const int averaged = std::min(temporal_->framesAveraged(), CloudTemporalOptions{}.maxFrames);
+        out.add("framesAveraged", std::to_string(averaged), "frames in the average (at most 16)");
         out.add("historyBytes", std::to_string(temporal_->historyBytes()), "history textures (bytes)");
         out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
         out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");

@@ -4,6 +4,8 @@
 // ring kernel at half resolution, and the accumulation reference it is measured against.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/scene/scene_work.hpp"
+#include "gl/texture.hpp"
 #include "scene/scene_enums.hpp"
 #include "scene/scene_settings.hpp"
 #include "scene/thin_lens.hpp"
@@ -51,6 +54,11 @@ public:
 
 private:
     bool showsReference(int step) const { return step == Reference || (step == Beyond && benchReference_); }
+    // In a window the reference's samples are spread over frames, as many a frame as the frame budget
+    // holds, summed into referenceSum_ in the order one frame would sum them (the finished picture is
+    // the headless one). Returns the sum; `exposure` is scaled to the mean of the samples so far.
+    TextureHandle declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
+                                             DofReferenceSettings settings, float& exposure);
 
     // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
     float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
@@ -69,6 +77,13 @@ private:
     Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
     float exposure_ = 1.0f;
     bool benchReference_ = false;
+
+    // The reference over frames (a window): its sum, what it is of, how far it is.
+    gl::Texture referenceSum_;
+    std::uint64_t referenceKey_ = 0;
+    int referenceDone_ = 0;
+    int referenceSlice_ = 0;       // samples the last frame added (0: none)
+    double referenceSeconds_ = 0;  // the lesson clock's time the sum shows
 
     Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)
     Gpu<HdrScenePass> scenePass_;
@@ -104,38 +119,56 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 }
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
-    params.addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
-                      "Steps 4 to 7 (the chapter: the image distance)");
-    params.addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"),
-                      "Steps 4 to 7");
-    params.addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber"),
-                      "Steps 4 to 7 (below 0.5 counts as 0.5)");
-    params.addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"),
-                      "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)");
-    params.addBool(
-        "chapter_compatible", &chapterCompatible_,
-        "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
-        "of view, the diameter used as a radius) instead of the corrected ones");
+    const std::vector<int> lensSteps = {PhysicalCamera, ChapterShader, Beyond, Reference};
+    params
+        .addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
+                    "Steps 4 to 7 (the chapter: the image distance)")
+        .inSteps(lensSteps);
+    params
+        .addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"), "Steps 4 to 7")
+        .inSteps(lensSteps);
+    params
+        .addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber"),
+                    "Steps 4 to 7 (below 0.5 counts as 0.5)")
+        .inSteps(lensSteps);
+    params
+        .addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"),
+                    "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)")
+        .inSteps(lensSteps);
+    params
+        .addBool("chapter_compatible", &chapterCompatible_,
+                 "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
+                 "of view, the diameter used as a radius) instead of the corrected ones")
+        .inSteps(lensSteps);
     Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
                                       "Steps 4 to 6");
     maxCoc.knob = Knob{{8, 16, 32, 64}, 64, "px"};
+    maxCoc.inSteps({PhysicalCamera, ChapterShader, Beyond});
     Param& taps = params.addSetting("taps", &taps_, sceneSetting("postEffects.depthOfField.taps"), "Step 6");
     taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
+    taps.inSteps({Beyond});
     Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
                                      "Step 6: the chapter's 13 Poisson taps, or the near/far ring gather");
     method.knob = Knob{{0, 1}, 1, "method"};
+    method.inSteps({Beyond});
     Param& resolution =
         params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
+    resolution.inSteps({Beyond});
     Param& fields =
         params.addChoice("fields", &fields_, {"one", "near-far"},
                          "Step 6: near/far separation (the background does not bleed over a sharp "
                          "foreground)");
     fields.knob = Knob{{0, 1}, 1, "fields"};
-    params.addFloat("highlight", &highlight_, 0.0f, 8.0f,
-                    "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)");
-    params.addInt("reference_samples", &referenceSamples_, 1, 1024,
-                  "Step 7: pinhole renders averaged over the aperture");
+    fields.inSteps({Beyond});
+    params
+        .addFloat("highlight", &highlight_, 0.0f, 8.0f,
+                  "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)")
+        .inSteps({Beyond});
+    params
+        .addInt("reference_samples", &referenceSamples_, 1, 1024,
+                "Step 7: pinhole renders averaged over the aperture")
+        .inSteps({Reference});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
                       "Not for the heat map, whose colours are for the display");
     params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
@@ -213,7 +246,10 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                              r.camera.fovYDegrees, frame.size.height);
                 r.focusM = float(model.focusM);
                 r.samples = referenceSamples_;
-                shown = reference_->declare(graph, frame.world.seenThrough(view_), r).output;
+                // Headless and in the bench all samples in one frame; in a window, a budget's worth a frame.
+                shown = frame.frameBudgetMs > 0 && !frame.benchmark
+                            ? declareReferenceOverFrames(graph, frame, r, exposure)
+                            : reference_->declare(graph, frame.world.seenThrough(view_), r).output;
             } else {
                 DofGatherSettings g{taps_, resolution_ == 1, fields_ == 1, highlight_};
                 shown = dof_->declareGather(graph, hdr.color, coc, lens, g).result;
@@ -221,6 +257,45 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         }
     }
     present_->declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+}
+
+TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
+                                                             DofReferenceSettings r, float& exposure) {
+    // Anything that changes the picture starts the sum again: the camera, the aperture, the count, the size.
+    std::uint64_t key = 1469598103934665603ull;
+    for (double v : {double(r.camera.position.x), double(r.camera.position.y), double(r.camera.position.z),
+                     double(r.camera.target.x), double(r.camera.target.y), double(r.camera.target.z),
+                     double(r.camera.fovYDegrees), double(r.apertureRadiusM), double(r.focusM),
+                     double(r.samples), double(frame.size.width), double(frame.size.height)})
+        key = (key ^ std::hash<double>{}(v)) * 1099511628211ull;
+    if (key != referenceKey_ || !referenceSum_) {
+        referenceSum_ = gl::Texture::create2D(TextureFormat::RGBA32F, frame.size.width, frame.size.height, 1,
+                                              "dof.reference (summed over frames)");
+        referenceKey_ = key;
+        referenceDone_ = 0;
+        referenceSlice_ = 0;
+        referenceSeconds_ = frame.seconds;  // every slice renders the moment the sum started
+    }
+    TextureHandle sum = graph.importTexture("dof.reference", referenceSum_.spec(), referenceSum_.name());
+    const int n = std::max(r.samples, 1);
+    if (referenceDone_ < n) {
+        // As many samples as half the budget holds, by what a sample cost last frame (one, to find out).
+        int count = 1;
+        if (referenceSlice_ > 0 && frame.previousFrame) {
+            const double perSample = dofGroup_.timeMs(*frame.previousFrame) / referenceSlice_;
+            if (perSample > 0) count = int(0.5 * frame.frameBudgetMs / perSample);
+        }
+        r.firstSample = referenceDone_;
+        r.sampleCount = std::clamp(count, 1, n - referenceDone_);
+        reference_->declare(graph, World(view_, frame.world.meshes(), referenceSeconds_), r, sum);
+        referenceDone_ += r.sampleCount;
+        referenceSlice_ = r.sampleCount;
+    } else {
+        referenceSlice_ = 0;
+    }
+    // The sum holds done / n of the picture: shown as the mean of the samples so far.
+    exposure *= float(n) / float(referenceDone_);
+    return sum;
 }
 
 void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {
@@ -253,7 +328,14 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter),
             "blur radius at 1 m (px)");
     if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps), "ring kernel taps");
-    if (showsReference(step)) out.add("referenceSamples", cat(referenceSamples_), "aperture samples");
+    if (showsReference(step)) {
+        // In a window the samples come a frame's budget at a time: how far the sum is.
+        if (frame.frameBudgetMs > 0 && !frame.benchmark)
+            out.progress("referenceSamples", referenceDone_, std::max(referenceSamples_, 1),
+                         "aperture samples summed (a frame budget's worth a frame)");
+        else
+            out.add("referenceSamples", cat(referenceSamples_), "aperture samples");
+    }
     if (frame.previousFrame)
         out.add("dofMs", cat(dofGroup_.timeMs(*frame.previousFrame)), "depth-of-field passes (ms)");
 }

@@ -15,6 +15,7 @@
 #include "effects/deferred/deferred_lighting.hpp"
 #include "effects/deferred/gbuffer_pass.hpp"
 #include "effects/deferred/lecture_mrt.hpp"
+#include "effects/deferred/light_evaluations.hpp"
 #include "effects/deferred/planar_reflection.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/deferred/render_to_texture.hpp"
@@ -46,6 +47,7 @@ private:
     GBufferLayout layoutFor(int step) const;
     bool culls(int step) const { return step >= ManyLights; }
     glm::vec3 worldOffsetFor(int step) const;
+    int lightCountFor(int step) const;  // light_count, or the step's own when it is 0
     void uploadLights(const FrameInfo& frame);
     void declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
                          std::optional<SplitView>& split);
@@ -54,8 +56,8 @@ private:
     int rttDepth_ = 0;         // RttDepth
     bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
     Choice<GBufferLayout> layout_{GBufferLayout::compact};
-    int originOffset_ = 0;  // index into kOriginOffsets
-    int lightCount_ = kMaxGridLights;
+    int originOffset_ = 0;    // index into kOriginOffsets
+    int lightCount_ = 0;      // 0: the step's own (lightCountFor)
     int culling_ = 1;         // 0 none, 1 tiled
     int reflectionSize_ = 1;  // index into kReflectionFractions
     float divider_ = 0.5f;
@@ -87,6 +89,53 @@ namespace {
 const float kOriginOffsets[] = {0.0f, 1000.0f, 10000.0f};
 // Step 7's reflection target as a fraction of the output: 1/1, 1/2, 1/4.
 const int kReflectionFractions[] = {1, 2, 4};
+// Steps 4 and 5 light the yard with every other lamp each way: they show one pass over many lights
+// (and the G-buffer's layout), and a software renderer pays for every light at every pixel there.
+// Step 6 is where the thousand become affordable.
+constexpr int kUnculledStepLights = 256;
+
+// `count` of the point lights, spread evenly over where they stand instead of the first `count` (a
+// strip of the grid): a light's rank among the distinct x and among the distinct z positions, and
+// the lights on the coarsest lattice of those ranks first (for a 32 x 32 grid, 256 is every other
+// lamp each way, 64 every fourth). The chosen lights keep their order, and all of them are the list
+// as it is.
+std::vector<Light> spreadPointLights(const std::vector<Light>& lights, int count) {
+    std::vector<std::size_t> points;
+    std::vector<float> xs, zs;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].type != LightType::point) continue;
+        points.push_back(i);
+        xs.push_back(lights[i].position.x);
+        zs.push_back(lights[i].position.z);
+    }
+    if (count >= int(points.size())) return lights;
+    auto ranks = [](std::vector<float> values) {
+        std::sort(values.begin(), values.end());
+        values.erase(std::unique(values.begin(), values.end()), values.end());
+        return values;
+    };
+    const std::vector<float> xRanks = ranks(xs), zRanks = ranks(zs);
+    auto rank = [](const std::vector<float>& sorted, float v) {
+        return unsigned(std::lower_bound(sorted.begin(), sorted.end(), v) - sorted.begin());
+    };
+    auto lattice = [](unsigned a, unsigned b) {  // the largest power of two dividing both (0 counts as any)
+        const unsigned both = a | b;
+        return both == 0 ? ~0u : both & (~both + 1u);
+    };
+    std::vector<std::size_t> order = points;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return lattice(rank(xRanks, lights[a].position.x), rank(zRanks, lights[a].position.z)) >
+               lattice(rank(xRanks, lights[b].position.x), rank(zRanks, lights[b].position.z));
+    });
+    order.resize(std::size_t(std::max(count, 0)));
+    std::sort(order.begin(), order.end());
+    std::vector<Light> chosen;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].type != LightType::point || std::binary_search(order.begin(), order.end(), i))
+            chosen.push_back(lights[i]);
+    }
+    return chosen;
+}
 
 }  // namespace
 
@@ -103,31 +152,44 @@ std::vector<std::string> DeferredShadingLesson::steps() const {
 }
 
 void DeferredShadingLesson::declareParams(ParamSet& params) {
-    params.addChoice(
-        "rtt_depth", &rttDepth_, {"renderbuffer", "texture"},
-        "Step 1: the render-to-texture framebuffer's depth attachment (a texture can be sampled)");
-    params.addBool("slides_order", &slidesOrder_,
-                   "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
-                   "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all");
+    params
+        .addChoice("rtt_depth", &rttDepth_, {"renderbuffer", "texture"},
+                   "Step 1: the render-to-texture framebuffer's depth attachment (a texture can be sampled)")
+        .inSteps({RenderToTexture});
+    params
+        .addBool("slides_order", &slidesOrder_,
+                 "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
+                 "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all")
+        .inSteps({ThreeTargets});
     Param& layout = params.addChoice("layout", &layout_, gbufferLayoutNames(),
                                      "Steps 5 to 7: the G-buffer's layout (fat32 is the reference; rgba8Raw "
                                      "stores normals in RGBA8 without a remap)");
     layout.knob = Knob{{0, 1, 2}, 2, "layout"};
-    params.addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"},
-                     "Step 5: move the scene and the camera this many metres from the origin along X");
-    Param& count = params.addInt("light_count", &lightCount_, 1, kMaxGridLights,
-                                 "Steps 4 to 7: point lights used (at most as many as the scene has)");
+    layout.inSteps({Layout, ManyLights, Reflection});
+    params
+        .addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"},
+                   "Step 5: move the scene and the camera this many metres from the origin along X")
+        .inSteps({Layout});
+    Param& count = params.addInt(
+        "light_count", &lightCount_, 0, kMaxGridLights,
+        cat("Steps 4 to 7: point lights used, spread evenly over the scene's (0: the step's own, ",
+            kUnculledStepLights, " in steps 4 and 5, all of them in 6 and 7)"));
     count.knob = Knob{{1, 4, 16, 64, 256, 1024}, 1024, "lights"};
+    count.inSteps({Deferred, Layout, ManyLights, Reflection});
     Param& culling =
         params.addChoice("culling", &culling_, {"none", "tiled"},
                          "Steps 6 and 7: evaluate every light per pixel, or only the tile's list");
     culling.knob = Knob{{0, 1}, 0, "culling"};
+    culling.inSteps({ManyLights, Reflection});
     Param& reflection =
         params.addChoice("reflection_size", &reflectionSize_, {"full", "half", "quarter"},
                          "Step 7: the reflection target's size as a fraction of the window's");
     reflection.knob = Knob{{0, 1, 2}, 0, "reflection size"};
-    params.addFloat("divider", &divider_, 0.0f, 1.0f,
-                    "Steps 3, 5 and 6: where the split view's divider is (left: the diagnostic view)");
+    reflection.inSteps({Reflection});
+    params
+        .addFloat("divider", &divider_, 0.0f, 1.0f,
+                  "Steps 3, 5 and 6: where the split view's divider is (left: the diagnostic view)")
+        .inSteps({Sharpen, Layout, ManyLights});
 }
 
 Status DeferredShadingLesson::init(const Scene& scene) {
@@ -144,6 +206,11 @@ GBufferLayout DeferredShadingLesson::layoutFor(int step) const {
     return *layout_;
 }
 
+int DeferredShadingLesson::lightCountFor(int step) const {
+    if (lightCount_ > 0) return lightCount_;
+    return step < ManyLights ? kUnculledStepLights : kMaxGridLights;
+}
+
 glm::vec3 DeferredShadingLesson::worldOffsetFor(int step) const {
     if (step != Layout) return glm::vec3(0.0f);
     return glm::vec3(kOriginOffsets[std::clamp(originOffset_, 0, 2)], 0.0f, 0.0f);
@@ -153,9 +220,9 @@ void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
     // The light list changes only with the parameters: upload it then, not every frame. Called from
     // buildFrame, so bench frames (which change parameters without an update()) see the new list too.
     glm::vec3 offset = worldOffsetFor(frame.step);
-    int count = std::clamp(lightCount_, 1, kMaxGridLights);
+    int count = std::clamp(lightCountFor(frame.step), 1, kMaxGridLights);
     if (offset != uploadedOffset_ || count != uploadedCount_) {
-        lights_->upload(gpuPointLights(allLights_, count, offset));
+        lights_->upload(gpuPointLights(spreadPointLights(allLights_, count), count, offset));
         uploadedOffset_ = offset;
         uploadedCount_ = count;
     }
@@ -198,8 +265,9 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     if (step == Layout && options.referencePosition)
         split = SplitView{lighting_->declarePositionError(graph, scene, g), divider_};
     if (tiles && !frame.benchmark)
-        split = SplitView{culling_pass_->declareHeatMap(graph, *tiles, lit, std::max(lightCount_ / 32, 8)),
-                          divider_};
+        split = SplitView{
+            culling_pass_->declareHeatMap(graph, *tiles, lit, std::max(lightCountFor(step) / 32, 8)),
+            divider_};
 }
 
 void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -214,7 +282,7 @@ void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame
             const FullscreenPass* copy = &*rttToScreen_;
             Pass& pass = rttToScreen_->addPass(
                 graph, "rtt to screen", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
-            pass.read(color);
+            pass.read(color).setTaps(1);
             shown = pass.create("rtt.shown", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                 TextureUsage::ColorAttachment);
             break;
@@ -282,6 +350,8 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         Size2D tiles = tileCount(frame.size);
         out.add("tiles", cat(tiles.width, " x ", tiles.height),
                 cat("tiles of ", kTileSize, " x ", kTileSize));
+        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_->count())),
+                "light evaluations without culling (W x H x N)");
     }
     if (frame.previousFrame) {
         out.add("lightingMs", cat(lightingGroup_.timeMs(*frame.previousFrame)), "lighting pass (ms)");

@@ -10,13 +10,18 @@ layout(location = 1) uniform vec4 place;  // x, y (bottom-left, window pixels), 
 layout(location = 2) uniform float gain;
 layout(location = 0) out vec4 colour;
 
+// The texel of `picture` under the place's point `uv`: a picture may be smaller than its place (the
+// frame budget's scale) or of another size than the other (the window was resized since): scaled to fit.
+vec3 at(sampler2D picture, vec2 uv) {
+    ivec2 size = textureSize(picture, 0);
+    return texelFetch(picture, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).rgb;
+}
+
 void main() {
     vec2 local = gl_FragCoord.xy - place.xy;
     vec2 uv = local / max(place.zw, vec2(1.0));
-    vec3 now = texelFetch(current, ivec2(local), 0).rgb;
-    // The previous picture may be of another size (the window was resized since): scaled to fit.
-    ivec2 previousSize = textureSize(previous, 0);
-    vec3 before = texelFetch(previous, clamp(ivec2(uv * vec2(previousSize)), ivec2(0), previousSize - 1), 0).rgb;
+    vec3 now = at(current, uv);
+    vec3 before = at(previous, uv);
     if (mode == 1) {
         float middle = floor(place.z * 0.5);
         if (abs(local.x - middle) < 1.0) {

@@ -91,8 +91,10 @@ def problems(root):
     """(the lines to print, number of files, number of terms); TableError if the table is unusable."""
     terms = read_terms(root / GLOSSARY)
     files = sorted((root / "lessons").glob("*/lesson.ja.md"))
+    # The handout's own Japanese words (headings, captions, column names) follow the same table.
+    handout_words = [path for path in [root / "common/app/handout_words.cpp"] if path.is_file()]
     found = []
-    for path in files:
+    for path in files + handout_words:
         name = path.relative_to(root).as_posix()
         for number, text in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
             for _line, _english, japanese, variants in terms:

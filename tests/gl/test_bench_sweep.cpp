@@ -139,22 +139,30 @@ TEST_F(BenchSweep, RowsCarryTheirCopyTheSpreadAndEveryPass) {
 
 // The overlay measures a row per frame: between rows the parameters are the user's again, and a
 // sweep dropped half-way leaves them as they were.
-TEST_F(BenchSweep, RowAtATimePutsTheParametersBackBetweenRows) {
+TEST_F(BenchSweep, SliceAtATimePutsTheParametersBackBetweenSlices) {
     GreyLesson lesson;
     ParamSet params;
     lesson.declareParams(params);
     ASSERT_TRUE(params.assign("level=2").ok());
     FrameRenderer renderer(context(), TimingMode::Fenced, true);
     {
+        // One measured frame a setting after two of warm-up (fenced timing): three slices a setting,
+        // each one frame of the lesson (and the copy timed before it).
         KnobSweep sweep(lesson, params, renderer, context(), {{}, 1, 0, {}}, "grey", 0);
         EXPECT_EQ(sweep.progress().total, 5);
-        sweep.next();  // the reference image, at level 3
-        EXPECT_EQ(params.find("level")->text(), "2");
-        sweep.next();  // level 0
+        for (int slice = 1; slice <= 3; ++slice) {
+            sweep.next();  // the reference image, at level 3
+            EXPECT_EQ(params.find("level")->text(), "2") << "after slice " << slice;
+            EXPECT_EQ(sweep.progress().done, slice == 3 ? 1 : 0);
+            EXPECT_EQ(sweep.progress().frame, slice == 3 ? 0 : slice);
+        }
+        EXPECT_DOUBLE_EQ(sweep.progress().fraction(), 1.0 / 5.0);
+        for (int slice = 1; slice <= 3; ++slice) sweep.next();  // level 0
         EXPECT_EQ(params.find("level")->text(), "2");
         EXPECT_EQ(sweep.progress().done, 2);
         EXPECT_FALSE(sweep.done());
         EXPECT_EQ(sweep.result().points.size(), 1u);
+        sweep.next();  // a slice of level 1, then dropped: the parameters are put back
     }
     EXPECT_EQ(params.find("level")->text(), "2");
     EXPECT_EQ(params.find("level")->source(), ParamSource::commandLine);

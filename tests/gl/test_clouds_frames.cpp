@@ -115,44 +115,11 @@ TEST_F(CloudsOnGl, TheSunStraightOverheadShadowsTheCloudUnderAPillar) {
     // The lesson's scene with the sun straight down: a look-at with up = +Y would have no sideways axis
     // (hard case 14). Seen from above, rays through the pillar's footprint cross slab samples in its
     // shadow (the depth is left at 1, so the pillar does not hide them); rays beside it do not.
-    SceneLoadOptions options;
-    options.assetRoot = resourceDir();
-    auto loaded = loadScene(resourceDir() / "scenes/08_clouds.json", options);
-    ASSERT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
-    Scene scene = std::move(*loaded);
-    scene.lights.at(0).direction = {0.0f, -1.0f, 0.0f};
-    const glm::vec3 pillar{3.0f, 0.0f, -6.0f};  // "pillar 1": 1.2 m square, 5 m tall
-    SceneMeshes meshes(scene);
-    ShadowMap shadows;
-    ASSERT_TRUE(programsBuilt());
-
     const int w = 33, h = 33;
-    Camera cam = cameraAt({pillar.x, 12.0f, pillar.z}, 0, -89.5f);
+    Camera cam = cameraAt({kPillar.x, 12.0f, kPillar.z}, 0, -89.5f);
     CloudFrameSettings s = marchSettings(cam, w, h);
     s.features |= cloudShadows;
-    gl::Texture color = gl::Texture::create2D(TextureFormat::RGBA16F, w, h, 1, "test.scene.color");
-    gl::Texture depth = gl::Texture::create2D(TextureFormat::Depth32F, w, h, 1, "test.scene.depth");
-    const float zero[4] = {0, 0, 0, 0};
-    const float one = 1.0f;
-    glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
-    glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
-
-    FrameGraph graph(OutputTarget{{w, h}, "output", TextureFormat::RGBA8, 0});
-    TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
-    TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
-    ShadowSettings settings = shadowCastingLight(scene)->shadow;
-    DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), settings, {});
-    ASSERT_NE(map.pass, nullptr);
-    EXPECT_FALSE(map.lookup.light.fallbackDirection);
-    pass.declare(graph, {c, d, &map}, constant, s);
-    Status status = graph.execute(pool, executor);
-    ASSERT_TRUE(status) << status.error();
-    graph.releaseTextures();
-    pool.endFrame();
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    FloatImage out = gl::readTexture(color);
+    FloatImage out = runUnderTheSun(s, w, h, constant);
     ASSERT_TRUE(allFinite(out));
     // rgb = colour x (1 - shadow) x opacity: rgb / alpha is the light reaching the cloud.
     auto light = [&](int x, int y) { return out.texel(x, y, 0) / std::max(alphaAt(out, x, y), 1e-6f); };
@@ -160,24 +127,6 @@ TEST_F(CloudsOnGl, TheSunStraightOverheadShadowsTheCloudUnderAPillar) {
     EXPECT_LT(light(w / 2, h / 2), 0.8f);
     EXPECT_GT(light(2, 2), 0.95f);
     EXPECT_GT(light(w - 3, h - 3), 0.95f);
-}
-
-class CloudsWithTheGeneratedTexture : public CloudsOnGl {
-protected:
-    void SetUp() override {
-        CloudsOnGl::SetUp();
-        auto loaded = CloudDensityTexture::load((resourceDir() / "textures/cloud_density.png").string());
-        ASSERT_TRUE(loaded) << loaded.error();
-        texture = std::move(*loaded);
-    }
-    CloudDensityTexture texture;
-};
-
-double meanAbsoluteAlphaDifference(const FloatImage& x, const FloatImage& y) {
-    double sum = 0;
-    for (int j = 0; j < x.height; ++j)
-        for (int i = 0; i < x.width; ++i) sum += std::abs(x.texel(i, j, 3) - y.texel(i, j, 3));
-    return sum / double(x.width * x.height);
 }
 
 TEST_F(CloudsWithTheGeneratedTexture, ACamera10KmFromTheOriginSeesTheSameClouds) {

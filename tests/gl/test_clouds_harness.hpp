@@ -75,6 +75,14 @@ inline float depthForViewZ(const glm::mat4& projection, float z) {
     return clip.z / clip.w * 0.5f + 0.5f;
 }
 
+// The mean of |alpha(x) - alpha(y)| over two pictures of one size.
+inline double meanAbsoluteAlphaDifference(const FloatImage& x, const FloatImage& y) {
+    double sum = 0;
+    for (int j = 0; j < x.height; ++j)
+        for (int i = 0; i < x.width; ++i) sum += std::abs(x.texel(i, j, 3) - y.texel(i, j, 3));
+    return sum / double(x.width * x.height);
+}
+
 class CloudsOnGl : public GlTest {
 protected:
     void SetUp() override {
@@ -112,6 +120,53 @@ protected:
         return gl::readTexture(color);
     }
 
+    // Lesson 08's scene as shipped (a failed load fails the test).
+    static Result<Scene> lessonScene() {
+        SceneLoadOptions options;
+        options.assetRoot = resourceDir();
+        auto loaded = loadScene(resourceDir() / "scenes/08_clouds.json", options);
+        EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
+        return loaded;
+    }
+
+    // The pass with object shadows from lesson 08's scene, its sun turned straight down (hard case 14),
+    // over a colour target cleared to 0 and sky depth (1) everywhere. kPillar stands in the slab.
+    static constexpr glm::vec3 kPillar{3.0f, 0.0f, -6.0f};  // "pillar 1": 1.2 m square, 5 m tall
+    FloatImage runUnderTheSun(const CloudFrameSettings& settings, int width, int height,
+                              const CloudDensityTexture& density) {
+        auto loaded = lessonScene();
+        if (!loaded.ok()) return {};
+        Scene scene = std::move(*loaded);
+        scene.lights.at(0).direction = {0.0f, -1.0f, 0.0f};
+        SceneMeshes meshes(scene);
+        ShadowMap shadows;
+        EXPECT_TRUE(programsBuilt());
+        gl::Texture color =
+            gl::Texture::create2D(TextureFormat::RGBA16F, width, height, 1, "test.scene.color");
+        gl::Texture depth =
+            gl::Texture::create2D(TextureFormat::Depth32F, width, height, 1, "test.scene.depth");
+        const float zero[4] = {0, 0, 0, 0};
+        const float one = 1.0f;
+        glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
+        glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+
+        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
+        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+        ShadowSettings shadowSettings = shadowCastingLight(scene)->shadow;
+        DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), shadowSettings, {});
+        EXPECT_NE(map.pass, nullptr);
+        EXPECT_FALSE(map.lookup.light.fallbackDirection);
+        pass.declare(graph, {c, d, &map}, density, settings);
+        Status status = graph.execute(pool, executor);
+        EXPECT_TRUE(status) << (status ? "" : status.error());
+        graph.releaseTextures();
+        pool.endFrame();
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        return gl::readTexture(color);
+    }
     static float alphaAt(const FloatImage& image, int x, int y) { return image.texel(x, y, 3); }
 
     CloudPass pass;
@@ -121,6 +176,18 @@ protected:
     TexturePool pool{allocator};
     PassTimer timer{TimingMode::Off, ""};
     GlPassExecutor executor{timer, {0, true}};
+};
+
+// The cloud density texture the lessons ship (res/textures/cloud_density.png).
+class CloudsWithTheGeneratedTexture : public CloudsOnGl {
+protected:
+    void SetUp() override {
+        CloudsOnGl::SetUp();
+        auto loaded = CloudDensityTexture::load((resourceDir() / "textures/cloud_density.png").string());
+        ASSERT_TRUE(loaded) << loaded.error();
+        texture = std::move(*loaded);
+    }
+    CloudDensityTexture texture;
 };
 
 }  // namespace fx::test

@@ -4,6 +4,8 @@
 // evaluation of the same formula; the octahedral code; the position error of the fat and compact
 // layouts 1,000 and 10,000 m from the origin. Framebuffers that would lose writes silently and the
 // lecture's targets are in test_deferred_targets.cpp.
+#include "effects/deferred/light_evaluations.hpp"
+#include "effects/deferred/tiled_culling.hpp"
 #include "test_deferred_harness.hpp"
 
 using namespace fx;
@@ -84,6 +86,45 @@ TEST_F(DeferredHardCases, LightingMatchesTheFormulaForEveryKindOfNormal) {
     }
     EXPECT_GT(texel(out, 1).r, 0.1f);        // a back-facing normal is lit from its own side...
     EXPECT_EQ(texel(out, 5), glm::vec3(0));  // ... and a missing normal is not lit at all
+}
+
+// Hard case 3: shininess 0 and huge. Pixel 1 faces away from the eye with its light straight out along
+// the normal, so the half vector l + v is zero and n.h is 0: pow(0, 0), which GLSL leaves undefined
+// (llvmpipe's NaN turns the pixel black once the pass maps NaN to 0). The shader takes an exponent of 0 as
+// a flat highlight (1 everywhere, the limit of x^s for s -> 0) and a huge one underflows to the limit, 0
+// below n.h = 1; both match the CPU formula at every kind of normal.
+TEST_F(DeferredHardCases, ShininessZeroAndHugeMatchTheirLimits) {
+    Scene scene = darkScene();
+    std::vector<glm::vec2> codes;
+    std::vector<GpuPointLight> pointLights;
+    std::vector<glm::vec3> normals;
+    for (int x = 0; x < kW; ++x) {
+        glm::vec3 toEye = glm::normalize(scene.camera.position - worldAt(scene, x));
+        glm::vec3 n = x == 1   ? -toEye
+                      : x == 2 ? glm::vec3(0, 1, 0)
+                      : x == 3 ? glm::normalize(glm::vec3(1, 0, 1))
+                               : toEye;
+        normals.push_back(n);
+        codes.push_back(octahedralEncode(n));
+        pointLights.push_back({glm::vec4(worldAt(scene, x) + 0.4f * n, 1.0f), glm::vec4(2, 1, 0.5f, 0)});
+    }
+    for (float shininess : {0.0f, 1e30f}) {
+        lighting = DeferredLighting(shininess);
+        FloatImage out = light(scene, codes, pointLights);
+        ASSERT_FALSE(out.empty());
+        ASSERT_TRUE(allFinite(out));
+        for (int x = 0; x < kW; ++x) {
+            glm::vec2 code = codes[std::size_t(x)];
+            glm::vec3 stored = octahedralDecode({glm::unpackHalf1x16(glm::packHalf1x16(code.x)),
+                                                 glm::unpackHalf1x16(glm::packHalf1x16(code.y))});
+            glm::vec3 want(0);
+            for (const GpuPointLight& l : pointLights)
+                want += expectedLight(scene, worldAt(scene, x), stored, l, shininess);
+            expectNear(texel(out, x), want, cat("shininess ", shininess, ", pixel ", x).c_str());
+        }
+        // Pixel 1 (n.h = 0): lit, with the flat highlight at exponent 0 and none at a huge one.
+        EXPECT_GT(texel(out, 1).r, 0.1f) << "shininess " << shininess;
+    }
 }
 
 TEST_F(DeferredHardCases, RadiusZeroAddsNothingAndALightInsideTheSurfaceIsBounded) {
@@ -175,4 +216,38 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     EXPECT_LT(compact0, 0.01f);
     EXPECT_LT(compact1k, fat1k / 10);
     EXPECT_LT(compact10k, fat10k / 10);
+}
+
+// Hard case 20 on the lesson's scene (step 6: 1024 lamps of radius 1.1 m over the yard) at 320 x 180:
+// without culling every pixel evaluates every light, W x H x N = 59 million; the tiles' lists, read back
+// from cull.heat, leave a few lights a pixel.
+TEST_F(DeferredHardCases, ManyLightsCostWidthTimesHeightTimesLightsUnlessCulled) {
+    auto scene = loadShippedScene();
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    SceneMeshes meshes(*scene);
+    GBufferPass gbuffer;
+    TiledCulling culling;
+    ASSERT_TRUE(programsBuilt());
+    lights.upload(gpuPointLights(allLights(*scene), kMaxGridLights));
+    ASSERT_EQ(lights.count(), 1024);
+    const Size2D size{320, 180};
+    GraphRunner runner(size.width, size.height);
+    FloatImage heat = runner.run(size, [&](FrameGraph& graph) {
+        GBufferTargets g =
+            gbuffer.declare(graph, World(*scene, meshes, 0.0), {GBufferLayout::compact, false, {}});
+        return culling.declare(graph, *scene, g, lights).heat;
+    });
+    ASSERT_FALSE(heat.empty());
+    ASSERT_EQ(heat.width, tileCount(size).width);
+    std::vector<float> perTile;
+    for (int y = 0; y < heat.height; ++y)
+        for (int x = 0; x < heat.width; ++x) perTile.push_back(heat.texel(x, y, 0));
+    const std::int64_t naive = naiveLightEvaluations(size, lights.count());
+    const std::int64_t tiled = tiledLightEvaluations(size, perTile);
+    std::printf(
+        "light evaluations at 320 x 180 with 1024 lights: %lld without culling, %lld tiled (%.1f a pixel)\n",
+        (long long)naive, (long long)tiled, double(tiled) / (size.width * size.height));
+    EXPECT_EQ(naive, 320LL * 180 * 1024);
+    EXPECT_GT(tiled, 0);
+    EXPECT_LT(tiled * 20, naive);  // the lamps reach 1.1 m: a tile sees a few dozen at most
 }

@@ -91,7 +91,8 @@ inline glm::vec3 worldAt(const Scene& scene, int x, float depth = 0.5f) {
 }
 
 // The lighting pass's point-light formula on the CPU (point_lights.glsl), for one light.
-inline glm::vec3 expectedLight(const Scene& scene, glm::vec3 p, glm::vec3 n, const GpuPointLight& light) {
+inline glm::vec3 expectedLight(const Scene& scene, glm::vec3 p, glm::vec3 n, const GpuPointLight& light,
+                               float shininess = kDefaultShininess) {
     glm::vec3 toLight = glm::vec3(light.positionRadius) - p;
     float d = glm::length(toLight), r = light.positionRadius.w;
     if (!(r > 0) || d >= r) return glm::vec3(0);
@@ -100,9 +101,10 @@ inline glm::vec3 expectedLight(const Scene& scene, glm::vec3 p, glm::vec3 n, con
     float lambert = std::max(glm::dot(n, l), 0.0f);
     if (lambert <= 0) return glm::vec3(0);
     glm::vec3 v = glm::normalize(scene.camera.position - p);
-    glm::vec3 h = glm::normalize(l + v);
-    return att * glm::vec3(light.color) *
-           (kAlbedo * lambert + 0.3f * std::pow(std::max(glm::dot(n, h), 0.0f), 40.0f));
+    glm::vec3 h = l + v;
+    float nh = glm::length(h) > 1e-6f ? std::max(glm::dot(n, glm::normalize(h)), 0.0f) : 0.0f;
+    float falloff = shininess > 0 ? std::pow(nh, shininess) : 1.0f;  // x^0 = 1, also at x = 0
+    return att * glm::vec3(light.color) * (kAlbedo * lambert + 0.3f * falloff);
 }
 
 class DeferredHardCases : public GlTest {

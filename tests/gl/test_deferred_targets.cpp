@@ -173,3 +173,68 @@ TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
     EXPECT_GT(negative, 50);  // the objects' sides facing -X and -Z (toward the camera: +Z)
     EXPECT_EQ(clippedToZero, negative);
 }
+
+// The lecture's forward picture (render to texture: the Phong sum in one RGBA8 target) against its
+// deferred one (the three terms in three RGBA8 targets, added by the composite into RGBA16F), on the
+// lesson's scene at 512 x 512, the render-to-texture target's size: the same pixels, so they differ
+// only by rounding. Each stored term rounds by at most 0.5/255, so the deferred sum is within
+// 3 x 0.5/255 of the exact one; the forward picture rounds once more (0.5/255) and the half float of
+// the sum by at most 2^-11 of it. Pixels where a term or the sum reaches 1 are clipped differently by
+// the two (one clip of the sum, one of each term) and are left out.
+TEST_F(DeferredHardCases, ForwardAndDeferredAgreeToEightBitQuantisation) {
+    auto scene = loadShippedScene();
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    SceneMeshes meshes(*scene);
+    RenderToTexture rtt;
+    LectureMrt mrt;
+    ASSERT_TRUE(programsBuilt());
+    const Size2D size{512, 512};
+    GraphRunner runner(size.width, size.height);
+    FloatImage forward = runner.run(size, [&](FrameGraph& graph) {
+        return rtt.declare(graph, World(*scene, meshes, 0.0), RttDepth::renderbuffer);
+    });
+    MrtTargets targets;
+    auto declareTerms = [&](FrameGraph& graph) {
+        targets = mrt.declare(graph, World(*scene, meshes, 0.0), MrtOrder::fixed, nullptr);
+    };
+    FloatImage sum = runner.run(size, [&](FrameGraph& graph) {
+        declareTerms(graph);
+        return mrt.declareComposite(graph, *scene, targets);
+    });
+    FloatImage terms[3];
+    for (int i = 0; i < 3; ++i)
+        terms[i] = runner.run(size, [&](FrameGraph& graph) {
+            declareTerms(graph);
+            return i == 0 ? targets.diffuse : i == 1 ? targets.specular : targets.ambient;
+        });
+    ASSERT_FALSE(forward.empty());
+    ASSERT_FALSE(sum.empty());
+    ASSERT_EQ(forward.width, sum.width);
+    const float bound = 3 * 0.5f / 255;
+    float worst = 0;
+    double total = 0;
+    int compared = 0, lit = 0;
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float f = forward.texel(x, y, c), s = sum.texel(x, y, c);
+                bool clipped = f >= 1.0f || s >= 1.0f;
+                for (const FloatImage& t : terms) clipped = clipped || t.texel(x, y, c) >= 1.0f;
+                if (clipped) continue;
+                float d = s - f;
+                ASSERT_LE(std::abs(d), bound + 0.5f / 255 + s / 2048 + 1e-6f)
+                    << "pixel " << x << "," << y << " channel " << c << ": forward " << f << ", deferred "
+                    << s;
+                worst = std::max(worst, std::abs(d));
+                total += d;
+                ++compared;
+                lit += terms[0].texel(x, y, c) > 0.0f && terms[1].texel(x, y, c) > 0.0f;
+            }
+    std::printf(
+        "forward against deferred: %d channels compared, largest difference %.3f/255, mean %.4f/255\n",
+        compared, worst * 255, total / std::max(compared, 1) * 255);
+    EXPECT_GT(compared, size.width * size.height * 2);  // most of the picture takes part
+    EXPECT_GT(lit, 1000);                               // with diffuse and specular light both there
+    EXPECT_GT(worst, 0.0f);                             // the roundings do differ...
+    EXPECT_LT(std::abs(total / compared), 0.5 / 255);   // ... but not on average
+}

@@ -195,12 +195,15 @@ TEST_F(DepthOfFieldOnGl, GatherKeepsAUniformImageAtEverySize) {
     DofLensUniforms lens = dofLensUniforms(thinLensModel(in));
     const std::array<float, 4> grey{0.25f, 2.5f, 0.75f, 1.0f};
     for (auto [w, h] : {std::pair{1, 1}, std::pair{63, 63}, std::pair{7, 5}, std::pair{33, 17}}) {
+        // A copy to capture: C++20 lets a lambda capture a structured binding (P1091), but clang 14,
+        // the sanitizer build's compiler, does not implement it yet.
+        const int width = w;
         for (int taps : {16, 22, 43, 71}) {
             for (bool half : {false, true}) {
                 for (bool separate : {false, true}) {
                     FloatImage out = run(
                         w, h, uniformColour(w, h, grey),
-                        [w](int x, int) { return float(x) / float(std::max(w - 1, 1)); },
+                        [width](int x, int) { return float(x) / float(std::max(width - 1, 1)); },
                         [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
                             TextureHandle coc = effect.declareCoc(g, d, lens).output;
                             return effect.declareGather(g, c, coc, lens, {taps, half, separate, 1.0f}).result;

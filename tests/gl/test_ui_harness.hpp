@@ -34,10 +34,20 @@ struct UiHarness {
         executor.setPresentFramebuffer(screenFbo.name());
     }
 
-    // One frame as the runner makes it: build, inspect what the overlay wants, execute, draw the
-    // overlay while the textures are held (`model` gets the graph and report), read the screen back.
+    // One frame as the runner makes it: a slice of the cost panel's sweep between frames when one is
+    // asked for, else build, inspect what the overlay wants, execute, draw the overlay while the
+    // textures are held (`model` gets the graph and report); then read the screen back.
     ByteImage frame(const std::function<void(FrameGraph&)>& build, OverlayModel model = {},
                     bool withOverlay = true, const std::function<void(const FrameGraph&)>& whileHeld = {}) {
+        if (withOverlay && overlay.costPanel().measurePending()) {
+            overlay.costPanel().runPending(model.measureKnobs);
+            glBindFramebuffer(GL_FRAMEBUFFER, screenFbo.name());
+            glViewport(0, 0, width, height);
+            model.frame = &lastReport;
+            model.graph = nullptr;
+            overlay.draw(model, width, height, 1.0 / 60.0);
+            return gl::readFramebufferRgba8(screenFbo.name(), width, height);
+        }
         FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
         build(graph);
         if (withOverlay) {

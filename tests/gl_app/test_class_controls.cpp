@@ -1,6 +1,6 @@
 // The class controls through the runner (headless: --press drives the same key table a window uses):
-// space holds the lesson's clock still while frames go on, "." moves it one fixed step, and with the
-// overlay the picture gets its own place beside the panels.
+// space holds the lesson's clock still while frames go on, "." moves it one fixed step, F3 compares two
+// steps at one moment, and with the overlay the picture gets its own place beside the panels.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,8 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The time and size each frame handed the lesson.
+// The time, clock step, step and size each frame handed the lesson.
 std::vector<double> seconds;
+std::vector<std::uint64_t> clockSteps;
+std::vector<int> stepsBuilt;
 std::vector<Size2D> sizes;
 
 class ClockProbe final : public Lesson {
@@ -27,6 +29,8 @@ public:
     Status init(const Scene&) override { return Status::success(); }
     void update(const FrameInfo& frame) override {
         seconds.push_back(frame.seconds);
+        clockSteps.push_back(frame.clockSteps);
+        stepsBuilt.push_back(frame.step);
         sizes.push_back(frame.size);
     }
     void buildFrame(FrameGraph& graph, const FrameInfo&) override {
@@ -38,6 +42,8 @@ public:
 
 int run(const std::vector<std::string>& flags) {
     seconds.clear();
+    clockSteps.clear();
+    stepsBuilt.clear();
     sizes.clear();
     std::vector<std::string> args = {"probe"};
     for (const std::string& f : flags) args.push_back(f);
@@ -54,6 +60,18 @@ TEST(ClassControls, SpaceHoldsTheClockAndAPeriodMovesItOneStep) {
     // Frames 0 and 1 run; space at frame 2 holds the time of frame 1; "." at 4 adds one step; space at
     // 6 lets it run again.
     EXPECT_EQ(seconds, (std::vector<double>{0.5, 1.0, 1.0, 1.0, 1.5, 1.5, 2.0}));
+    // The frame's number on the lesson clock: what a step that acts every Nth frame counts.
+    EXPECT_EQ(clockSteps, (std::vector<std::uint64_t>{1, 2, 2, 2, 3, 3, 4}));
+}
+
+TEST(ClassControls, TheCompareViewShowsBothStepsAtOneMoment) {
+    // Step 2 from frame 2 on; F3 at frame 5 holds the clock and draws step 1 again at that moment
+    // before step 2's frame, so the two pictures compared are of the same time.
+    ASSERT_EQ(run({"--headless", "--overlay", "--size", "320x180", "--frames", "8", "--time-step", "0.5",
+                   "--press", "right@2", "--press", "F3@5"}),
+              0);
+    EXPECT_EQ(stepsBuilt, (std::vector<int>{0, 0, 1, 1, 1, 0, 1, 1, 1}));
+    EXPECT_EQ(seconds, (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5, 2.5, 2.5, 2.5, 2.5}));
 }
 
 TEST(ClassControls, WithTheOverlayThePictureHasItsOwnPlace) {
@@ -61,14 +79,16 @@ TEST(ClassControls, WithTheOverlayThePictureHasItsOwnPlace) {
     ASSERT_EQ(run({"--headless", "--overlay", "--size", "1280x720", "--frames", "2", "--capture",
                    dir.string(), "--report", (dir / "report.json").string()}),
               0);
-    // The lesson rendered at the picture's size: the window less the panel column.
+    // The lesson rendered at the picture's size: the window less the panel column, at 16:9.
     ASSERT_FALSE(sizes.empty());
-    EXPECT_EQ(sizes.back(), (Size2D{896, 720}));
+    EXPECT_EQ(sizes.back(), (Size2D{896, 504}));
     auto text = readTextFile(dir / "report.json");
     ASSERT_TRUE(text);
     auto report = nlohmann::json::parse(*text);
     EXPECT_EQ(report["glErrors"], 0);
-    EXPECT_EQ(report["layout"]["picture"], (nlohmann::json{384, 0, 896, 720}));
+    EXPECT_EQ(report["layout"]["picture"], (nlohmann::json{384, 108, 896, 504}));
+    EXPECT_EQ(report["picture"]["rendered"], (nlohmann::json{896, 504}))
+        << "headless: never scaled by itself";
     EXPECT_TRUE(fs::exists(dir / "picture.png"));
     EXPECT_TRUE(fs::exists(dir / "final.png"));
     fs::remove_all(dir);

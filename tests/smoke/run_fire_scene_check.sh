@@ -2,7 +2,7 @@
 # Scenes decide what lesson 07 does: without an emitter there is no particle buffer, no dispatch and no
 # particle pass (each listed with the scene's reason, 0 bytes of pool); an emitter outside the view is
 # simulated but not drawn (the pass says why); a rate below 0 and a sprite missing from disk are
-# refused with the field and the path named.
+# refused with the field and the path named. Step 3 counts pairs out of order only unsorted.
 #   run_fire_scene_check.sh <fxlab-07-fire-emitter> <shipped scene 07_fire_emitter.json> <work dir>
 set -uo pipefail
 exe="$1" shipped="$2" work="$3"
@@ -55,6 +55,17 @@ if "$exe" --headless --size 64x36 --frames 1 --scene "$dir/.check-$tag-nosprite.
   fail "a missing sprite was accepted"
 fi
 grep -q 'no_such_sprite.png' "$work/nosprite.log" || fail "the missing sprite's error does not name the path: $(cat "$work/nosprite.log")"
+
+# Hard case 24 in the lesson's own count: step 3's 2000 particles drawn in spawn order leave pairs
+# drawn front before back (the fact outOfOrder); sorted back to front, none.
+for sort in false true; do
+  "$exe" --headless --size 64x36 --frames 3 --step 3 --param sort=$sort --report "$work/order-$sort.json" \
+    >"$work/order-$sort.log" 2>&1 || fail "step 3 with sort=$sort exited with an error"
+done
+[ "$(fact "$work/order-false.json" outOfOrder)" -gt 0 ] 2>/dev/null ||
+  fail "step 3 in spawn order counts $(fact "$work/order-false.json" outOfOrder) pairs out of order"
+[ "$(fact "$work/order-true.json" outOfOrder)" = "0" ] ||
+  fail "step 3 sorted back to front still counts $(fact "$work/order-true.json" outOfOrder) pairs out of order"
 
 [ "$status" -eq 0 ] && echo "lesson 07: scene checks passed"
 exit "$status"

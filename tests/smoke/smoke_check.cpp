@@ -8,9 +8,13 @@
 // Only those textures, and only with the fact present; and at least one of them must really hold a
 // NaN or Inf, or the step no longer shows what it is for. The final image is never excused.
 //   fx_smoke_check <capture dir> <report.json> <golden.png> <output dir for diffs> [--expect-gl-errors]
+//                  [--tolerance RMSE,MAX]
 //   fx_smoke_check --report-only <report.json> <WxH>
+// --tolerance replaces the golden tolerance (8-bit levels) for another rasteriser than llvmpipe, whose
+// goldens these are (tools/gpu/run.sh on a GPU).
 // The second form checks only the report (a run resized while it ran): the same GL error and NaN
-// checks, and a last frame of WxH; it has no picture to compare.
+// checks, and a last frame of WxH; it has no picture to compare. Both fail on a pass that ran without
+// declaring its taps (render/pass_traffic.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -96,6 +100,9 @@ bool checkReport(const std::string& reportPath, bool expectGlErrors, nlohmann::j
     for (auto& pass : report["passes"]) {
         if (pass.value("status", "") == "executor failed")
             fail("pass " + pass.value("name", "?") + ": " + pass.value("reason", ""));
+        // Every pass that runs says how many texture lookups it makes per pixel (the cost model's taps).
+        if (pass.value("executed", false) && (!pass.contains("taps") || pass["taps"].is_null()))
+            fail("pass " + pass.value("name", "?") + " declares no taps (Pass::setTaps)");
     }
     return true;
 }
@@ -116,13 +123,34 @@ int main(int argc, char** argv) {
                  std::to_string(width) + ", " + std::to_string(height) + "]");
         return failures == 0 ? 0 : 1;
     }
-    if (argc < 5) {
-        std::fprintf(stderr, "usage: %s CAPTURE_DIR REPORT GOLDEN OUT_DIR [--expect-gl-errors]\n", argv[0]);
+    auto usage = [&] {
+        std::fprintf(stderr,
+                     "usage: %s CAPTURE_DIR REPORT GOLDEN OUT_DIR [--expect-gl-errors] [--tolerance R,M]\n",
+                     argv[0]);
         std::fprintf(stderr, "       %s --report-only REPORT WxH\n", argv[0]);
         return 2;
-    }
+    };
+    if (argc < 5) return usage();
     std::string captureDir = argv[1], reportPath = argv[2], golden = argv[3], outDir = argv[4];
-    bool expectGlErrors = argc > 5 && std::string(argv[5]) == "--expect-gl-errors";
+    bool expectGlErrors = false;
+    fx::GoldenTolerance tolerance = kTolerance;
+    for (int i = 5; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--expect-gl-errors") {
+            expectGlErrors = true;
+        } else if (flag == "--tolerance" && i + 1 < argc) {
+            char end = 0;
+            if (std::sscanf(argv[++i], "%lf,%d%c", &tolerance.maxRmse, &tolerance.maxAbs, &end) != 2 ||
+                tolerance.maxRmse < 0 || tolerance.maxAbs < 0) {
+                std::fprintf(stderr,
+                             "%s: --tolerance: expected RMSE,MAX in 8-bit levels (1.5,64), got \"%s\"\n",
+                             argv[0], argv[i]);
+                return 2;
+            }
+        } else {
+            return usage();
+        }
+    }
     if (!checkReport(reportPath, expectGlErrors, report)) return 1;
 
     auto finalImage = fx::readPng(captureDir + "/final.png");
@@ -130,7 +158,7 @@ int main(int argc, char** argv) {
         fail(finalImage.error());
     } else {
         if (fx::isFlat(*finalImage, 2)) fail("the final image is flat (one colour)");
-        auto verdict = fx::checkGolden(*finalImage, golden, kTolerance, outDir);
+        auto verdict = fx::checkGolden(*finalImage, golden, tolerance, outDir);
         if (!verdict) {
             fail(verdict.error());
         } else if (!verdict->passed()) {

@@ -8,6 +8,8 @@
 // --split: the compare view is on; the place shows a white line down its middle, this step's picture
 // right of it and the previous step's left of it (which must differ from this step's somewhere).
 // --difference: the compare view's difference: black where the steps agree, lit where they differ.
+// --lit-below F: with --difference, the steps differ in under F of the place (and somewhere): both
+// pictures of an animated lesson were taken at one moment, so only what the step changes is lit.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -51,7 +53,7 @@ int main(int argc, char** argv) {
     }
     const std::string dir = argv[1];
     std::string expectWindow, expectLesson;
-    double expectScale = -1, minShare = 0.45;
+    double expectScale = -1, minShare = 0.45, litBelow = -1;
     bool split = false, difference = false;
     std::string nanLog;
     for (int i = 2; i < argc; ++i) {
@@ -68,6 +70,8 @@ int main(int argc, char** argv) {
             split = true;
         else if (a == "--difference")
             difference = true;
+        else if (a == "--lit-below" && i + 1 < argc)
+            litBelow = std::atof(argv[++i]);
         else if (a == "--nan-log" && i + 1 < argc)
             nanLog = argv[++i];
         else {
@@ -148,7 +152,13 @@ int main(int argc, char** argv) {
         const double area = double(picture.w) * picture.h, black = double(covered) / area;
         std::printf("difference: %.0f%% of the place black (the steps agree), %.0f%% lit\n", black * 100.0,
                     100.0 - black * 100.0);
-        if (black < 0.2 || black > 0.95) ok = fail("the difference view is not black where the steps agree");
+        if (litBelow >= 0) {
+            if (1.0 - black >= litBelow || black >= 1.0)
+                ok = fail("the difference view should be lit in under " + std::to_string(litBelow * 100.0) +
+                          "% of the place, and somewhere");
+        } else if (black < 0.2 || black > 0.95) {
+            ok = fail("the difference view is not black where the steps agree");
+        }
         covered = 0;
     }
     std::printf("pixels of the picture's place that are not the lesson's picture: %ld\n", covered);

@@ -23,7 +23,9 @@ export FXLAB_CONFIG_DIR="$work/config"  # never the teacher's ui.json
 status=0
 for mode in with without; do
   flags=()
-  [ "$mode" = without ] && flags=(--no-overlay)
+  # Without the overlay the picture fills the whole window (no 16:9 bars), so the overlay's region is
+  # compared with the lesson's picture, not with the dark ground around a letterboxed one.
+  [ "$mode" = without ] && flags=(--no-overlay --aspect free)
   if ! "$exe" --frames 6 "${lessonFlags[@]}" "${flags[@]}" --capture "$work/$mode" \
        --report "$work/$mode/report.json" >"$work/$mode.log" 2>&1; then
     echo "FAIL: $name ($mode overlay) exited with an error:"; cat "$work/$mode.log"; status=1

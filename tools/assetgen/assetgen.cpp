@@ -49,7 +49,7 @@ Status writeAssets(const std::filesystem::path& root) {
 Status writeAssets(const std::filesystem::path& root, const std::vector<GeneratedFile>& files) {
     for (const GeneratedFile& file : files) {
         if (file.bytes.empty()) return Error{cat(file.path, ": nothing was generated")};
-        if (auto written = writeFileAtomically(root / file.path, std::span<const std::byte>(file.bytes));
+        if (auto written = writeFileInFolder(root, file.path, std::span<const std::byte>(file.bytes));
             !written)
             return written;
     }

@@ -1,16 +1,23 @@
 // Draws a bench run's plots again from its bench.json (after a change to the plots, without measuring
-// again): fxlab-bench-replot out/bench/06-bloom/bench.json [OUT_DIR]
+// again): fxlab-bench-replot out/bench/06-bloom/bench.json [OUT_DIR] [--cost traffic]
+// (--cost traffic: the modelled memory traffic at 1920x1080 as the cost axis, as `--bench --cost traffic`)
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "app/bench.hpp"
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: fxlab-bench-replot BENCH_JSON [OUT_DIR]\n");
+    fx::BenchCost cost = fx::BenchCost::time;
+    if (argc > 2 && std::string(argv[argc - 1]) == "traffic" && std::string(argv[argc - 2]) == "--cost") {
+        cost = fx::BenchCost::traffic;
+        argc -= 2;
+    }
+    if (argc < 2 || argc > 3) {
+        std::fprintf(stderr, "usage: fxlab-bench-replot BENCH_JSON [OUT_DIR] [--cost traffic]\n");
         return 2;
     }
     std::ifstream in(argv[1]);
@@ -41,11 +48,13 @@ int main(int argc, char** argv) {
         s.rmse = number(p["rmse"]);
         s.psnr = number(p["psnrDb"]);
         s.maxAbs = number(p["maxAbs"]);
+        s.trafficBytes = static_cast<std::uint64_t>(number(p.value("trafficBytes1080p", nlohmann::json(0))));
+        s.tapsPerPixel = number(p.value("tapsPerPixel", nlohmann::json(0.0)));
         r.points.push_back(s);
     }
     std::filesystem::path out =
         argc > 2 ? std::filesystem::path(argv[2]) : std::filesystem::path(argv[1]).parent_path();
-    fx::Status s = fx::writeBenchOutputs(r, out);
+    fx::Status s = fx::writeBenchOutputs(r, out, cost);
     if (!s) {
         std::fprintf(stderr, "%s\n", s.error().c_str());
         return 1;

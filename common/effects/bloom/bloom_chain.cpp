@@ -13,6 +13,10 @@ std::string bloomShaderDefines() {
                std::to_string(kBloomMaxBright), "\n");
 }
 
+int bloomUpsampleTaps(int filters) {
+    return filters == 2 ? 1 : filters == 0 ? 9 : 8;
+}
+
 void BloomSampler::bind() const {
     glBindSampler(0, sampler_.name());
     glBindSampler(1, sampler_.name());
@@ -68,7 +72,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         extract->draw({ctx.native(input)});
         BloomSampler::unbind();
     });
-    bright.read(input).writeColor(d.down[0]);
+    bright.read(input).writeColor(d.down[0]).setTaps(4);
     d.passes.push_back(&bright);
 
     // Down the chain: each level from the one above it, with blending off, so the level is overwritten.
@@ -83,7 +87,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
             down->draw({ctx.native(from)});
             BloomSampler::unbind();
         });
-        pass.read(from).writeColor(d.down[k]);
+        pass.read(from).writeColor(d.down[k]).setTaps(filters == 0 ? 5 : 4);
         d.passes.push_back(&pass);
     }
 
@@ -106,6 +110,7 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
             BloomSampler::unbind();
         });
         pass.read(base).read(below).writeColor(d.up[k]);
+        pass.setTaps(bloomUpsampleTaps(filters) + (wide ? 4 : 1));  // the level below, then its own level
         d.passes.push_back(&pass);
     }
     // A level that is not made leaves the rest of the chain without its input.

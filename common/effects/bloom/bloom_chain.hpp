@@ -33,6 +33,10 @@ namespace fx {
 // What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.
 std::string bloomShaderDefines();
 
+// Texture lookups of bloom_common.glsl's upsampleFilter for BLOOM_FILTERS `filters` (the passes' taps):
+// 9 for the Shader effects chapter's tent (0), 8 for the Bloom chapter's (1), one bilinear tap (2).
+int bloomUpsampleTaps(int filters);
+
 // A sampler with GL_LINEAR and CLAMP_TO_EDGE bound to units 0 and 1 for one draw: the chapters' kernels
 // rely on bilinear taps, and REPEAT would bring light from the opposite edge (Bloom, hard case 11).
 // Whatever a texture's own parameters say, the bloom passes filter the same way.

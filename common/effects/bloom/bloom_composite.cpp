@@ -47,7 +47,7 @@ DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, Tex
         graph, "bloom composite", compositeBody(&program, &sampler_, scene, glow, settings, [](GLuint) {}));
     TextureHandle result = composite.create(
         "bloom.result", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-    composite.read(scene).read(glow);
+    composite.read(scene).read(glow).setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
     return {composite, result};
 }
 
@@ -61,6 +61,7 @@ Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, T
                                          glProgramUniform1f(p, glsl::kBloomExposureLocation, exposure);
                                      }));
     declared.read(scene).read(glow).writeColor(graph.output());
+    declared.setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
     return declared;
 }
 

@@ -54,7 +54,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
         valid_ = true;
         ranLastFrame_ = true;
     });
-    pass.read(glow).read(prev).writeColor(out).writeColor(next);
+    pass.read(glow).read(prev).writeColor(out).writeColor(next).setTaps(2);
     return {pass, out};
 }
 

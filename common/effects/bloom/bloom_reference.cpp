@@ -1,5 +1,8 @@
 #include "effects/bloom/bloom_reference.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "base/log.hpp"
 #include "render_gl/program_pass.hpp"
 
@@ -21,7 +24,7 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
         extract->draw({ctx.native(input)});
     });
     d.bright = bright.create("bloom.reference.bright", full, TextureUsage::ColorAttachment);
-    bright.read(input);
+    bright.read(input).setTaps(1);
     d.passes.push_back(&bright);
 
     const FullscreenPass* gaussian = &gaussian_;
@@ -35,17 +38,18 @@ BloomReference::Declared BloomReference::declare(FrameGraph& graph, TextureHandl
     d.glow = graph.declareTexture("bloom.reference", full);
     for (std::size_t k = 0; k < settings.sigmas.size(); ++k) {
         double sigma = settings.sigmas[k];
+        const double taps = 2 * std::min(std::ceil(3.0 * sigma), 512.0) + 1;  // gaussian.frag's loop
         TextureHandle source = d.bright;
         Pass& x = gaussian_.addPass(graph, cat("bloom reference x ", k),
                                     [=](PassContext& ctx) { blur(ctx.native(source), 1, 0, sigma, 1.0f); });
         TextureHandle blurred =
             x.create(cat("bloom.reference.blur_x[", k, "]"), full, TextureUsage::ColorAttachment);
-        x.read(source);
+        x.read(source).setTaps(taps);
         float weight = settings.levelWeight;
         Pass& y = gaussian_.addPass(graph, cat("bloom reference y ", k), [=](PassContext& ctx) {
             blur(ctx.native(blurred), 0, 1, sigma, weight);
         });
-        y.read(blurred);
+        y.read(blurred).setTaps(taps);
         PassState state = FullscreenPass::state();
         if (k == 0) {
             // The first level clears the sum (alpha 1; the Gaussian writes alpha 0) and adds onto it.

@@ -8,7 +8,7 @@
 
 #include "base/log.hpp"
 #include "effects/clouds/clouds_bindings.hpp"
-#include "image/png_file.hpp"
+#include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
@@ -80,7 +80,7 @@ ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
 }
 
 Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
-    auto image = readPng(path);
+    auto image = gl::readTextureImage(path);
     if (!image) return Error{image.error()};
     return fromImage(*image);
 }
@@ -169,6 +169,19 @@ void setMarchUniforms(GLuint prog, const CloudFrameSettings& s, Size2D target, c
                        float(std::max(target.height, 1)));
 }
 
+// Texture lookups per pixel of clouds.frag, at most (a ray that leaves the slab or turns opaque stops
+// early): the texture on the screen takes one; the plane the depth and its density taps; the march the
+// depth, then per sample its density taps and, with object shadows, the shadow map's PCF taps.
+double marchTaps(const CloudFrameSettings& s, const MarchInputs& m) {
+    if (s.stage == CloudStage::screenTexture) return 1;
+    const int density = (s.features & cloudTwoScales) ? 2 : 1;
+    const int depth = m.depth ? 1 : 0;
+    if (s.stage == CloudStage::plane) return depth + density;
+    if (!s.march.drawn) return depth;
+    const int shadow = m.shadows ? shadowLookupTaps(m.lookup) : 0;
+    return depth + double(std::max(s.march.steps, 0)) * (density + shadow);
+}
+
 // The body both declares give their pass: the program resolved once, when the frame is declared.
 Pass::Body marchBody(const FullscreenPass* program, const CloudFrameSettings& s, const MarchInputs& m,
                      const CloudDensityTexture* density) {
@@ -177,6 +190,7 @@ Pass::Body marchBody(const FullscreenPass* program, const CloudFrameSettings& s,
         setMarchUniforms(prog, s, ctx.targetSize(), m.shadows ? &m.lookup : nullptr);
         ShadowMap::bindForLookup(prog, m.shadows ? ctx.native(m.shadowMap) : 0,
                                  m.shadows ? m.lookup : ShadowLookup{});
+        // Units 0 and 1, clouds.frag's bindings: the density, then the scene's depth.
         program->draw({density->name(), m.depth ? ctx.native(m.depthTexture) : 0});
     };
 }
@@ -191,7 +205,7 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
     MarchInputs m = marchInputs(inputs, s);
     const FullscreenPass& program = programFor(s);
     Pass& pass = program.addPass(graph, "clouds", marchBody(&program, s, m, &density));
-    pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state());
+    pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state()).setTaps(marchTaps(s, m));
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
     return pass;
@@ -209,6 +223,7 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     TextureHandle layer =
         pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                     TextureUsage::ColorAttachment);
+    pass.setTaps(marchTaps(s, m));
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
     return layer;

@@ -61,7 +61,8 @@ TextureHandle CloudShadowPass::declareMap(FrameGraph& graph, TextureHandle depth
                               });
     TextureHandle map = pass.create("clouds.shadow", {TextureSize::output(), TextureFormat::R16F},
                                     TextureUsage::ColorAttachment);
-    pass.read(depth);
+    // The depth, then two density taps (two scales) per sample along the sun's ray.
+    pass.read(depth).setTaps(1 + 2 * std::clamp(shadow.samples, 0, kCloudMaxSteps));
     return map;
 }
 
@@ -88,7 +89,8 @@ TextureHandle CloudShadowPass::declare(FrameGraph& graph, const CloudShadowInput
                  })
         .read(map)
         .modify(inputs.color, TextureUsage::ColorAttachment)
-        .setState(multiply);
+        .setState(multiply)
+        .setTaps(1);
     return map;
 }
 

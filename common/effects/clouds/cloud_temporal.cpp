@@ -62,9 +62,11 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
 
         const gl::Texture& previous = history_[newest_];
         const gl::Texture& next = history_[1 - newest_];
+        const TextureSize historySize = TextureSize::outputFraction(1, divisor);  // for the traffic model
         TextureHandle before =
-            graph.importTexture("clouds.history.previous", previous.spec(), previous.name());
-        TextureHandle after = graph.importTexture("clouds.history.next", next.spec(), next.name());
+            graph.importTexture("clouds.history.previous", previous.spec(), previous.name(), historySize);
+        TextureHandle after =
+            graph.importTexture("clouds.history.next", next.spec(), next.name(), historySize);
 
         AccumulateUniforms u;
         u.inverseProjection = glm::inverse(settings.projection);
@@ -103,6 +105,8 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
             pass.create("clouds.result", {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                         TextureUsage::ColorAttachment);   // attachment 0
         pass.read(layer).read(before).writeColor(after);  // attachment 1
+        // This frame's texel and its 3x3 neighbourhood (the clamp), the history where it was, the depth.
+        pass.setTaps(depth ? 12 : 11);
         if (depth) pass.read(inputs.depth);
 
         previousViewProjection_ = settings.projection * settings.view;
@@ -119,7 +123,8 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
                  [composite, result](PassContext& ctx) { composite->draw({ctx.native(result)}); })
         .read(result)
         .modify(inputs.color, TextureUsage::ColorAttachment)
-        .setState(over);
+        .setState(over)
+        .setTaps(1);
 }
 
 }  // namespace fx

@@ -1,6 +1,7 @@
 #include "effects/deferred/deferred_lighting.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -9,12 +10,22 @@
 #include "effects/scene/hdr_scene_pass.hpp"
 
 namespace fx {
+namespace {
+
+// Texture lookups of gbuffer_read.glsl for one pixel: albedo, depth, normal, and the stored position
+// where the layout has one (compact rebuilds it from depth).
+int gbufferTaps(const GBufferTargets& g) {
+    return g.position ? 4 : 3;
+}
+
+}  // namespace
 
 const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
     const int n = static_cast<int>(layout);
     std::optional<FullscreenPass>& slot = passes_[n * 2 + (tiled ? 1 : 0)];
     if (!slot) {
-        std::string defines = cat("#define LAYOUT ", n, "\n");
+        std::string defines =
+            cat("#define LAYOUT ", n, "\n#define SHININESS ", std::to_string(shininess_), "\n");
         if (tiled)
             defines += cat("#define TILED 1\n#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ",
                            kMaxTileLights, "\n");
@@ -58,6 +69,7 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
     if (g.position) pass.read(*g.position);
     if (shadow.pass) pass.read(shadow.map);
     if (tiles) pass.read(tiles->heat);
+    pass.setTaps(gbufferTaps(g) + (shadow.pass ? shadowLookupTaps(shadow.lookup) : 0));
     return pass.create("deferred.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -81,6 +93,7 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
                      ctx.native(reference)});
     });
     pass.read(g.albedo).read(g.normal).read(g.depth).read(reference);
+    pass.setTaps(gbufferTaps(g));  // the normal is not read; the reference position is
     if (g.position) pass.read(*g.position);
     return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
@@ -107,6 +120,7 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
     });
     pass.read(g.albedo).read(g.normal).read(g.depth);
     if (g.position) pass.read(*g.position);
+    pass.setTaps(gbufferTaps(g));
     const TextureDesc rgba8{TextureSize::output(), TextureFormat::RGBA8, 1};
     pass.create("gbuffer.view_normal", rgba8, TextureUsage::ColorAttachment);
     pass.create("gbuffer.view_depth", rgba8, TextureUsage::ColorAttachment);

@@ -25,9 +25,14 @@ struct CulledTiles {
 
 inline constexpr int kTileSize = 16;
 inline constexpr int kMaxTileLights = 255;
+inline constexpr float kDefaultShininess = 40.0f;
 
 class DeferredLighting {
 public:
+    // `shininess`: the point lights' specular exponent (40, the lecture's; the hard cases test 0 and
+    // huge ones: pow(0, 0) is undefined in GLSL, so the shader takes an exponent of 0 as a flat 1).
+    explicit DeferredLighting(float shininess = kDefaultShininess) : shininess_(shininess) {}
+
     // Declares "deferred lighting". `scene`, `lights` must outlive the frame's execution; `shadow` may
     // have no pass (no shadow-casting light): the sun then lights without shadow.
     TextureHandle declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
@@ -47,6 +52,7 @@ public:
                       float viewRange = 40.0f) const;
 
 private:
+    float shininess_ = kDefaultShininess;
     mutable std::optional<FullscreenPass> passes_[8];
     mutable std::optional<FullscreenPass> viewPasses_[4];  // [layout * 2 + tiled], built when first used
     mutable std::optional<FullscreenPass> errorPasses_[4];

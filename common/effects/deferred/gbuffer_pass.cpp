@@ -67,8 +67,8 @@ GBufferTargets GBufferPass::declare(FrameGraph& graph, const World& world,
     t.depth =
         pass.create("gbuffer.depth", {TextureSize::output(), f.depth, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(world.scene());
-    state.clearColor = ClearColor{0, 0, 0, 0};  // alpha 0 in albedo: no surface
-    runsWith(pass.setState(state), *prog);
+    state.clearColor = ClearColor{0, 0, 0, 0};         // alpha 0 in albedo: no surface
+    runsWith(pass.setState(state).setTaps(1), *prog);  // the base colour
     return t;
 }
 

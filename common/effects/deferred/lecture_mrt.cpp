@@ -56,8 +56,8 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const World& world, MrtOrder o
     t.depth = pass.create("mrt.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                           TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(world.scene());
-    state.clearColor = ClearColor{0, 0, 0, 0};  // every target; the composite adds the sky once
-    runsWith(pass.setState(state), phong_);
+    state.clearColor = ClearColor{0, 0, 0, 0};          // every target; the composite adds the sky once
+    runsWith(pass.setState(state).setTaps(2), phong_);  // base colour and emissive textures
     return t;
 }
 
@@ -67,7 +67,7 @@ TextureHandle LectureMrt::declareComposite(FrameGraph& graph, const Scene& scene
         setSky(composite->program(), scene);
         composite->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient);
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setTaps(3);
     return pass.create("mrt.sum", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -78,7 +78,8 @@ SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene,
         setSky(sharpen->program(), scene);
         sharpen->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient);
+    // The diffuse term and its four neighbours (identity minus the Laplacian), then specular and ambient.
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setTaps(7);
     SharpenTargets s;
     s.clipped = pass.create("sharpen.rgba8", {TextureSize::output(), TextureFormat::RGBA8, 1},
                             TextureUsage::ColorAttachment);
@@ -92,7 +93,7 @@ TextureHandle LectureMrt::declareRangeView(FrameGraph& graph, const SharpenTarge
     Pass& pass = range_.addPass(graph, "sharpen range", [range, s](PassContext& ctx) {
         range->draw({ctx.native(s.clipped), ctx.native(s.kept)});
     });
-    pass.read(s.clipped).read(s.kept);
+    pass.read(s.clipped).read(s.kept).setTaps(2);
     return pass.create("sharpen.range", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

@@ -59,9 +59,10 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
     const MirrorPlane m = mirror.value_or(MirrorPlane{});
     Pass& pass = graph.addPass("planar reflection", [reflect, buffer, world, m](PassContext& ctx) {
         const Scene& scene = world.scene();
-        // The same projection as the camera's (the same aspect: the target is a fraction of the output),
-        // the view mirrored in the plane.
-        Size2D size = ctx.targetSize();
+        // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
+        // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
+        // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
+        Size2D size = ctx.outputSize();
         CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
         glm::mat4 r = reflectionMatrix(m.plane);
         camera.view = camera.view * r;
@@ -84,7 +85,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
     pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(world.scene());
     state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
-    pass.setState(state);
+    pass.setState(state).setTaps(1);   // the base colour; the lights come from a buffer
     needs(pass, SceneFeature::mirror);
     runsWith(pass, reflect_);
 
@@ -117,6 +118,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
                    .faceCulling = true,
                    .cullFace = CullFace::Back,
                    .colorMask = ColorMask{}});
+    over.setTaps(2);  // the G-buffer's depth, then the reflection
     needs(over, SceneFeature::mirror);
     if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
     runsWith(over, surface_);

@@ -2,7 +2,16 @@
 
 #include <algorithm>
 
+#include "scene/scene_light_grid.hpp"
+#include "scene/scene_limits.hpp"
+
 namespace fx {
+
+// The light list grows with the scene: at most its explicit lights and its grids' lights, bounded by the
+// scene's limits, and far below the 16 MiB storage block every GL 4.5 device allows (docs/reliability.md).
+static_assert((scene_limits::kMaxLights + std::size_t(kMaxGridLights)) * sizeof(GpuPointLight) <=
+                  (std::size_t(1) << 24),
+              "the scene's lights must fit GL 4.5's minimum shader storage block");
 
 std::vector<GpuPointLight> gpuPointLights(const std::vector<Light>& lights, int maxCount, glm::vec3 offset) {
     std::vector<GpuPointLight> out;

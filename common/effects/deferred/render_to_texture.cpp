@@ -119,7 +119,7 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const World& world, Rt
     PassState state = hdrSceneState(world.scene());
     state.clearColor.reset();  // cleared in the body, on the recipe's framebuffer
     state.clearDepth.reset();
-    runsWith(pass.setState(state), program_);
+    runsWith(pass.setState(state).setTaps(2), program_);  // base colour and emissive textures (phong.frag)
     return color;
 }
 

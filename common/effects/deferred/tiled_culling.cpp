@@ -48,7 +48,8 @@ CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const G
         // The lighting pass reads the list as a storage buffer and the heat map as a texture.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     });
-    pass.read(g.depth).writeStorage(out.heat);
+    pass.read(g.depth).writeStorage(out.heat).setTaps(kTileSize *
+                                                      kTileSize);  // a tile's depths per heat texel
     needs(pass, SceneFeature::manyLights);
     lastPass_ = &pass;
     runsWith(pass, program_);
@@ -64,7 +65,7 @@ TextureHandle TiledCulling::declareHeatMap(FrameGraph& graph, const CulledTiles&
         glProgramUniform1f(heat->program(), glsl::kHeatCapacityLocation, float(kMaxTileLights));
         heat->draw({ctx.native(tiles.heat), ctx.native(lit)});
     });
-    pass.read(tiles.heat).read(lit);
+    pass.read(tiles.heat).read(lit).setTaps(2);
     return pass.create("cull.heatmap", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

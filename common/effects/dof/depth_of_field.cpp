@@ -1,6 +1,7 @@
 #include "effects/dof/depth_of_field.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "base/log.hpp"
@@ -50,14 +51,14 @@ DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
     });
     TextureHandle coc = pass.create("dof.coc", {TextureSize::output(), TextureFormat::R32F, 1},
                                     TextureUsage::ColorAttachment);
-    pass.read(depth);
+    pass.read(depth).setTaps(1);
     return {pass, coc};
 }
 
 // The heat map and the chapter's 13 taps: a full-resolution picture from the scene's colour and the CoC.
 static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const char* output,
                                    const FullscreenPass& program, TextureHandle color, TextureHandle coc,
-                                   const DofLensUniforms& lens) {
+                                   const DofLensUniforms& lens, double taps) {
     const FullscreenPass* p = &program;
     Pass& pass = program.addPass(graph, name, [p, color, coc, lens](PassContext& ctx) {
         setRadius(p->program(), lens);
@@ -65,13 +66,13 @@ static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const ch
     });
     TextureHandle out = pass.create(output, {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                     TextureUsage::ColorAttachment);
-    pass.read(color).read(coc);
+    pass.read(color).read(coc).setTaps(taps);
     return {pass, out};
 }
 
 DeclaredPass DepthOfField::declareHeatMap(FrameGraph& graph, TextureHandle color, TextureHandle coc,
                                           const DofLensUniforms& lens) const {
-    return declareFromCoc(graph, "dof heat map", "dof.heat", heat_, color, coc, lens);
+    return declareFromCoc(graph, "dof heat map", "dof.heat", heat_, color, coc, lens, 2);
 }
 
 DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, TextureHandle depth,
@@ -83,13 +84,14 @@ DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, 
     });
     TextureHandle out = pass.create("dof.naive", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                     TextureUsage::ColorAttachment);
-    pass.read(color).read(depth);
+    pass.read(color).read(depth).setTaps(14);  // the depth, the pixel and 12 Poisson taps
     return {pass, out};
 }
 
 DeclaredPass DepthOfField::declareChapter(FrameGraph& graph, TextureHandle color, TextureHandle coc,
                                           const DofLensUniforms& lens) const {
-    return declareFromCoc(graph, "dof chapter", "dof.chapter", chapter_, color, coc, lens);
+    // The CoC, the pixel itself and the chapter's 12 Poisson taps around it.
+    return declareFromCoc(graph, "dof chapter", "dof.chapter", chapter_, color, coc, lens, 14);
 }
 
 DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandle color, TextureHandle coc,
@@ -109,7 +111,7 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
         });
     g.prefiltered =
         pre.create("dof.prefiltered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-    pre.read(color).read(coc);
+    pre.read(color).read(coc).setTaps(2 * scale * scale);  // colour and CoC of every full-size texel under it
 
     const FullscreenPass* tileMax = &tileMax_;
     TextureHandle prefiltered = g.prefiltered;
@@ -120,7 +122,7 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     g.tiles = tiles.create("dof.tiles",
                            {TextureSize::outputFraction(1, kDofTileFullPixels), TextureFormat::RG16F, 1},
                            TextureUsage::ColorAttachment);
-    tiles.read(g.prefiltered);
+    tiles.read(g.prefiltered).setTaps(tile * tile);
 
     // One field or two is built into the program: a uniform branch ran both on llvmpipe.
     const FullscreenPass& gatherPass = gatherProgram(s.separateFields);
@@ -143,7 +145,9 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
         });
     g.gathered =
         gath.create("dof.gathered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-    gath.read(g.prefiltered).read(g.tiles);
+    // The centre, the tiles within the clamp's reach (their largest CoC), then the kernel's rings.
+    const int reach = int(std::ceil(std::max(maxRadius, 0.0f) / float(tile)));
+    gath.read(g.prefiltered).read(g.tiles).setTaps(1 + (2 * reach + 1) * (2 * reach + 1) + kernel.taps);
 
     const FullscreenPass* composite = &composite_;
     TextureHandle gathered = g.gathered;
@@ -154,7 +158,7 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
         });
     g.result = comp.create("dof.result", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                            TextureUsage::ColorAttachment);
-    comp.read(color).read(coc).read(g.gathered);
+    comp.read(color).read(coc).read(g.gathered).setTaps(3);
     return g;
 }
 

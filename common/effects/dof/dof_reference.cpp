@@ -65,8 +65,8 @@ float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, floa
 
 DofReference::DofReference() : scratch_(std::make_shared<Scratch>()) {}
 
-DeclaredPass DofReference::declare(FrameGraph& graph, const World& world,
-                                   const DofReferenceSettings& s) const {
+DeclaredPass DofReference::declare(FrameGraph& graph, const World& world, const DofReferenceSettings& s,
+                                   std::optional<TextureHandle> into) const {
     const gl::ReloadableProgram* program = &scene_;
     const FullscreenPass* accumulate = &accumulate_;
     std::shared_ptr<Scratch> scratch = scratch_;
@@ -83,7 +83,9 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const World& world,
         accumulateState.blendFunction = BlendFunction::additive();
         const ClearColor sky = *hdrSceneState(scene).clearColor;
         const float one = 1.0f;
-        for (int i = 0; i < n; ++i) {
+        const int first = std::clamp(s.firstSample, 0, n);
+        const int last = s.sampleCount > 0 ? std::min(first + s.sampleCount, n) : n;
+        for (int i = first; i < last; ++i) {
             glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
             CameraMatrices camera =
                 jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
@@ -101,13 +103,22 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const World& world,
             accumulate->draw({scratch->color.name()});
         }
     });
-    TextureHandle out = pass.create("dof.reference", {TextureSize::output(), TextureFormat::RGBA32F, 1},
-                                    TextureUsage::ColorAttachment);
+    TextureHandle out = into
+                            ? *into
+                            : pass.create("dof.reference", {TextureSize::output(), TextureFormat::RGBA32F, 1},
+                                          TextureUsage::ColorAttachment);
+    if (into) pass.modify(*into, TextureUsage::ColorAttachment);
     PassState state = FullscreenPass::state();
     state.blend = true;
     state.blendFunction = BlendFunction::additive();
-    state.clearColor = ClearColor{0.0f, 0.0f, 0.0f, 0.0f};
-    runsWith(pass.setState(state), scene_);
+    if (!into || s.firstSample == 0) state.clearColor = ClearColor{0.0f, 0.0f, 0.0f, 0.0f};
+    // Per sample this frame draws: the scene's two material textures, then the sum's one (its scratch
+    // targets are its own, outside the graph and the traffic model).
+    const int samples = std::max(s.samples, 1);
+    const int drawn = s.sampleCount > 0
+                          ? std::min(s.sampleCount, samples - std::clamp(s.firstSample, 0, samples))
+                          : samples;
+    runsWith(pass.setState(state).setTaps(3.0 * std::max(drawn, 1)), scene_);
     runsWith(pass, accumulate_.reloadable());
     return {pass, out};
 }

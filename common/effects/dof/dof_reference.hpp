@@ -9,6 +9,7 @@
 // One pass, "dof reference", writes dof.reference (RGBA32F, cleared to 0, additive). Inside it the
 // scene goes into a scratch colour and depth target of its own (labelled), once per sample.
 #include <memory>
+#include <optional>
 
 #include <glm/vec2.hpp>
 
@@ -38,12 +39,20 @@ struct DofReferenceSettings {
     float apertureRadiusM = 0.0f;
     float focusM = 10.0f;
     int samples = 64;
+    // A share of the samples, for a reference spread over several frames (a window's frame budget):
+    // samples [firstSample, firstSample + sampleCount) of `samples`, each weighted 1 / samples. 0: all.
+    int firstSample = 0;
+    int sampleCount = 0;
 };
 
 class DofReference {
 public:
     DofReference();  // in the .cpp, where Scratch is complete
-    DeclaredPass declare(FrameGraph& graph, const World& world, const DofReferenceSettings& settings) const;
+    // `world` must outlive the frame's execution. `into`: add the samples into this texture (kept from
+    // frame to frame, RGBA32F; cleared first when firstSample is 0) instead of a new dof.reference, so
+    // that a reference spread over frames sums its samples in the same order.
+    DeclaredPass declare(FrameGraph& graph, const World& world, const DofReferenceSettings& settings,
+                         std::optional<TextureHandle> into = {}) const;
 
 private:
     struct Scratch;

@@ -8,7 +8,7 @@
 #include "effects/particles/particles_bindings.hpp"
 #include "effects/scene/scene_bindings.hpp"
 #include "gl/debug_output.hpp"
-#include "image/png_file.hpp"
+#include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
@@ -63,7 +63,7 @@ int ParticleRenderer::programsBuilt() const {
 }
 
 Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
-    auto image = readPng(path);
+    auto image = gl::readTextureImage(path);
     if (!image) return Error{cat("particle sprite ", path.string(), ": ", image.error())};
     // Only alpha is used, so a linear format; mipmaps for the small far particles.
     gl::DebugGroup group("upload particles.sprite");

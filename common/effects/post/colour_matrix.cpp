@@ -112,7 +112,7 @@ DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, T
     });
     TextureHandle graded =
         declared.create("colour.graded", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    declared.read(input);
+    declared.read(input).setTaps(1);
     return {declared, graded};
 }
 

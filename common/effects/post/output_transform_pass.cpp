@@ -60,7 +60,7 @@ Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
         });
     declared.read(linear);
     if (view) declared.read(view->before);
-    declared.writeColor(graph.output());
+    declared.writeColor(graph.output()).setTaps(1);  // one texel, either side
     return declared;
 }
 

@@ -75,7 +75,7 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     });
     TextureHandle result =
         blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    blurPass.read(input);
+    blurPass.read(input).setTaps(params.length > 0.0f ? params.samples : 1);
 
     const FullscreenPass* offsets = &offsets_;
     Pass& offsetPass = offsets_.addPass(graph, "radial blur offsets", [offsets, params](PassContext& ctx) {
@@ -84,6 +84,7 @@ RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
     });
     TextureHandle offset = offsetPass.create("blur.offset", {TextureSize::output(), TextureFormat::RG16F, 1},
                                              TextureUsage::ColorAttachment);
+    offsetPass.setTaps(0);
     return {{blurPass, result}, {offsetPass, offset}};
 }
 

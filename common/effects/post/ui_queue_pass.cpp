@@ -25,7 +25,7 @@ Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
                            float(rect.width), float(rect.height));
         pass->draw({});
     });
-    ui.modify(graph.output(), TextureUsage::ColorAttachment);
+    ui.modify(graph.output(), TextureUsage::ColorAttachment).setTaps(0);  // a flat panel, no texture
     // The chapter's overlay queue: depth test off, blending on. Depth writes are left as they are
     // (on): the chapter's engine never turns them off, and with the test off nothing is written.
     ui.setState({.viewport = rect,

@@ -4,6 +4,7 @@
 
 #include "base/log.hpp"
 #include "effects/scene/scene_meshes.hpp"
+#include "gl/device_limits.hpp"
 
 namespace fx {
 namespace {
@@ -14,6 +15,17 @@ GLuint textureFor(const GltfModel& model, int index, MaterialTextures& textures)
     if (!t.file.empty()) return textures.file(t.file);
     if (!t.encoded.empty()) return textures.encoded(cat(model.file.string(), "#texture", index), t.encoded);
     return textures.white();
+}
+
+// A skin's joint matrices are one storage block: a skin with more joints than the device's block holds
+// is drawn unskinned, in its bind pose, with a warning (docs/reliability.md, "Budgets").
+bool jointsFit(const GltfModel& model, int skin, const std::string& label) {
+    const gl::DeviceLimits device = gl::queryDeviceLimits();
+    const std::size_t joints = model.skins[static_cast<std::size_t>(skin)].joints.size();
+    Status fits = gl::checkStorageBlock(device, joints, sizeof(glm::mat4),
+                                        cat(label, ": skin ", skin, "'s joint matrices"));
+    if (!fits) log::warning(fits.error(), "; drawn unskinned, in its bind pose");
+    return fits.ok();
 }
 
 }  // namespace
@@ -41,7 +53,7 @@ GpuModel::GpuModel(std::shared_ptr<const GltfModel> model, MaterialTextures& tex
             Part part;
             part.material = prim.material;
             // A mesh with joints is skinned only on a node that has a skin (the loader warned otherwise).
-            part.skinned = prim.skinned() && n.skin >= 0;
+            part.skinned = prim.skinned() && n.skin >= 0 && jointsFit(m, n.skin, partLabel);
             if (part.skinned) {
                 part.skinnedMesh = SkinnedMesh(prim.mesh, prim.influences, partLabel);
                 if (part.skinnedMesh.unweightedVertices() > 0)

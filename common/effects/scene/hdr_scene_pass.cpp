@@ -38,7 +38,8 @@ HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const World& world,
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    runsWith(pass.setState(hdrSceneState(world.scene())), program_);
+    // Taps: the material's base colour and emissive textures.
+    runsWith(pass.setState(hdrSceneState(world.scene())).setTaps(2), program_);
     return targets;
 }
 

@@ -6,7 +6,7 @@
 
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
-#include "image/png_file.hpp"
+#include "gl/texture_image.hpp"
 
 namespace fx {
 
@@ -37,7 +37,7 @@ GLuint MaterialTextures::file(const std::filesystem::path& path) {
     std::string key = path.lexically_normal().string();
     if (auto it = textures_.find(key); it != textures_.end()) return it->second.name();
     if (std::find(failures_.begin(), failures_.end(), key) != failures_.end()) return white();
-    auto image = readPng(path);
+    auto image = gl::readTextureImage(path);
     if (!image) {
         log::error(image.error(), "; drawn without the texture");
         failures_.push_back(key);
@@ -50,7 +50,7 @@ GLuint MaterialTextures::file(const std::filesystem::path& path) {
 GLuint MaterialTextures::encoded(const std::string& key, const std::vector<unsigned char>& bytes) {
     if (auto it = textures_.find(key); it != textures_.end()) return it->second.name();
     if (std::find(failures_.begin(), failures_.end(), key) != failures_.end()) return white();
-    auto image = decodeImage(std::as_bytes(std::span(bytes.data(), bytes.size())), key);
+    auto image = gl::decodeTextureImage(std::as_bytes(std::span(bytes.data(), bytes.size())), key);
     if (!image) {
         log::error(image.error(), "; drawn without the texture");
         failures_.push_back(key);

@@ -35,6 +35,11 @@ void drawShadowed(GLuint program, const World& world, const CameraMatrices& came
     drawWithPlacements(program, world, placements);
 }
 
+// Texture lookups per shaded pixel of shadowed_scene.frag: base colour, emissive, and the PCF taps.
+int shadowedSceneTaps(const ShadowLookup& lookup, bool hasMap) {
+    return 2 + (hasMap ? shadowLookupTaps(lookup) : 0);
+}
+
 }  // namespace
 
 HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
@@ -54,7 +59,8 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    runsWith(pass.setState(hdrSceneState(world.scene())), program_);
+    runsWith(pass.setState(hdrSceneState(world.scene())).setTaps(shadowedSceneTaps(lookup, hasMap)),
+             program_);
     return targets;
 }
 
@@ -83,7 +89,7 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const World& wo
                 TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(world.scene());
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
-    pass.setState(state);
+    pass.setState(state).setTaps(shadowedSceneTaps(lookup, hasMap));
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");
     runsWith(pass, program_);
     return color;

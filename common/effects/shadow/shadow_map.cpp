@@ -77,6 +77,10 @@ OperationCount operationCount(SkinningProduct product) {
     return product == SkinningProduct::parenthesised ? OperationCount{32, 24} : OperationCount{80, 60};
 }
 
+int shadowLookupTaps(const ShadowLookup& lookup) {
+    return lookup.enabled ? std::clamp(lookup.filterTaps, 1, kShadowMaxFilterTaps) : 0;
+}
+
 ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light, float filterRadiusMetres) {
     ShadowLookup lookup;
     lookup.light = light;
@@ -215,6 +219,7 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, cons
         // The chapter's bug: depth test, depth write and blend are whatever the previous pass left.
         pass.setState({.faceCulling = false, .clearDepth = 1.0f});
     }
+    pass.setTaps(1);  // the base colour's alpha, for the cutoff
     runsWith(pass, static_);
     runsWith(pass, skinnedReloadable(options.product));
     return out;
@@ -236,6 +241,7 @@ TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShado
         pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
                     TextureUsage::ColorAttachment);
     if (map.pass) pass.read(map.map);
+    pass.setTaps(1);
     if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
     return out;
 }

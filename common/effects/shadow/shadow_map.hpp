@@ -106,6 +106,9 @@ struct ShadowLookup {
 // filterRadiusMetres <= 0 means 1.5 texels of this map.
 ShadowLookup shadowLookup(const ShadowSettings& settings, const LightView& light,
                           float filterRadiusMetres = 0.0f);
+// Texture lookups of shadow_lookup.glsl's shadowVisibility per shaded pixel: the PCF taps, none when off
+// (a pass's taps, render/pass_traffic.hpp).
+int shadowLookupTaps(const ShadowLookup& lookup);
 
 struct DeclaredShadowMap {
     Pass* pass = nullptr;     // null when the scene has no shadow-casting light

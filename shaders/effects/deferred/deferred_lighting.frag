@@ -25,7 +25,7 @@ layout(location = kTilesXLocation) uniform int tilesX;
 layout(location = 0) out vec4 color;
 
 const float kSpecular = 0.3;
-const float kShininess = 40.0;
+const float kShininess = SHININESS;  // 40 in the lessons (DeferredLighting's constructor)
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -24,6 +24,14 @@ float pointLightAttenuation(float distance, float radius) {
     return w * w;
 }
 
+// The highlight's falloff max(n.h, 0)^shininess. GLSL leaves pow(0, 0) undefined (it is
+// exp2(0 x log2(0)) = exp2(0 x -inf): NaN on many GPUs), and n.h is 0 where the half vector is
+// perpendicular to the normal or zero; an exponent of 0 (or below) is a flat highlight, 1 everywhere.
+// A huge exponent underflows to 0 below n.h = 1, which is the limit, and stays 1 at n.h = 1.
+float specularFalloff(float nh, float shininess) {
+    return shininess > 0.0 ? pow(nh, shininess) : 1.0;
+}
+
 // Diffuse + specular light from light `i` at world point p with unit (or zero) normal n, viewed
 // along v (unit, from the point to the eye).
 vec3 pointLightAt(int i, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess) {
@@ -39,5 +47,5 @@ vec3 pointLightAt(int i, vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, fl
     vec3 h = l + v;
     float hLength = length(h);
     float nh = hLength > 1e-6 ? max(dot(n, h / hLength), 0.0) : 0.0;
-    return att * light.color.rgb * (albedo * lambert + specular * pow(nh, shininess));
+    return att * light.color.rgb * (albedo * lambert + specular * specularFalloff(nh, shininess));
 }

@@ -40,8 +40,9 @@ TEST(LessonSwitch, TheNextLessonKeepsTheCommonFlagsAndTheWindowSize) {
 }
 
 TEST(LessonSwitch, EachStepOfAllStepsHasItsOwnFolder) {
-    Args args = {"--all-steps", "--capture", "slides", "--size", "640x360", "--report", "r.json"};
+    Args args = {"--all-steps", "--capture", "slides",  "--size", "640x360",
+                 "--report",    "r.json",    "--graph", "g.dot"};
     EXPECT_EQ(fx::stepCaptureArguments(args, "slides", 2),
               (Args{"--headless", "--size", "640x360", "--step", "2", "--capture", "slides/step-2",
-                    "--report", "slides/step-2/report.json"}));
+                    "--report", "slides/step-2/report.json", "--graph", "slides/step-2/graph.dot"}));
 }

@@ -71,3 +71,39 @@ TEST(PanelLayout, SharesFromAFileAreBroughtIntoRange) {
     EXPECT_EQ(s.lesson, 0.2f);
     EXPECT_EQ(s.picture, 0.8f);
 }
+
+TEST(PanelLayout, ThePictureKeepsItsAspectInsideItsPlace) {
+    // The default 1280x720 window: the place beside the column is 896x720, the 16:9 picture 896x504.
+    auto l = fx::computePanelLayout(1280, 720, {}, false, 19.0f, 300.0f);
+    LayoutRect p = fx::keepAspect(l.picture, 16.0 / 9.0);
+    EXPECT_EQ(p.x, 384.0f);
+    EXPECT_EQ(p.y, 108.0f);
+    EXPECT_EQ(p.width, 896.0f);
+    EXPECT_EQ(p.height, 504.0f);
+    // A wide place: bars left and right.
+    p = fx::keepAspect({10, 20, 1000, 100}, 16.0 / 9.0);
+    EXPECT_EQ(p.height, 100.0f);
+    EXPECT_EQ(p.width, 178.0f);
+    EXPECT_EQ(p.x, 10.0f + 411.0f);
+    // Free: the place as it is; tiny places keep a pixel.
+    EXPECT_EQ(fx::keepAspect({5, 6, 70, 80}, 0.0).width, 70.0f);
+    p = fx::keepAspect({0, 0, 1, 1}, 16.0 / 9.0);
+    EXPECT_EQ(p.width, 1.0f);
+    EXPECT_EQ(p.height, 1.0f);
+    EXPECT_EQ(fx::keepAspect({0, 0, 0, 0}, 16.0 / 9.0).width, 0.0f);
+    // Every size of the sweep: inside its place and at the aspect to within a pixel.
+    for (int w : {1, 7, 333, 896, 1920}) {
+        for (int h : {1, 5, 504, 720, 1080}) {
+            const LayoutRect place{3, 4, float(w), float(h)};
+            const LayoutRect r = fx::keepAspect(place, 16.0 / 9.0);
+            EXPECT_GE(r.x, place.x);
+            EXPECT_GE(r.y, place.y);
+            EXPECT_LE(r.right(), place.right());
+            EXPECT_LE(r.bottom(), place.bottom());
+            EXPECT_TRUE(r.width == place.width || r.height == place.height) << w << "x" << h;
+            if (r.width > 16 && r.height > 9) {
+                EXPECT_NEAR(r.width / r.height, 16.0 / 9.0, 2.0 / r.height);
+            }
+        }
+    }
+}

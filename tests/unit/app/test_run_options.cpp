@@ -147,14 +147,33 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
         EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
             << flag << ": " << (o.ok() ? "" : o.error());
     }
-    EXPECT_EQ(
-        inHelp,
-        (std::set<std::string>{
-            "--headless",    "--size",   "--frames",       "--step",          "--scene",     "--lang",
-            "--param",       "--preset", "--capture",      "--capture-float", "--report",    "--graph",
-            "--time-step",   "--seed",   "--timing",       "--inspect",       "--overlay",   "--no-overlay",
-            "--bench",       "--knob",   "--bench-frames", "--bench-values",  "--bench-out", "--list-steps",
-            "--list-params", "--help",   "--press",        "--all-steps",     "--resize"}));
+    EXPECT_EQ(inHelp,
+              (std::set<std::string>{
+                  "--headless",     "--size",           "--frames",       "--step",       "--scene",
+                  "--lang",         "--param",          "--preset",       "--capture",    "--capture-float",
+                  "--report",       "--graph",          "--time-step",    "--seed",       "--timing",
+                  "--inspect",      "--overlay",        "--no-overlay",   "--bench",      "--knob",
+                  "--bench-frames", "--bench-values",   "--bench-out",    "--list-steps", "--list-params",
+                  "--help",         "--press",          "--all-steps",    "--resize",     "--picture-scale",
+                  "--aspect",       "--min-frame-time", "--resource-log", "--cost",       "--dump-shaders"}));
+}
+
+TEST(RunOptions, PictureScaleAspectAndASlowRendererImitated) {
+    auto o = parseRunOptions({"--picture-scale", "40%", "--aspect", "4:3", "--min-frame-time", "150"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_DOUBLE_EQ(*o->pictureScale, 0.4);
+    EXPECT_DOUBLE_EQ(o->aspect, 4.0 / 3.0);
+    EXPECT_EQ(o->minFrameMs, 150);
+    // The defaults: automatic, 16:9, no wait.
+    o = parseRunOptions({});
+    EXPECT_FALSE(o->pictureScale.has_value());
+    EXPECT_DOUBLE_EQ(o->aspect, 16.0 / 9.0);
+    EXPECT_EQ(o->minFrameMs, 0);
+    o = parseRunOptions({"--picture-scale", "0.25", "--aspect", "free"});
+    EXPECT_DOUBLE_EQ(*o->pictureScale, 0.25);
+    EXPECT_EQ(o->aspect, 0.0);
+    EXPECT_DOUBLE_EQ(parseRunOptions({"--aspect", "1.85"})->aspect, 1.85);
+    EXPECT_FALSE(parseRunOptions({"--picture-scale", "auto"})->pictureScale.has_value());
 }
 
 fx::FrameReport reportWithTextures(std::vector<std::string> names) {
@@ -212,24 +231,31 @@ TEST_P(RunOptionsErrors, NameTheFlagAndWhatItTakes) {
 
 INSTANTIATE_TEST_SUITE_P(
     All, RunOptionsErrors,
-    ::testing::Values(BadFlag{{"--size", "12"}, "--size: expected WxH with sizes from 0 to 16384"},
-                      BadFlag{{"--size", "-1x5"}, "--size"}, BadFlag{{"--size", "20000x5"}, "16384"},
-                      BadFlag{{"--frames", "0"}, "--frames: expected a frame count from 1"},
-                      BadFlag{{"--frames", "two"}, "--frames"},
-                      BadFlag{{"--step", "6"}, "--step: expected a step number from 1 to 5"},
-                      BadFlag{{"--step", "0"}, "--step: expected a step number from 1 to 5"},
-                      BadFlag{{"--lang", "fr"}, "--lang: expected one of en, ja; got \"fr\""},
-                      BadFlag{{"--graph", ""}, "--graph: needs a path"},
-                      BadFlag{{"--scene", ""}, "--scene: needs a path"},
-                      BadFlag{{"--inspect", ""}, "--inspect: needs a texture name"},
-                      BadFlag{{"--bench-frames", "0"},
-                              "--bench-frames: expected a frame count from 1 to 1000"},
-                      BadFlag{{"--time-step", "0"}, "--time-step: expected seconds greater than 0"},
-                      BadFlag{{"--time-step", "nan"}, "--time-step"}, BadFlag{{"--seed", "-3"}, "--seed"},
-                      BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
-                      BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
-                      BadFlag{{"--frames"}, "--frames: needs a value"},
-                      BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
+    ::testing::Values(
+        BadFlag{{"--size", "12"}, "--size: expected WxH with sizes from 0 to 16384"},
+        BadFlag{{"--size", "-1x5"}, "--size"}, BadFlag{{"--size", "20000x5"}, "16384"},
+        BadFlag{{"--frames", "0"}, "--frames: expected a frame count from 1"},
+        BadFlag{{"--frames", "two"}, "--frames"},
+        BadFlag{{"--step", "6"}, "--step: expected a step number from 1 to 5"},
+        BadFlag{{"--step", "0"}, "--step: expected a step number from 1 to 5"},
+        BadFlag{{"--lang", "fr"}, "--lang: expected one of en, ja; got \"fr\""},
+        BadFlag{{"--graph", ""}, "--graph: needs a path"}, BadFlag{{"--scene", ""}, "--scene: needs a path"},
+        BadFlag{{"--inspect", ""}, "--inspect: needs a texture name"},
+        BadFlag{{"--bench-frames", "0"}, "--bench-frames: expected a frame count from 1 to 1000"},
+        BadFlag{{"--time-step", "0"}, "--time-step: expected seconds greater than 0"},
+        BadFlag{{"--time-step", "nan"}, "--time-step"},
+        BadFlag{{"--picture-scale", "0.05"}, "--picture-scale: expected auto, or a share"},
+        BadFlag{{"--picture-scale", "150%"}, "--picture-scale"},
+        BadFlag{{"--picture-scale", "half"}, "--picture-scale"},
+        BadFlag{{"--aspect", "16:0"}, "--aspect: expected W:H"}, BadFlag{{"--aspect", "wide"}, "--aspect"},
+        BadFlag{{"--aspect", "0.01"}, "--aspect"},
+        BadFlag{{"--min-frame-time", "-5"}, "--min-frame-time: expected milliseconds"},
+        BadFlag{{"--seed", "-3"}, "--seed"}, BadFlag{{"--param", "novalue"}, "--param: expected name=value"},
+        BadFlag{{"--timing", "maybe"}, "--timing: expected one of gpu, fenced, off"},
+        BadFlag{{"--cost", "money"}, "--cost: expected one of time, traffic; got \"money\""},
+        BadFlag{{"--dump-shaders", ""}, "--dump-shaders: needs a path"},
+        BadFlag{{"--frames"}, "--frames: needs a value"},
+        BadFlag{{"--bogus"}, "unknown option \"--bogus\""}));
 
 TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto o = parseRunOptions({"--graph", "out/frame.dot"});
@@ -238,6 +264,17 @@ TEST(RunOptions, GraphTakesTheDotFileToWrite) {
     auto missing = parseRunOptions({"--graph", ""});
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("--graph: needs a path"), std::string::npos) << missing.error();
+}
+
+TEST(RunOptions, DumpShadersTakesAFolderAndCostAnAxis) {
+    auto o = parseRunOptions({"--dump-shaders", "out/shaders", "--bench", "--cost", "traffic"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->shaderDump, "out/shaders");
+    EXPECT_EQ(o->benchCost, fx::BenchCost::traffic);
+    auto plain = parseRunOptions({"--bench"});
+    ASSERT_TRUE(plain.ok()) << plain.error();
+    EXPECT_TRUE(plain->shaderDump.empty());
+    EXPECT_EQ(plain->benchCost, fx::BenchCost::time);
 }
 
 TEST(RunOptions, PressNamesAWindowKeyAndAFrame) {
@@ -282,4 +319,32 @@ TEST(RunOptions, HelpListsEveryKeyOfTheWindow) {
     }
     for (const char* key : {"space", "Page Down", "F3", "F4", "+", "F2", "F12"})
         EXPECT_NE(help.find(std::string("\n  ") + key), std::string::npos) << key;
+}
+
+// A value the user typed is echoed cut to a readable length, its control characters escaped (issue: a
+// 5,000-character --inspect name printed 5,390 bytes).
+TEST(RunOptions, EchoedValuesAreCutAndEscaped) {
+    const std::string huge(5000, 'n');
+    auto report = reportWithTextures({"scene.hdr"});
+    auto warnings = fx::unknownInspectWarnings({huge}, report, 0);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_LT(warnings[0].size(), 300u) << warnings[0];
+    EXPECT_NE(warnings[0].find("... (5000 bytes)"), std::string::npos) << warnings[0];
+    // Every flag that echoes its value does the same.
+    for (const char* flag : {"--size", "--frames", "--lang", "--timing", "--time-step", "--param", "--press",
+                             "--resize", "--step"}) {
+        auto refused = parseRunOptions({flag, huge});
+        ASSERT_FALSE(refused.ok()) << flag;
+        EXPECT_LT(refused.error().size(), 300u) << flag << ": " << refused.error();
+    }
+    auto unknown = parseRunOptions({"--" + huge});
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_LT(unknown.error().size(), 300u) << unknown.error();
+    auto twice = parseRunOptions({"--scene", "a.json", "--scene", huge});
+    ASSERT_FALSE(twice.ok());
+    EXPECT_LT(twice.error().size(), 300u) << twice.error();
+    // A newline or an escape sequence cannot start a new line or recolour the terminal.
+    auto control = parseRunOptions({"--size", "1x1\n\x1b[2J"});
+    ASSERT_FALSE(control.ok());
+    EXPECT_NE(control.error().find("1x1\\n\\u001b[2J"), std::string::npos) << control.error();
 }

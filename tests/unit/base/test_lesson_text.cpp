@@ -38,6 +38,29 @@ TEST(LessonText, StepSectionsBetweenOtherSectionsAndCode) {
     EXPECT_EQ((*texts)[1], "Two.");
 }
 
+// The whole file in sections, for the handout: the title, the parts around the steps, and the steps.
+TEST(LessonText, EverySectionInOrder) {
+    const std::string md =
+        "Before any heading.\n\n# Lesson 09: test\n\nIntro.\n\n## The frame\n\n```\n## Step 9: code\n```\n\n"
+        "## Step 1: First\n\nOne.\n\n### Sub\n\nMore.\n\n## Tests\n\nNot a step.\n";
+    auto sections = fx::parseLessonSections(md);
+    ASSERT_EQ(sections.size(), 5u);
+    EXPECT_EQ(sections[0].level, 0);
+    EXPECT_EQ(sections[0].text, "Before any heading.");
+    EXPECT_EQ(sections[1].level, 1);
+    EXPECT_EQ(sections[1].heading, "Lesson 09: test");
+    EXPECT_EQ(sections[1].text, "Intro.");
+    EXPECT_EQ(sections[2].heading, "The frame");
+    EXPECT_EQ(sections[2].text, "```\n## Step 9: code\n```");
+    EXPECT_FALSE(fx::isStepSection(sections[2]));
+    EXPECT_TRUE(fx::isStepSection(sections[3]));
+    EXPECT_EQ(sections[3].text, "One.\n\n### Sub\n\nMore.");
+    EXPECT_EQ(sections[3].line, 13);
+    EXPECT_EQ(sections[4].heading, "Tests");
+    // A file that starts with its title has no untitled part.
+    EXPECT_EQ(fx::parseLessonSections("# T\n\nx\n").size(), 1u);
+}
+
 TEST(LessonText, WindowsLineEndingsAreRead) {
     auto sections = parseStepSections("## Step 1: First\r\n\r\nText.\r\n", "lesson.md");
     ASSERT_TRUE(sections.ok());

@@ -30,6 +30,38 @@ TEST(Markdown, InlineStyles) {
     EXPECT_EQ(styles(parseSpans("**Seed `000`'s bloom.**")), "[B:Seed 000's bloom.]");
 }
 
+TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
+    // Each "[" used to search the rest of the text for "](": four million of them (a lesson.md may be 64
+    // MiB) took hours. Now one pass, and the link after them still reads as a link.
+    const std::string many(4'000'000, '[');
+    auto spans = parseSpans(many + "[a](x.md) ![pic](p.png)");
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_EQ(spans[0].text, many + "a ");
+    EXPECT_EQ(spans[1].text, "pic");
+    // Many "[" each with a long label that holds another "[" before the one link.
+    std::string labels;
+    for (int i = 0; i < 20000; ++i) labels += "[" + std::string(200, 'a');
+    // A million pictures that never close: each used to search the rest for ")".
+    std::string pictures;
+    for (int i = 0; i < 1'000'000; ++i) pictures += "![a](";
+    EXPECT_EQ(styles(parseSpans(pictures)), "[" + pictures + "]");
+    std::string read = "b " + labels;
+    read.erase(read.rfind('['), 1);  // the last "[" opens the link; its label is read as text
+    EXPECT_EQ(styles(parseSpans("[b](y) " + labels + "](z)")), "[" + read + "]");
+}
+
+TEST(Markdown, APictureWhoseAltTextHoldsBrackets) {
+    // Lesson 10 step 3's picture: the alt text quotes an interval, the target has parentheses.
+    EXPECT_EQ(
+        styles(parseSpans("![Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8](../x (1).png) "
+                          "after")),
+        "[P:Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8][ after]");
+    EXPECT_EQ(styles(parseSpans("see [the [1] table](t.md)")), "[see the [1] table]");
+    // Unbalanced: left as text, never a crash or a lost tail.
+    EXPECT_EQ(styles(parseSpans("![open [0, 1](p.png")), "[![open [0, 1](p.png]");
+    EXPECT_EQ(styles(parseSpans("[a] (b)")), "[[a] (b)]");
+}
+
 TEST(Markdown, BlocksOfAStep) {
     auto blocks = parseBlocks(
         "First line\ncontinues.\n\n- one\n  more\n   - nested\n3. numbered\n\n```\ncode ──►\n  "
@@ -49,6 +81,30 @@ TEST(Markdown, BlocksOfAStep) {
     EXPECT_EQ(styles(blocks[5].spans), "[Sub]");
     EXPECT_EQ(styles(blocks[6].spans), "[a  |  b]");
     EXPECT_EQ(styles(blocks[7].spans), "[P:][  |  c]");
+}
+
+// What the handout needs beyond the overlay: a picture's file, and a table's cells and header row.
+TEST(Markdown, PicturesKeepTheirFileAndTablesTheirCells) {
+    auto spans = parseSpans("see ![Step 1: a](../../docs/images/x.png) and [text](y.md)");
+    ASSERT_EQ(spans.size(), 3u);
+    EXPECT_EQ(spans[1].style, Style::Picture);
+    EXPECT_EQ(spans[1].target, "../../docs/images/x.png");
+    EXPECT_EQ(spans[2].target, "");  // a link keeps its text only, as the overlay shows it
+
+    auto blocks =
+        parseBlocks("| a | `b` |  |\n|---|---|---|\n| ![](p.png) |  | c |\n| d | e | f |\n\nAfter.");
+    ASSERT_EQ(blocks.size(), 4u);
+    EXPECT_TRUE(blocks[0].tableHeader);
+    EXPECT_FALSE(blocks[1].tableHeader);
+    ASSERT_EQ(blocks[0].cells.size(), 3u);  // the empty cell stays: the columns line up
+    EXPECT_EQ(styles(blocks[0].cells[1]), "[C:b]");
+    EXPECT_TRUE(blocks[0].cells[2].empty());
+    ASSERT_EQ(blocks[1].cells.size(), 3u);
+    EXPECT_EQ(blocks[1].cells[0].front().target, "p.png");
+    EXPECT_EQ(styles(blocks[2].cells[2]), "[f]");
+    EXPECT_TRUE(blocks[3].cells.empty());
+    // The overlay still reads each row as one line of text.
+    EXPECT_EQ(styles(blocks[0].spans), "[a  |  ][C:b]");
 }
 
 TEST(Markdown, JapaneseLinesJoinWithoutASpace) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "base/params.hpp"
 
 TEST(Params, ChecksTypeAndRangeAndKeepsTheOldValue) {
@@ -78,6 +80,59 @@ TEST(Params, PresetRoundTripAndAllOrNothingLoad) {
     EXPECT_FLOAT_EQ(a, 3.5f);  // nothing changed
 }
 
+// Presets are read by the same strict JSON reader as scenes (issue: duplicate keys and a trailing NUL
+// byte were accepted in presets and refused in scenes).
+TEST(Params, APresetIsReadAsStrictlyAsAScene) {
+    using namespace std::string_literals;
+    float a = 1.0f;
+    fx::ParamSet params;
+    params.addFloat("a", &a, 0.0f, 10.0f, "");
+    // The same key twice: JSON readers disagree on which one counts, so neither does.
+    auto twice = params.fromJson(R"({"a": "2", "a": "3"})", "p.json");
+    ASSERT_FALSE(twice.ok());
+    EXPECT_NE(twice.error().find("p.json: a: appears twice"), std::string::npos) << twice.error();
+    EXPECT_FLOAT_EQ(a, 1.0f);
+    // A NUL byte after the document: a preset is text.
+    auto nul = params.fromJson("{\"a\": \"2\"}\0"s, "p.json");
+    ASSERT_FALSE(nul.ok());
+    EXPECT_NE(nul.error().find("p.json:1:11: JSON syntax error: a NUL byte"), std::string::npos)
+        << nul.error();
+    EXPECT_FLOAT_EQ(a, 1.0f);
+    // Syntax errors carry the line and column, as a scene's do.
+    auto syntax = params.fromJson("{\n  \"a\": 2,\n}", "p.json");
+    ASSERT_FALSE(syntax.ok());
+    EXPECT_NE(syntax.error().find("p.json:3:1: JSON syntax error"), std::string::npos) << syntax.error();
+    // A value that is neither text nor a number, and a key the lesson lacks, named in full and escaped.
+    auto object = params.fromJson(R"({"a": {"x": 1}})", "p.json");
+    ASSERT_FALSE(object.ok());
+    EXPECT_NE(object.error().find("p.json: a: expected a number or a string, got an object"),
+              std::string::npos)
+        << object.error();
+    auto unknown = params.fromJson(R"({"x\u0000y": 1})", "p.json");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_NE(unknown.error().find("p.json: x\\u0000y: no such parameter"), std::string::npos)
+        << unknown.error();
+}
+
+TEST(Params, EchoedValuesAreCutAndEscaped) {
+    float length = 0.02f;
+    fx::ParamSet params;
+    params.addFloat("length", &length, 0.0f, 0.5f, "blur length");
+    const std::string huge(5000, '7');
+    for (const std::string& assignment : {"length=" + huge, huge + "=1", "length=1\n" + huge}) {
+        auto refused = params.assign(assignment);
+        ASSERT_FALSE(refused.ok());
+        EXPECT_LT(refused.error().size(), 300u) << refused.error();
+        EXPECT_EQ(refused.error().find('\n'), std::string::npos) << refused.error();
+    }
+    // The range of a float parameter prints as the float it is, and a refusal near it differs from it.
+    auto near = params.assign("length=0.50000001");
+    ASSERT_FALSE(near.ok());
+    EXPECT_NE(near.error().find("0.50000001 is out of range; expected a number from 0 to 0.5"),
+              std::string::npos)
+        << near.error();
+}
+
 TEST(Params, EveryValueKnowsWhereItCameFrom) {
     float threshold = 1.0f;
     int levels = 6;
@@ -102,7 +157,14 @@ TEST(Params, EveryValueKnowsWhereItCameFrom) {
     EXPECT_EQ(source("threshold"), "scene");
     EXPECT_EQ(source("tone_map"), "scene");
     EXPECT_EQ(source("levels"), "default");  // the scene has no levels
-    EXPECT_EQ(params.unusedSettings(scene), std::vector<std::string>{"postEffects.bloom.knee"});
+    // The knee was written (not its default), and the lesson reads the bloom's threshold: a user could
+    // have meant it for this lesson. At its default it may never have been written: no word.
+    const std::vector<fx::SettingText> defaults{{"postEffects.bloom.knee", "0.5"},
+                                                {"postEffects.bloom.levels", "6"}};
+    EXPECT_EQ(params.unusedSettings(scene, defaults), std::vector<std::string>{"postEffects.bloom.knee"});
+    EXPECT_TRUE(params.unusedSettings({{"postEffects.bloom.knee", "0.5"}}, defaults).empty());
+    // A group the lesson reads nothing of (another lesson's effect) is none of its business.
+    EXPECT_TRUE(params.unusedSettings({{"postEffects.radialBlur.length", "0.7"}}, defaults).empty());
     ASSERT_TRUE(params.fromJson(R"({"levels": "4"})", "p.json").ok());
     EXPECT_EQ(source("levels"), "preset");
     ASSERT_TRUE(params.assign("threshold=3").ok());

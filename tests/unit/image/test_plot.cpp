@@ -222,5 +222,51 @@ TEST(Plot, TinyAndZeroSizesDoNotCrash) {
     }
 }
 
+// Lesson 09's max_coc: 16, 32 and 64 px give the same picture at the same cost; 8 clamps the blur.
+// The taps: 16 and 22 cost the same within their spreads, 43 and 71 clearly more.
+TEST(Plot, SettingsThatCostTheSameShowAsSuchInTheOrderOfTheirValues) {
+    ScatterPlot maxCoc;
+    maxCoc.points = {{"8", 36.2, 0.020, false, false, 35.0, 37.5},
+                     {"16", 35.9, 0.015, false, true, 34.9, 37.0},
+                     {"32", 36.4, 0.015, false, false, 35.2, 37.9},
+                     {"64", 35.5, 0.015, true, false, 34.6, 36.8}};
+    ScatterPlot g = groupEqualCosts(maxCoc);
+    ASSERT_EQ(g.points.size(), 2u);
+    EXPECT_EQ(g.points[0].label, "8");
+    EXPECT_EQ(g.points[1].label, "16 = 32 = 64") << "one marker, the values in their order";
+    EXPECT_TRUE(g.points[1].isReference);
+    EXPECT_TRUE(g.points[1].isCurrent);
+    EXPECT_DOUBLE_EQ(g.points[0].x, g.points[1].x) << "one cost for the group: the median";
+    EXPECT_DOUBLE_EQ(g.points[0].x, 0.5 * (35.9 + 36.2));
+    EXPECT_DOUBLE_EQ(g.points[1].xLow, 34.6);
+    EXPECT_DOUBLE_EQ(g.points[1].xHigh, 37.9);
+    ASSERT_EQ(g.notes.size(), 1u);
+    EXPECT_EQ(g.notes[0], "same cost within the spread, drawn at one: 8, 16, 32, 64");
+
+    ScatterPlot taps;
+    taps.points = {{"16", 32.0, 0.0166, false, false, 30.5, 34.0},
+                   {"22", 31.5, 0.0167, false, true, 30.0, 36.8},
+                   {"43", 45.9, 0.0166, false, false, 44.0, 47.0},
+                   {"71", 62.3, 0.0153, false, false, 57.5, 64.0},
+                   {"accumulation", 560.0, 0.0, true, false, 540.0, 590.0}};
+    g = groupEqualCosts(taps);
+    ASSERT_EQ(g.points.size(), 5u);
+    EXPECT_EQ(g.points[0].label, "16");
+    EXPECT_EQ(g.points[1].label, "22");
+    EXPECT_EQ(g.points[0].x, g.points[1].x) << "16 and 22: no order of cost to show";
+    EXPECT_DOUBLE_EQ(g.points[2].x, 45.9) << "43 stands apart";
+    EXPECT_EQ(g.notes, (std::vector<std::string>{"same cost within the spread, drawn at one: 16, 22"}));
+    // Without spreads only equal costs group; NaN stays for the layout to name.
+    ScatterPlot plain;
+    plain.points = {{"a", 1.0, 0.5}, {"b", 1.0, 0.5}, {"c", 2.0, 0.1}, {"d", std::nan(""), 0.2}};
+    g = groupEqualCosts(plain);
+    ASSERT_EQ(g.points.size(), 3u);
+    EXPECT_EQ(g.points[0].label, "a = b");
+    EXPECT_EQ(g.points[1].label, "c");
+    EXPECT_EQ(g.points[2].label, "d");
+    // The picture draws the grouped plot: its labels hold the merged one.
+    EXPECT_FALSE(isFlat(renderScatterPlot(maxCoc), 0));
+}
+
 }  // namespace
 }  // namespace fx

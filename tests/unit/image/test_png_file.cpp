@@ -142,3 +142,22 @@ TEST(PngFile, FailedReplaceKeepsNothingBesideTheTarget) {
 
 }  // namespace
 }  // namespace fx
+
+// A small file that decodes to a huge picture is refused from its header (docs/reliability.md, "Budgets").
+TEST(PngFile, AnImageOverThePixelLimitIsRefusedBeforeItIsDecoded) {
+    // 65 KB of PNG, one black grey row past 8192 x 8192: 268 MB once decoded to RGBA. Made by Python's
+    // zlib (IHDR 8192 x 8193, grey, 8 bits; IDAT the rows compressed; CRCs right), so stb reads it whole.
+    auto decoded =
+        fx::readPng(std::filesystem::path(FXLAB_TEST_DATA) / "images" / "over_pixel_limit_8192x8193.png");
+    ASSERT_FALSE(decoded.ok());
+    EXPECT_NE(
+        decoded.error().find("over_pixel_limit_8192x8193.png: 8192 x 8193 pixels is over the limit for an "
+                             "image (67108864 pixels"),
+        std::string::npos)
+        << decoded.error();
+    // The boundary itself.
+    EXPECT_TRUE(fx::checkImagePixels(8192, 8192, "at.png").ok());
+    EXPECT_TRUE(fx::checkImagePixels(67108864, 1, "line.png").ok());
+    EXPECT_FALSE(fx::checkImagePixels(8192, 8193, "over.png").ok());
+    EXPECT_FALSE(fx::checkImagePixels(67108865, 1, "line.png").ok());
+}

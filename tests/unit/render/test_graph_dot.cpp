@@ -138,5 +138,16 @@ TEST(GraphDot, AFrameWithErrorsSaysNothingRan) {
     EXPECT_TRUE(contains(toDot(graph.report()), "\"frame at 8x8, 1 error(s): nothing ran\""));
 }
 
+TEST(GraphDot, TheSameGraphTopToBottom) {
+    FrameReport report;
+    report.outputSize = {8, 8};
+    const std::string leftToRight = toDot(report);
+    const std::string topDown = topToBottom(leftToRight);
+    EXPECT_TRUE(contains(leftToRight, "rankdir=LR"));
+    EXPECT_TRUE(contains(topDown, "graph [rankdir=TB, bgcolor=\"white\""));
+    EXPECT_FALSE(contains(topDown, "rankdir=LR"));
+    EXPECT_EQ(topDown.size(), leftToRight.size());  // nothing else changed
+}
+
 }  // namespace
 }  // namespace fx

@@ -55,7 +55,7 @@ TEST(ClipSelection, AMissingClipListsTheFilesClipsAndTheNearestName) {
     EXPECT_EQ(clip.error(), "has no clip \"wav\" (did you mean \"wave\"?); its clips: walk, wave");
     auto none = fx::selectClips(fx::GltfModel{}, playing({"walk"}));
     ASSERT_FALSE(none.ok());
-    EXPECT_EQ(none.error(), "the file has no animation clips");
+    EXPECT_EQ(none.error(), "has no animation clips");
 }
 
 TEST(ClipSelection, SceneFilesNameSeveralClipsAsAListOrAllAsAStar) {

@@ -7,8 +7,11 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -573,4 +576,106 @@ TEST(GltfLoader, AFolderOrDeviceIsRefusedWithTheReadersReason) {
     auto device = fx::loadGltf("/dev/zero");
     ASSERT_FALSE(device.ok());
     EXPECT_TRUE(scene_test::contains(device.error(), "character device")) << device.error();
+}
+
+// Refusals tinygltf gives without a reason, or with one that hides the rule: fxlab finds the rule first.
+TEST(GltfLoader, ASkinWithoutJointsIsRefusedNamingTheRule) {
+    // Khronos' RiggedFigure sample was refused with "tinygltf refused it without giving a reason".
+    json doc = json::parse(quad(5123));
+    doc["skins"] = json::array({{{"name", "rig"}, {"skeleton", 0}}});
+    doc["nodes"][0]["skin"] = 0;
+    auto model = parse(doc.dump());
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(), "skin 0 'rig': has no \"joints\"")) << model.error();
+    EXPECT_TRUE(scene_test::contains(model.error(), "skin.joints")) << model.error();
+    EXPECT_FALSE(scene_test::contains(model.error(), "without giving a reason")) << model.error();
+}
+
+TEST(GltfLoader, DracoGeometryWithoutAnUncompressedCopyIsRefusedNamingDraco) {
+    // Draco used but not listed as required, the accessors without data: tinygltf said only
+    // "accessor[N] invalid bufferView".
+    json doc = json::parse(quad(5123));
+    json& primitive = doc["meshes"][0]["primitives"][0];
+    doc["accessors"][primitive["indices"].get<int>()].erase("bufferView");
+    primitive["extensions"] = {
+        {"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
+    doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    auto model = parse(doc.dump());
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(),
+                                     "mesh 0 'quad' primitive 0: compressed with Draco "
+                                     "(KHR_draco_mesh_compression)"))
+        << model.error();
+    EXPECT_FALSE(scene_test::contains(model.error(), "invalid bufferView")) << model.error();
+}
+
+TEST(GltfLoader, DracoWithAnUncompressedCopyLoadsTheCopy) {
+    json doc = json::parse(quad(5123));
+    doc["meshes"][0]["primitives"][0]["extensions"] = {
+        {"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
+    doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    auto model = parse(doc.dump());
+    ASSERT_TRUE(model.ok()) << model.error();
+    EXPECT_EQ(model->meshes.at(0).primitives.at(0).mesh.vertexCount(), 4u);
+}
+
+TEST(GltfLoader, TheSameRulesHoldForABinaryFile) {
+    // A .glb holding the skin without joints: the JSON chunk is checked before tinygltf sees it.
+    json doc = json::parse(quad(5123));
+    doc["skins"] = json::array({{{"name", "rig"}}});
+    std::string chunk = doc.dump();
+    while (chunk.size() % 4) chunk += ' ';
+    std::string glb = "glTF";
+    auto word = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) glb += char((v >> (8 * i)) & 0xFF);
+    };
+    word(2);
+    word(std::uint32_t(12 + 8 + chunk.size()));
+    word(std::uint32_t(chunk.size()));
+    glb += "JSON";
+    glb += chunk;
+    auto model =
+        fx::parseGltfBytes(std::as_bytes(std::span(glb.data(), glb.size())), FXLAB_TEST_DATA, "test.glb");
+    ASSERT_FALSE(model.ok());
+    EXPECT_TRUE(scene_test::contains(model.error(), "test.glb: skin 0 'rig': has no \"joints\""))
+        << model.error();
+}
+
+// The models' vertices over all objects are bounded (each object draws its own copy on the GPU): a scene
+// exactly at the limit loads, one vertex more is refused naming the object and the total.
+TEST(GltfLoader, TheScenesVerticesOverAllObjectsAreBounded) {
+    auto model = [](int vertices) {
+        Doc d;
+        int pos = d.floats(std::vector<float>(std::size_t(vertices) * 3, 0.0f), "VEC3", 3);
+        int idx = d.accessor(std::vector<std::uint32_t>{0, 1, 2}, 5125, "SCALAR", 3);
+        d["meshes"] =
+            json::array({{{"primitives", {{{"attributes", {{"POSITION", pos}}}, {"indices", idx}}}}}});
+        d["nodes"] = json::array({{{"mesh", 0}}});
+        return d.finish();
+    };
+    const fs::path dir = fs::temp_directory_path() / ("fx_vertex_budget_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    ASSERT_TRUE(fx::writeFileAtomically(dir / "a.gltf", model(2048)).ok());
+    ASSERT_TRUE(fx::writeFileAtomically(dir / "b.gltf", model(2049)).ok());
+    auto scene = [&](const char* last) {
+        json objects = json::array();
+        for (int i = 0; i < 4096; ++i)
+            objects.push_back({{"name", "o" + std::to_string(i)}, {"gltf", i == 4095 ? last : "a.gltf"}});
+        fx::SceneLoadOptions options;
+        options.assetRoot = dir;
+        return fx::parseScene(json{{"name", "many objects"},
+                                   {"camera", {{"position", {0, 2, 8}}, {"target", {0, 0, 0}}}},
+                                   {"objects", objects}}
+                                  .dump(),
+                              dir / "s.json", options);
+    };
+    auto at = scene("a.gltf");  // 4096 x 2048 = 2^23
+    EXPECT_TRUE(at.ok()) << at.error();
+    auto over = scene("b.gltf");
+    ASSERT_FALSE(over.ok());
+    EXPECT_TRUE(scene_test::contains(over.error(),
+                                     "objects[4095].gltf: the models of objects[0] to objects[4095] "
+                                     "have 8388609 vertices together"))
+        << over.error();
+    fs::remove_all(dir);
 }

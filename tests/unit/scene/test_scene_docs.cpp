@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/file_io.hpp"
+#include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_settings.hpp"
@@ -66,13 +67,15 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         row("any string (names, descriptions, paths, field names)",
             std::to_string(limits::kMaxStringBytes) + " bytes"),
         row("nesting of objects and arrays", std::to_string(limits::kMaxNesting) + " levels"),
+        row("vertices of glTF models over all objects (each object draws its own copy)",
+            std::to_string(limits::kMaxDrawnVertices) + " (2^23)"),
         row("glTF file, its `.bin` buffers and images",
             fx::describeByteCount(fx::file_limits::gltf.maxBytes) + " each"),
         row("PNG texture", fx::describeByteCount(fx::file_limits::png.maxBytes)),
     };
     for (const std::string& expected : rows)
         EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
-    EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(limits::kExcerptBytes) + " bytes"),
+    EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(fx::kExcerptBytes) + " bytes"),
               std::string::npos);
 }
 

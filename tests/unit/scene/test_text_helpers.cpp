@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "base/text_position.hpp"
 #include "scene/closest_name.hpp"
-#include "scene/text_position.hpp"
 
 namespace {
 

@@ -72,6 +72,36 @@ TEST(ThinLens, ChapterTableWithinAThousandthOfAPixel) {
     EXPECT_NEAR(fx::signedCocPixelsUnclamped(m5, 500.0), 4.9, 0.05);
 }
 
+TEST(ThinLens, TheChaptersOtherFocusDistances) {
+    // P = 1 m: the background (the sky at far = 500 m) about 23.9 px; P = 100 m: a 1 m object 24.4 px.
+    fx::ThinLensInput at1 = chapterDefaults(CocConvention::chapter);
+    at1.lens.focusDistanceM = 1.0f;
+    EXPECT_NEAR(fx::signedCocPixelsUnclamped(fx::thinLensModel(at1), 500.0), 23.9, 0.05);
+    EXPECT_NEAR(chapterCocPixels(1.0, 500.0), 23.9, 0.05);
+    fx::ThinLensInput at100 = chapterDefaults(CocConvention::chapter);
+    at100.lens.focusDistanceM = 100.0f;
+    EXPECT_NEAR(-fx::signedCocPixelsUnclamped(fx::thinLensModel(at100), 1.0), 24.4, 0.05);
+    EXPECT_NEAR(chapterCocPixels(100.0, 1.0), 24.4, 0.05);
+}
+
+TEST(ThinLens, TheLensThatMatchesTheDisplayedFramingBlursMoreThanTheChapters) {
+    // The chapter shows fovY = 60 x 0.5 = 30 deg at 16:9, about 50.9 deg across: a 36 mm sensor behind
+    // I = 18 / (tan 15 deg x 16/9) = 37.79 mm. At f/1.4 focused on 15.264 m that lens has F = 37.69 mm
+    // and A = 26.92 mm, and blurs a 1 m object by 33.8 px: the chapter's 23.0 px is 0.68 of it.
+    fx::ThinLensInput shown = chapterDefaults(CocConvention::chapter);
+    shown.lens.focalLengthMm = float(18.0 / (std::tan(M_PI / 12.0) * 16.0 / 9.0));
+    EXPECT_NEAR(fx::horizontalFovDegrees(shown.lens), 50.9, 0.05);
+    fx::ThinLensModel m = fx::thinLensModel(shown);
+    EXPECT_NEAR(m.imageMm, 37.79, 0.005);
+    EXPECT_NEAR(m.focalMm, 37.69, 0.005);
+    EXPECT_NEAR(m.apertureMm, 26.92, 0.005);
+    const double matched = std::abs(fx::signedCocPixelsUnclamped(m, 1.0));
+    EXPECT_NEAR(matched, 33.8, 0.05);
+    const double chapter = std::abs(
+        fx::signedCocPixelsUnclamped(fx::thinLensModel(chapterDefaults(CocConvention::chapter)), 1.0));
+    EXPECT_NEAR(chapter / matched, 0.68, 0.005);
+}
+
 TEST(ThinLens, SignSaysNearOrFarField) {
     fx::ThinLensModel m = fx::thinLensModel(chapterDefaults(CocConvention::corrected));
     EXPECT_LT(fx::signedCocPixels(m, 2.0), 0.0);

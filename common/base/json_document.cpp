@@ -1,11 +1,9 @@
-#include "scene/json_document.hpp"
+#include "base/json_document.hpp"
 
-#include <limits>
 #include <vector>
 
 #include "base/log.hpp"
-#include "scene/json_field_reader.hpp"
-#include "scene/scene_limits.hpp"
+#include "base/message_text.hpp"
 
 namespace fx {
 namespace {
@@ -25,7 +23,7 @@ bool isUnexpectedLiteral(std::string_view message) {
 // own builder does not: its overflow error has no position at all.
 class TreeBuilder : public nlohmann::json_sax<Json> {
 public:
-    explicit TreeBuilder(std::string_view text) : text_(text) {}
+    TreeBuilder(std::string_view text, const JsonLimits& limits) : text_(text), limits_(limits) {}
 
     Json take() { return std::move(root_); }
 
@@ -101,11 +99,11 @@ private:
     }
 
     void checkLength(const std::string& text, std::string_view what) const {
-        if (text.size() > scene_limits::kMaxStringBytes)
+        if (text.size() > limits_.maxStringBytes)
             failField(
                 stack_.empty() ? "(top level)" : (what == "a field name" ? containerPath() : nextPath()),
-                cat(what, " of ", text.size(), " bytes (\"", scene_limits::excerpt(text),
-                    "\"); a scene allows at most ", scene_limits::kMaxStringBytes));
+                cat(what, " of ", text.size(), " bytes (\"", excerpt(text), "\"); a ", limits_.document,
+                    " allows at most ", limits_.maxStringBytes));
     }
 
     Json* place(Json value) {
@@ -125,9 +123,9 @@ private:
     }
 
     bool open(Json container) {
-        if (stack_.size() >= scene_limits::kMaxNesting)
-            failField(nextPath(), cat("objects and arrays nest more than ", scene_limits::kMaxNesting,
-                                      " deep; a scene needs far fewer"));
+        if (stack_.size() >= limits_.maxNesting)
+            failField(nextPath(), cat("objects and arrays nest more than ", limits_.maxNesting, " deep; a ",
+                                      limits_.document, " needs far fewer"));
         bool inObject = !stack_.empty() && stack_.back().container->is_object();
         stack_.push_back({place(std::move(container)), inObject ? key_ : std::string()});
         return true;
@@ -139,6 +137,7 @@ private:
     }
 
     std::string_view text_;
+    JsonLimits limits_;
     Json root_;
     std::vector<Open> stack_;
     std::string key_;
@@ -146,18 +145,72 @@ private:
 
 }  // namespace
 
-Json parseJsonDocument(std::string_view text) {
+void failField(std::string path, std::string reason) {
+    throw JsonFieldError{std::move(path), std::move(reason)};
+}
+
+std::string fieldPath(std::string_view parent, std::string_view key) {
+    return parent.empty() ? std::string(key) : cat(parent, ".", key);
+}
+
+std::string indexPath(std::string_view parent, std::size_t index) {
+    return cat(parent, "[", index, "]");
+}
+
+std::string describeJsonType(const nlohmann::json& value) {
+    switch (value.type()) {
+        case nlohmann::json::value_t::null:
+            return "null";
+        case nlohmann::json::value_t::object:
+            return "an object";
+        case nlohmann::json::value_t::array:
+            return "an array";
+        case nlohmann::json::value_t::string:
+            return "a string";
+        case nlohmann::json::value_t::boolean:
+            return "a boolean";
+        case nlohmann::json::value_t::number_integer:
+        case nlohmann::json::value_t::number_unsigned:
+        case nlohmann::json::value_t::number_float:
+            return "a number";
+        default:
+            return "an unsupported value";
+    }
+}
+
+Json parseJsonDocument(std::string_view text, const JsonLimits& limits) {
     // nlohmann stops at a NUL byte as if the text ended there: a NUL-only file would read as "unexpected
     // end of input", and one after the document would pass unseen. Text files have none.
     if (auto nul = text.find('\0'); nul != std::string_view::npos)
-        throw JsonSyntaxError{textPositionOf(text, nul),
-                              "a NUL byte (code 0): a scene file is text, and this one is not"};
+        throw JsonSyntaxError{textPositionOf(text, nul), cat("a NUL byte (code 0): a ", limits.document,
+                                                             " file is text, and this one is not")};
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
         throw JsonSyntaxError{textPositionOf(text, text.size()),
                               text.empty() ? "the file is empty" : "the file holds only white space"};
-    TreeBuilder builder(text);
+    TreeBuilder builder(text, limits);
     Json::sax_parse(text.begin(), text.end(), &builder);
     return builder.take();
+}
+
+std::string describeJsonError(std::string_view fileName, const JsonSyntaxError& error) {
+    return cat(fileName, ":", error.at.line, ":", error.at.column, ": JSON syntax error: ", error.reason);
+}
+
+std::string describeJsonError(std::string_view fileName, const JsonFieldError& error) {
+    return cat(fileName, ": ", error.path, ": ", error.reason);
+}
+
+Result<Json> readJsonDocument(std::string_view text, std::string_view fileName, const JsonLimits& limits) {
+    try {
+        return parseJsonDocument(text, limits);
+    } catch (const JsonSyntaxError& error) {
+        return Error{describeJsonError(fileName, error)};
+    } catch (const JsonFieldError& error) {
+        return Error{describeJsonError(fileName, error)};
+    } catch (const std::exception& error) {
+        // Nothing above should get here; if it does, the caller still gets a message instead of a crash.
+        return Error{cat(fileName, ": cannot read the ", limits.document, ": ", error.what())};
+    }
 }
 
 }  // namespace fx

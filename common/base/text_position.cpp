@@ -1,4 +1,4 @@
-#include "scene/text_position.hpp"
+#include "base/text_position.hpp"
 
 #include <algorithm>
 
