@@ -8,6 +8,7 @@
 
 #include "app/bench.hpp"
 #include "app/capture.hpp"
+#include "app/exercise_session.hpp"
 #include "app/facts_panel.hpp"
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
@@ -109,6 +110,8 @@ void FrameLoop::run() {
             measureSlice(at, index);
             continue;
         }
+        // --exercise: a saved student's file is checked again before the frame that shows it.
+        if (s_.exercise) (void)s_.exercise->recheckIfChanged();
         const double delta = clock_.advance();
         FrameInfo frame = frameInfo(index, delta, at);
         if (refreshPrevious_ && !at.extent.empty()) renderPreviousStepNow(at, index);
@@ -462,6 +465,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
         model.languages = lessonText_->available();
         model.setLanguage = [this](const std::string& language) { (void)lessonText_->setLanguage(language); };
     }
+    if (s_.exercise) s_.exercise->annotate(model.steps, model.textRevision);
     model.step = &s_.step;
     model.params = &s_.params;
     model.frame = &report;

@@ -268,6 +268,12 @@ const std::vector<Flag>& flags() {
          .value = "K",
          .help = "start at step K of the lesson (see --list-steps)",
          .apply = parseStep},
+        {.name = "--exercise",
+         .value = "N",
+         .help =
+             "exercise N of this lesson: the student's file stands in for the lesson's, at the exercise's "
+             "step, checked at every save (docs/exercises.md)",
+         .apply = whole(1, 99, "an exercise number", [](RunOptions& o, long n) { o.exercise = int(n); })},
         {.name = "--scene",
          .value = "FILE",
          .help = "a scene file instead of the lesson's default (see docs/scene-format.md)",

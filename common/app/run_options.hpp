@@ -39,6 +39,7 @@ struct RunOptions {
     std::optional<int> width, height;  // --size WxH
     std::optional<int> frames;         // --frames N (default: 3 headless, until closed in a window)
     std::optional<int> step;           // --step K, 1-based
+    std::optional<int> exercise;       // --exercise N: this lesson's exercise N (app/exercise_session.hpp)
     std::filesystem::path scene;       // --scene FILE
     std::string language = "en";       // --lang en|ja: the language of the lesson text
     std::filesystem::path captureDir;  // --capture DIR

@@ -11,6 +11,8 @@
 
 namespace fx {
 
+class ExerciseSession;
+
 struct RunSession {
     std::unique_ptr<Lesson> lesson;  // released while the context is current (LessonRelease)
     std::string exe;                 // "fxlab-05-radial-blur"
@@ -26,6 +28,8 @@ struct RunSession {
     // window of windowSize (app/lesson_switch.hpp).
     int switchLesson = 0;
     Size2D windowSize;
+    // --exercise N: the student's file in the lesson, checked at every save (app/exercise_session.hpp).
+    std::shared_ptr<ExerciseSession> exercise;
 };
 
 // Where a run draws and what it leaves behind, decided from the options and whether a display exists.

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "app/bench_mode.hpp"
+#include "app/exercise_session.hpp"
 #include "app/frame_loop.hpp"
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
@@ -172,7 +173,7 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
         std::cerr << exe << ": " << parsed.error() << "\n";
         return 2;
     }
-    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}};
+    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}, {}};
     lesson.declareParams(s.params);
     if (s.options.help) {
         std::cout << lesson.info().title << "\n\n" << runOptionsHelp(exe);
@@ -184,7 +185,26 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
         return printSteps(text) ? 0 : 1;
     }
     if (s.options.allSteps) return captureEveryStep(s);
+    if (s.options.exercise) {
+        // Before init: the lesson's programs build from the student's file from the first frame.
+        auto exercise = ExerciseSession::open(lesson.info(), *s.options.exercise, s.options.language);
+        if (!exercise) {
+            std::cerr << exe << ": --exercise: " << exercise.error() << "\n";
+            return 2;
+        }
+        s.exercise = std::move(*exercise);
+        s.step = std::min(s.exercise->step(), int(lesson.steps().size()) - 1);
+    }
     if (s.options.step) s.step = *s.options.step - 1;  // checked against the lesson's steps when parsed
+    if (s.exercise && s.exercise->studentFileIsAScene() && s.options.scene.empty()) {
+        // The lesson runs with the student's scene; one that does not load leaves the lesson's own, and
+        // the exercise's verdict shows the loader's message.
+        s.options.scene = s.exercise->studentFile();
+        if (loadLessonScene(s)) {
+            log::warning(s.exe, ": exercise: your scene did not load; running with the lesson's own");
+            s.options.scene.clear();
+        }
+    }
     if (auto failed = loadLessonScene(s)) return *failed;
     if (auto failed = setParameters(s)) return *failed;
     if (s.options.listParams) {

@@ -67,17 +67,18 @@ std::vector<LessonSection> parseLessonSections(std::string_view markdown) {
     return sections;
 }
 
-bool isStepSection(const LessonSection& section) {
-    return section.level == 2 && startsWith(section.heading, "Step");
+bool isStepSection(const LessonSection& section, std::string_view word) {
+    return section.level == 2 && startsWith(section.heading, word);
 }
 
-Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file) {
+Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file,
+                                                   std::string_view word) {
     std::vector<StepSection> steps;
     for (const LessonSection& section : parseLessonSections(markdown)) {
         const std::string_view heading = section.heading;
-        if (!isStepSection(section)) continue;
-        // "## Step N: title"
-        std::string_view rest = heading.substr(4);
+        if (!isStepSection(section, word)) continue;
+        // "## Step N: title" (or another word: "## Checked exercise N: title")
+        std::string_view rest = heading.substr(word.size());
         std::size_t colon = rest.find(':');
         std::string_view number =
             colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(0, colon));
@@ -87,8 +88,9 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
             colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(colon + 1));
         if (rest.empty() || rest.front() != ' ' || number.empty() || ec != std::errc() ||
             ptr != number.data() + number.size() || n < 1 || title.empty()) {
-            return Error{cat(file, ":", section.line, ": \"## ", heading,
-                             "\" is not a step heading; write \"## Step N: title\" (N from 1)")};
+            const std::string kind = word == "Step" ? "step" : cat("\"", word, "\"");
+            return Error{cat(file, ":", section.line, ": \"## ", heading, "\" is not a ", kind,
+                             " heading; write \"## ", word, " N: title\" (N from 1)")};
         }
         steps.push_back({n, std::string(title), section.text, section.line});
     }

@@ -37,14 +37,18 @@ struct LessonSection {
     int line = 0;         // the heading's line (1 for the text before any heading)
 };
 std::vector<LessonSection> parseLessonSections(std::string_view markdown);
-// Whether a section is a step's ("## Step ..."): such a heading must be "## Step N: title".
-bool isStepSection(const LessonSection& section);
+// Whether a section is a step's ("## Step ..."): such a heading must be "## Step N: title". Another
+// `word` asks the same of another kind of numbered section ("Checked exercise").
+bool isStepSection(const LessonSection& section, std::string_view word = "Step");
 
 // The step sections of a markdown file, in the order written, with nothing checked against a
 // lesson. Other sections ("## The frame") are prose around the steps and are skipped; headings inside
 // ``` code blocks are not headings. A heading that starts with "## Step" but is not "## Step N: title"
-// is an error naming the file and line.
-Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file);
+// is an error naming the file and line. `word` picks another kind of numbered section: "Checked
+// exercise" reads the "## Checked exercise N: title" sections (app/exercise_session.hpp), which the
+// steps skip.
+Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file,
+                                                   std::string_view word = "Step");
 
 // The lesson's own text (lesson.md): exactly one section per step, in order, each with text, each
 // heading's title the same as the lesson's title for that step. Gives the text of every step.

@@ -4,6 +4,7 @@
 #include "base/paths.hpp"
 #include "gl/shader_dump.hpp"
 #include "gl/shader_source.hpp"
+#include "gl/shader_substitutes.hpp"
 
 namespace fx::gl {
 namespace {
@@ -151,6 +152,8 @@ struct ReloadableProgram::State {
             for (auto* p : {&sources.vertex, &sources.fragment, &sources.compute}) {
                 if (!p->empty()) files.push_back(resolveShaderPath(*p));
             }
+            // A student's file (an exercise) may be what failed, before any build knew it as an include.
+            for (auto& f : shaderSubstituteFiles()) files.push_back(f);
             rememberStamps(files);
             return Error{error};
         }

@@ -6,11 +6,21 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "gl/shader_substitutes.hpp"
 
 namespace fx::gl {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Every file's lines are numbered from its index times this, so a log line still names the right file
+// where the compiler reports the source-string number 0 for all of them (Mesa does for an error inside
+// an expression of an included file: the line is right, the number is not).
+constexpr long kLinesPerFile = 100000;
+
+std::string lineDirective(int line, int index) {
+    return cat("#line ", long(index) * kLinesPerFile + line, " ", index, "\n");
+}
 
 struct Expander {
     const fs::path& includeRoot;
@@ -29,7 +39,7 @@ struct Expander {
         for (const fs::path& base : {includer.parent_path(), includeRoot}) {
             fs::path candidate = (base / name).lexically_normal();
             std::error_code ec;
-            if (fs::exists(candidate, ec)) return candidate;
+            if (fs::exists(candidate, ec)) return substitutedShaderFile(candidate);
         }
         return Error{cat(displayName(includer), ":", line, ": cannot find included file \"", name,
                          "\" (looked beside the file and in ", includeRoot.generic_string(), ")")};
@@ -50,7 +60,7 @@ struct Expander {
         out.files.push_back(file);
         stack.push_back(file);
         // An included file counts from its own first line.
-        if (!isMain) out.text += cat("#line 1 ", index, "\n");
+        if (!isMain) out.text += lineDirective(1, index);
 
         static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
         static const std::regex versionLine(R"(^\s*#\s*version\b.*)");
@@ -69,7 +79,7 @@ struct Expander {
                     out.text += std::string(defines);
                     if (defines.back() != '\n') out.text += "\n";
                 }
-                out.text += cat("#line ", number + 1, " ", index, "\n");
+                out.text += lineDirective(number + 1, index);
                 continue;
             }
             if (std::regex_match(line, match, includeLine)) {
@@ -81,7 +91,7 @@ struct Expander {
                     continue;
                 }
                 if (auto status = expand(*target, {}, false); !status) return status;
-                out.text += cat("#line ", number + 1, " ", index, "\n");
+                out.text += lineDirective(number + 1, index);
                 continue;
             }
             out.text += line + "\n";
@@ -102,7 +112,7 @@ Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& 
     FileReader read =
         reader ? reader : FileReader([](const fs::path& p) { return readFile(p, file_limits::shader); });
     Expander expander{includeRoot, read, {}, {}};
-    auto status = expander.expand(file.lexically_normal(), defines, true);
+    auto status = expander.expand(substitutedShaderFile(file.lexically_normal()), defines, true);
     if (!status) return Error{status.error()};
     return std::move(expander.out);
 }
@@ -111,6 +121,12 @@ std::string mapCompilerLog(std::string_view log, const std::vector<std::string>&
     auto nameOf = [&](const std::string& index) -> std::string {
         std::size_t i = std::stoul(index);
         return i < fileNames.size() ? fileNames[i] : cat("<source ", index, ">");
+    };
+    // "file:line" from the reported number and line: the line's block names the file (kLinesPerFile).
+    auto place = [&](const std::string& index, const std::string& line) -> std::string {
+        const long number = std::stol(line);
+        if (number < kLinesPerFile) return cat(nameOf(index), ":", number);
+        return cat(nameOf(std::to_string(number / kLinesPerFile)), ":", number % kLinesPerFile);
     };
     static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\): )");
     static const std::regex nvidia(R"(^(\d+)\((\d+)\) : )");
@@ -121,11 +137,11 @@ std::string mapCompilerLog(std::string_view log, const std::vector<std::string>&
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_search(line, m, mesa)) {
-            out << nameOf(m[1]) << ":" << m[2] << ":" << m[3] << ": " << m.suffix() << "\n";
+            out << place(m[1], m[2]) << ":" << m[3] << ": " << m.suffix() << "\n";
         } else if (std::regex_search(line, m, nvidia)) {
-            out << nameOf(m[1]) << ":" << m[2] << ": " << m.suffix() << "\n";
+            out << place(m[1], m[2]) << ": " << m.suffix() << "\n";
         } else if (std::regex_search(line, m, amd)) {
-            out << nameOf(m[2]) << ":" << m[3] << ": " << m[1] << ": " << m.suffix() << "\n";
+            out << place(m[2], m[3]) << ": " << m[1] << ": " << m.suffix() << "\n";
         } else if (!line.empty()) {
             out << line << "\n";
         }

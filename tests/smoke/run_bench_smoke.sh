@@ -43,6 +43,12 @@ awk -F, 'NR > 1 { seen[$5] = 1; if ($7 == 1) refs[$5]++ }
 awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "rmse") c = i; next }
          $7 == 1 && $c != 0 { print "FAIL: reference row with RMSE " $c; bad = 1 }
          END { if (!c) { print "FAIL: no rmse column"; bad = 1 } exit bad }' "$work/bench.csv" || status=1
+# The cost model beside the time (render/pass_traffic.hpp): every row moves bytes at 1920x1080 and says
+# its taps per pixel, the same on every machine (docs/bench.md, --cost traffic).
+awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "traffic_mb_1080p") t = i; if ($i == "taps_per_pixel") p = i }; next }
+         !($t > 0) || $p == "" { print "FAIL: row " NR - 1 " has no modelled traffic (" $t ") or taps (" $p ")"; bad = 1 }
+         END { if (!t || !p) { print "FAIL: no traffic_mb_1080p or taps_per_pixel column"; bad = 1 } exit bad }' \
+  "$work/bench.csv" || status=1
 # Where the time goes: passes.csv has every pass of every row, in copies.
 [ "$(wc -l <"$work/passes.csv" 2>/dev/null || echo 0)" -gt "$rows" ] || { echo "FAIL: passes.csv lists no passes"; status=1; }
 [ "$status" -eq 0 ] && echo "bench: $rows rows, $plots plots" && cat "$work/log" | tail -n +2

@@ -20,7 +20,10 @@ import json
 import statistics
 import sys
 
-HEAP_TOLERANCE_KIB = 1024
+# 2 MiB: lesson 10's heap settles a second time, about 1.1 MiB higher at some points of cycle 2 than of
+# cycle 1, then holds for as many cycles as were run (seven: no rise after cycle 3); a leak keeps
+# rising and the long run's many cycles show it.
+HEAP_TOLERANCE_KIB = 2048
 RESIDENT_TOLERANCE_KIB = 16384
 OBJECT_KINDS = ["textures", "buffers", "framebuffers", "renderbuffers", "vertexArrays", "samplers", "queries",
                 "programs", "shaders", "transformFeedbacks"]

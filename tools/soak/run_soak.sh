@@ -40,7 +40,9 @@ for number in "${numbers[@]}"; do
   frames=$((frame + segment - 1))
   segments=$((2 * (steps - 1) + 4))
   start=$(date +%s)
-  if ! "$exe" --size "$base" --frames "$frames" "${args[@]}" --resource-log "$work/$name.csv" \
+  # The picture scale pinned: the frame budget's automatic scale follows the machine's load, and
+  # targets of another size each cycle would read as memory that comes and goes.
+  if ! "$exe" --size "$base" --frames "$frames" --picture-scale 100% "${args[@]}" --resource-log "$work/$name.csv" \
        --report "$work/$name.json" >"$work/$name.log" 2>&1; then
     echo "FAIL: $name exited with an error: $(tail -3 "$work/$name.log")"; status=1; continue
   fi

@@ -149,13 +149,14 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
     }
     EXPECT_EQ(inHelp,
               (std::set<std::string>{
-                  "--headless",     "--size",           "--frames",       "--step",       "--scene",
-                  "--lang",         "--param",          "--preset",       "--capture",    "--capture-float",
-                  "--report",       "--graph",          "--time-step",    "--seed",       "--timing",
-                  "--inspect",      "--overlay",        "--no-overlay",   "--bench",      "--knob",
-                  "--bench-frames", "--bench-values",   "--bench-out",    "--list-steps", "--list-params",
-                  "--help",         "--press",          "--all-steps",    "--resize",     "--picture-scale",
-                  "--aspect",       "--min-frame-time", "--resource-log", "--cost",       "--dump-shaders"}));
+                  "--headless",      "--size",         "--frames",         "--step",         "--exercise",
+                  "--scene",         "--lang",         "--param",          "--preset",       "--capture",
+                  "--capture-float", "--report",       "--graph",          "--time-step",    "--seed",
+                  "--timing",        "--inspect",      "--overlay",        "--no-overlay",   "--bench",
+                  "--knob",          "--bench-frames", "--bench-values",   "--bench-out",    "--list-steps",
+                  "--list-params",   "--help",         "--press",          "--all-steps",    "--resize",
+                  "--picture-scale", "--aspect",       "--min-frame-time", "--resource-log", "--cost",
+                  "--dump-shaders"}));
 }
 
 TEST(RunOptions, PictureScaleAspectAndASlowRendererImitated) {

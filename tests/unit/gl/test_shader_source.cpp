@@ -43,9 +43,9 @@ TEST(ShaderSource, IncludesAreExpandedWithLineDirectives) {
     auto main = files.add("main.frag", "#version 450 core\n#include \"common/a.glsl\"\nvoid main() {}\n");
     auto source = expandShaderSource(main, files.root);
     ASSERT_TRUE(source.ok()) << source.error();
-    EXPECT_EQ(
-        source->text,
-        "#version 450 core\n#line 2 0\n#line 1 1\nfloat a() { return 1.0; }\n#line 3 0\nvoid main() {}\n");
+    EXPECT_EQ(source->text,
+              "#version 450 core\n#line 2 0\n#line 100001 1\nfloat a() { return 1.0; }\n#line 3 0\nvoid "
+              "main() {}\n");
     ASSERT_EQ(source->fileNames.size(), 2u);
     EXPECT_EQ(source->fileNames[0], "main.frag");
     EXPECT_EQ(source->fileNames[1], "common/a.glsl");
@@ -112,6 +112,16 @@ TEST(ShaderSource, CompilerLogsOfThreeVendorsAreMapped) {
     EXPECT_EQ(mapCompilerLog("ERROR: 1:7: 'z' : undeclared identifier\n", names),
               "common/a.glsl:7: ERROR: 'z' : undeclared identifier\n");
     EXPECT_EQ(mapCompilerLog("7:1(1): error: odd\n", names), "<source 7>:1:1: error: odd\n");
+}
+
+// Mesa reports an error inside an expression of an included file with source-string number 0 and the
+// right line; the line's block (100000 per file) still names the included file.
+TEST(ShaderSource, LogLinesNameTheIncludedFileByTheirBlock) {
+    std::vector<std::string> names = {"probe.frag", "student.glsl"};
+    EXPECT_EQ(mapCompilerLog("0:100002(42): error: `stepLengt' undeclared\n", names),
+              "student.glsl:2:42: error: `stepLengt' undeclared\n");
+    EXPECT_EQ(mapCompilerLog("1(100002) : error C1008: undefined variable\n", names),
+              "student.glsl:2: error C1008: undefined variable\n");
 }
 
 // A folder given as a shader used to read as an empty file and fail with "the first directive must be

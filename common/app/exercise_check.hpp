@@ -1,0 +1,40 @@
+#pragma once
+// Grades a student's file: the exercise's probe shader is rendered with the student's file in place
+// of the one it replaces and again with the reference, at every case's size (odd ones included), and
+// the two are compared as floats. A verdict says what it measured against what threshold, counts NaN
+// and Inf, names compile errors with the student's file and line, and gives the hint written for the
+// mistake it matches (a typical wrong answer rendered the same way).
+//
+// checkExercise needs a current GL context and trusts the shader to finish; checkExerciseGuarded runs
+// it in a child process with its own headless context and a watchdog, so a shader that loops forever
+// is a failed check, not a hung grader.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "app/exercise_catalog.hpp"
+
+namespace fx {
+
+struct ExerciseVerdict {
+    bool passed = false;
+    std::string measure;    // "maxAbs", "rmse"
+    double measured = 0.0;  // over all cases, the worst; +inf when a value is NaN or Inf
+    double tolerance = 0.0;
+    std::int64_t nonFiniteTexels = 0;
+    std::string message;  // one line: what was measured against what, or why nothing could be
+    std::string hint;     // for a failure: the hint for the mistake it looks like
+    std::string error;    // a compile or link error (file and line), a missing file, a watchdog
+};
+
+ExerciseVerdict checkExercise(const Exercise& exercise, const std::filesystem::path& studentFile);
+
+// checkExercise in a child process that gets `seconds` to finish.
+ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const std::filesystem::path& studentFile,
+                                     double seconds);
+
+// The verdict as JSON (the child's answer, `check --json`) and back.
+std::string verdictJson(const ExerciseVerdict& verdict);
+Result<ExerciseVerdict> verdictFromJson(const std::string& text);
+
+}  // namespace fx

@@ -1,0 +1,89 @@
+#include "app/exercise_scene_check.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "base/log.hpp"
+#include "effects/particles/particle_system.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace fx {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+// The first hint written for `when`, or "".
+std::string hintFor(const Exercise& exercise, const std::string& when) {
+    for (const ExerciseHint& hint : exercise.hints)
+        if (hint.when == when) return hint.text;
+    return {};
+}
+
+}  // namespace
+
+ExerciseVerdict checkSceneExercise(const Exercise& exercise, const fs::path& studentFile) {
+    ExerciseVerdict verdict;
+    verdict.measure = exercise.measure;
+    verdict.tolerance = exercise.tolerance;
+    auto fail = [&](const std::string& when, std::string message) {
+        verdict.message = std::move(message);
+        verdict.hint = hintFor(exercise, when);
+        if (verdict.hint.empty()) verdict.hint = hintFor(exercise, "fails");
+        return verdict;
+    };
+    SceneLoadOptions options;
+    options.loadModels = false;  // only the emitters are checked
+    auto scene = loadScene(studentFile, options);
+    if (!scene) {
+        verdict.error = scene.error();
+        verdict.measured = std::numeric_limits<double>::infinity();
+        return fail("invalid", cat("your scene did not load: ", scene.error()));
+    }
+    if (scene->emitters.empty())
+        return fail("noEmitter", cat(studentFile.string(), ": emitters: the scene has no particle emitter"));
+
+    std::vector<EmitterSetup> setups;
+    for (const ParticleEmitter& emitter : scene->emitters) setups.push_back({emitter, {}, 0, 1.0f, false});
+    ParticleSystem system(std::move(setups));
+    const int frames = int(std::ceil(exercise.seconds * 60.0));
+    std::uint32_t peak = 0;
+    std::string firstNonFinite;
+    for (int frame = 0; frame < frames; ++frame) {
+        system.update(1.0 / 60.0);
+        peak = std::max(peak, system.liveCount());
+        for (std::size_t slot = 0; slot < system.slots().size(); ++slot) {
+            const GpuParticle& p = system.slots()[slot];
+            if (p.extra.z == 0.0f) continue;
+            const glm::vec4 position(glm::vec3(p.originAge) + glm::vec3(p.velocityLife) * p.originAge.w,
+                                     1.0f);
+            if (finite(p.originAge) && finite(p.velocityLife) && finite(p.extra) && finite(position))
+                continue;
+            if (verdict.nonFiniteTexels++ == 0)
+                firstNonFinite =
+                    cat("particle ", slot, " of emitter ", int(p.extra.y), " at ", frame + 1, "/60 s");
+        }
+    }
+    verdict.measured = peak;
+    const auto budget = std::uint32_t(exercise.budget);
+    verdict.message = cat(peak, " particles alive at most (", exercise.measures, "), needs <= ", budget, "; ",
+                          scene->emitters.size(), " emitter", scene->emitters.size() == 1 ? "" : "s", ", ",
+                          exercise.seconds, " s at 60 Hz");
+    if (system.droppedCount() > 0 || system.replacedCount() > 0)
+        verdict.message +=
+            cat("; ", system.replacedCount() + system.droppedCount(), " spawns found their ring full");
+    if (verdict.nonFiniteTexels > 0) {
+        verdict.message += cat("; ", verdict.nonFiniteTexels,
+                               " particle values are NaN or Inf (the first: ", firstNonFinite, ")");
+        return fail("nonFinite", verdict.message);
+    }
+    if (peak > budget) return fail("overBudget", verdict.message);
+    if (peak == 0) return fail("noEmitter", verdict.message + ": no particle is ever alive");
+    verdict.passed = true;
+    return verdict;
+}
+
+}  // namespace fx
