@@ -11,7 +11,7 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
-#include "gl/program.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "image/image_compare.hpp"
 #include "image/plot.hpp"
 #include "image/png_file.hpp"
@@ -26,38 +26,27 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-// The unit of cost: one full-screen pass that samples a texture and writes the output.
+// The unit of cost: one full-screen pass that samples a texture and writes the output. Made while
+// the bench runs, with the context current.
 class CopyFrame final : public Lesson {
 public:
-    LessonInfo info() const override { return {0, "copy", "one full-screen copy", ""}; }
+    CopyFrame() { setInfo({0, "copy", "one full-screen copy", ""}); }
     std::vector<std::string> steps() const override { return {"copy"}; }
-    Status init(const Scene&) override {
-        copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "bench copy"});
-        vao_ = gl::createVertexArray("bench copy triangle");
-        return copy_.usable() ? Status::success() : Status(Error{copy_.error()});
-    }
+    bool usable() const { return copy_.reloadable().usable(); }
     void buildFrame(FrameGraph& graph, const FrameInfo&) override {
         auto& source = graph.addPass("copy source", {});
         TextureHandle texture = source.create(
             "copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
         source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}}).setTaps(0);  // a clear
-        graph
-            .addPass("copy",
-                     [this, texture](PassContext& ctx) {
-                         glBindTextureUnit(0, ctx.native(texture));
-                         glUseProgram(copy_.name());
-                         glBindVertexArray(vao_.name());
-                         glDrawArrays(GL_TRIANGLES, 0, 3);
-                     })
+        const FullscreenPass* copy = &copy_;
+        copy_.addPass(graph, "copy", [copy, texture](PassContext& ctx) { copy->draw({ctx.native(texture)}); })
             .read(texture)
             .writeColor(graph.output())
-            .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false})
             .setTaps(1);
     }
 
 private:
-    gl::ReloadableProgram copy_;
-    gl::VertexArrayName vao_;
+    FullscreenPass copy_{"common/copy.frag", "bench copy"};
 };
 
 struct Measured {
@@ -237,6 +226,7 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
     // A fixed frame: same time, same seed, every setting.
     s.frame.index = 1;
     s.frame.seconds = 1.0;
+    s.frame.world = s.renderer.world(s.frame.seconds);
     s.frame.deltaSeconds = 1.0 / 60.0;
     s.frame.size = {size.width, size.height};
     s.frame.step = step;
@@ -245,7 +235,7 @@ KnobSweep::KnobSweep(Lesson& lesson, ParamSet& params, FrameRenderer& renderer, 
     s.frame.benchmark = true;
     s.saved = params.save();
     s.current = nlohmann::json::parse(params.toJson());
-    s.copyUsable = bool(s.copy.init({}));
+    s.copyUsable = s.copy.usable();
     if (size.empty()) {
         s.referenceDone = true;  // nothing to render: no rows
         return;

@@ -71,6 +71,8 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
     facts.timingMethod = std::string(toString(renderer.timer().method()));
     facts.timingReason = renderer.timer().reason();
     facts.scene = s_.scene.file.string();
+    // A run whose every frame is minimised still reports the lesson's facts about its scene.
+    record_.lastFrame.world = renderer.world(0.0);
     // The steps' text from lesson.md (or lesson.ja.md), for the overlay; read again when saved.
     if (overlay_) {
         lessonText_.emplace(lessonSourceFolder(s_.lesson->info()), s_.lesson->steps(), s_.options.language);
@@ -434,6 +436,7 @@ FrameInfo FrameLoop::frameInfo(std::uint64_t index, double delta, const Placemen
     frame.index = index;
     frame.deltaSeconds = delta;
     frame.seconds = clock_.seconds();
+    frame.world = renderer_.world(frame.seconds);
     frame.clockSteps = clock_.steps();
     frame.frameBudgetMs = plan_.headless ? 0.0 : pictureScale_.budgetMs();
     frame.size = at.extent;

@@ -47,6 +47,12 @@ public:
     // The same SceneWork runs the lesson's simulations (FrameLoop, before Lesson::update).
     void setSceneWork(SceneWork* work) { work_ = work; }
     SceneWork* sceneWork() const { return work_; }
+    // The scene and its meshes every frame draws (the runner's): world() is them at `seconds`.
+    void setScene(const Scene& scene, const SceneMeshes& meshes) {
+        scene_ = &scene;
+        meshes_ = &meshes;
+    }
+    World world(double seconds) const { return scene_ ? World(*scene_, *meshes_, seconds) : World(); }
 
     PassTimer& timer() { return timer_; }
     TexturePool& pool() { return pool_; }
@@ -59,6 +65,8 @@ private:
     GlPassExecutor executor_;
     std::uint64_t destroyedSeen_ = 0;
     SceneWork* work_ = nullptr;
+    const Scene* scene_ = nullptr;
+    const SceneMeshes* meshes_ = nullptr;
 };
 
 }  // namespace fx

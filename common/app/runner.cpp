@@ -26,8 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// init, then the check that every program it built (the lesson's and its effects') is usable.
+// The lesson's Gpu<T> members (its effects), init, then the check that every program they built is
+// usable.
 Status initLesson(RunSession& s, const gl::ProgramRegistry& programs) {
+    s.lesson->buildGpuMembers(s.scene);
     if (Status status = s.lesson->init(s.scene); !status) return status;
     if (auto error = programs.firstUnusable()) return Error{*error};
     return Status::success();
@@ -48,6 +50,9 @@ int run(RunSession& s) {
     // From here on every way out destroys the lesson first, while the context is still current;
     // the renderer (executor, pool) and the overlay, declared later, go before it.
     LessonRelease release(s);
+    // The scene's meshes on the GPU, drawn by every pass that draws the scene (FrameInfo::world); they
+    // go before the lesson, with the context current.
+    SceneMeshes meshes(s.scene);
     if (Status ready = initLesson(s, programs); !ready) {
         log::error(s.exe, ": ", ready.error());
         return 1;
@@ -55,6 +60,10 @@ int run(RunSession& s) {
     SceneWork work(s.scene);
     FrameRenderer renderer(*context, o.timing, !o.bench);
     renderer.setSceneWork(&work);
+    renderer.setScene(s.scene, meshes);
+    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
+    work.onUpdate(Simulation::animation, "skinning",
+                  [&meshes](const SimulationStep& step) { meshes.update(step.seconds); });
     s.lesson->simulations(work);
     if (o.bench) return runBenchMode(s, renderer, *context);
 
@@ -154,8 +163,9 @@ int captureEveryStep(const RunSession& s) {
 
 }  // namespace
 
-int runLesson(std::unique_ptr<Lesson> owned, int argc, char** argv) {
+int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** argv) {
     Lesson& lesson = *owned;
+    lesson.setInfo(std::move(info));
     std::string exe = executableName(lesson.info());
     std::vector<std::string> args(argv + 1, argv + argc);
     auto parsed = parseRunOptions(args, int(lesson.steps().size()));

@@ -15,6 +15,16 @@
 namespace fx {
 namespace {
 
+// Infinity is written as a word: a scene file (JSON) has no number for it.
+constexpr std::string_view kInfinity = "infinity";
+
+// A number as messages write it (base/message_text.hpp), as the float every setting and parameter is
+// held in (0.02, not 0.019999999552965164), infinity as the word.
+std::string numberText(double v) {
+    if (std::isinf(v)) return v > 0 ? std::string(kInfinity) : "-" + std::string(kInfinity);
+    return formatNumber(static_cast<float>(v));
+}
+
 Result<double> parseNumber(std::string_view text) {
     std::string s(text);
     if (s.empty()) return Error{"no value"};
@@ -76,10 +86,27 @@ void Param::set(double value) const {
     }
 }
 
+std::string SettingSpec::rangeText() const {
+    if (type == ParamType::Choice) {
+        std::string list;
+        for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+        return list;
+    }
+    return cat(minOpen ? "(" : "[", numberText(min), ", ", numberText(max), std::isinf(max) ? ")" : "]");
+}
+
+std::string SettingSpec::valueText(double value) const {
+    if (type == ParamType::Choice) {
+        auto i = static_cast<std::size_t>(std::lround(value));
+        return i < choices.size() ? choices[i] : cat(i);
+    }
+    return numberText(value);
+}
+
 std::string Param::valueText(double value) const {
     switch (type) {
         case ParamType::Float:
-            return formatNumber(static_cast<float>(value));
+            return numberText(value);
         case ParamType::Int:
             return cat(static_cast<long>(std::lround(value)));
         case ParamType::Bool:
@@ -99,8 +126,8 @@ std::string Param::text() const {
 std::string Param::rangeText() const {
     switch (type) {
         case ParamType::Float:
-            return cat("a number from ", formatNumber(static_cast<float>(min)), " to ",
-                       formatNumber(static_cast<float>(max)));
+            if (std::isinf(max)) return cat("a number from ", numberText(min), " up, or ", kInfinity);
+            return cat("a number from ", numberText(min), " to ", numberText(max));
         case ParamType::Int:
             return cat("a whole number from ", static_cast<long>(min), " to ", static_cast<long>(max));
         case ParamType::Bool:
@@ -130,6 +157,8 @@ Param makeParam(std::string name, std::string description, ParamType type, doubl
     p.type = type;
     p.min = min;
     p.max = max;
+    p.sliderMin = min;  // the slider spans the range unless a setting says otherwise
+    p.sliderMax = max;
     return p;
 }
 
@@ -150,6 +179,36 @@ Param& ParamSet::addInt(std::string name, int* value, int min, int max, std::str
 Param& ParamSet::addBool(std::string name, bool* value, std::string description) {
     Param p = makeParam(std::move(name), std::move(description), ParamType::Bool, 0, 1);
     p.boolValue = value;
+    return add(std::move(p));
+}
+
+namespace {
+
+Param settingParam(std::string name, const SettingSpec& setting, std::string note) {
+    Param p = makeParam(std::move(name), note.empty() ? setting.help : cat(note, ": ", setting.help),
+                        setting.type, setting.min, setting.max);
+    p.choices = setting.choices;
+    p.sliderMin = setting.sliderMin;
+    p.sliderMax = setting.sliderMax;
+    p.sceneSetting = setting.path;
+    return p;
+}
+
+}  // namespace
+
+Param& ParamSet::addSetting(std::string name, float* value, const SettingSpec& setting, std::string note) {
+    Param p = settingParam(std::move(name), setting, std::move(note));
+    p.type = ParamType::Float;
+    p.floatValue = value;
+    *value = static_cast<float>(setting.defaultValue);
+    return add(std::move(p));
+}
+
+Param& ParamSet::addSetting(std::string name, int* value, const SettingSpec& setting, std::string note) {
+    Param p = settingParam(std::move(name), setting, std::move(note));
+    if (p.type == ParamType::Float) p.type = ParamType::Int;
+    p.intValue = value;
+    *value = static_cast<int>(std::lround(setting.defaultValue));
     return add(std::move(p));
 }
 
@@ -250,6 +309,7 @@ Result<double> parseFor(const Param& p, std::string_view text) {
         }
         case ParamType::Int:
         case ParamType::Float: {
+            if (text == kInfinity && std::isinf(p.max)) return p.max;
             auto v = parseNumber(text);
             if (!v) return bad(v.error());
             if (p.type == ParamType::Int && std::floor(*v) != *v)

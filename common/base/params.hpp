@@ -28,6 +28,26 @@ struct SettingText {
     std::string text;
 };
 
+// One setting of a scene file that a parameter can start from, declared once (scene/scene_settings.cpp
+// has them all): where it is in the file, the values it may take, what a file that leaves it out gets,
+// and what it is. The scene reader checks the file against it, docs/scene-format.md shows it, and a
+// parameter that starts from it takes its range, default and help from it (ParamSet::addSetting).
+struct SettingSpec {
+    std::string path;                     // "postEffects.bloom.threshold"
+    ParamType type = ParamType::Float;    // Float, Int or Choice
+    double min = 0, max = 1;              // the values that mean something; max may be infinity
+    bool minOpen = false;                 // min itself is not one: (min, max]
+    std::vector<std::string> choices;     // Choice: the names, as the file writes them
+    double defaultValue = 0;              // a Choice's: the index of its name
+    bool required = false;                // the file must give it when it has the object it is in
+    double sliderMin = 0, sliderMax = 1;  // the overlay's slider: the span a lesson is shown with
+    std::string unit;                     // "m", "mm", "px", or empty
+    std::string help;                     // one sentence: the overlay, --list-params and the docs
+
+    std::string rangeText() const;              // "[0, 10000]", "(0, infinity)", "clip, reinhard, filmic"
+    std::string valueText(double value) const;  // "1", "0.5", "infinity", "filmic"
+};
+
 struct Knob {
     std::vector<double> values;  // the settings the bench and the cost panel sweep
     double reference = 0;        // the setting whose image counts as right
@@ -38,7 +58,10 @@ struct Param {
     std::string name;         // command-line name: lower case with underscores
     std::string description;  // one sentence for the overlay and --list-params
     ParamType type = ParamType::Float;
-    double min = 0, max = 1;
+    double min = 0, max = 1;  // max may be infinity (a focus distance): --param takes "infinity"
+    // The overlay's slider shows this span (the whole range unless a setting says otherwise: a
+    // threshold may be 10000, but the slider that finds one is 0 to 16).
+    double sliderMin = 0, sliderMax = 1;
     std::vector<std::string> choices;  // for Choice: the names, stored as an index
     double defaultValue = 0;
     std::optional<Knob> knob;
@@ -80,12 +103,41 @@ struct Param {
     std::string valueText(double value) const;
 };
 
+// A choice parameter's value as the enumeration the lesson means, its enumerators numbered from 0 in
+// the order of the choice's names. The set stores the index and keeps it in range, so reading it
+// (`*toneCurve_`) needs no clamp and no cast.
+template <class E>
+class Choice {
+public:
+    constexpr explicit Choice(E value) : index_(static_cast<int>(value)) {}
+    constexpr E operator*() const { return static_cast<E>(index_); }
+    int* index() { return &index_; }
+
+private:
+    int index_;
+};
+
 class ParamSet {
 public:
     Param& addFloat(std::string name, float* value, float min, float max, std::string description);
     Param& addInt(std::string name, int* value, int min, int max, std::string description);
     Param& addBool(std::string name, bool* value, std::string description);
     Param& addChoice(std::string name, int* value, std::vector<std::string> choices, std::string description);
+    // A parameter that starts from a scene setting: its range, slider, help and default are the
+    // setting's (`*value` is set to the default), and it starts from the scene's value. `note` goes
+    // before the help ("Steps 3 to 5"). The value's type follows the member: a float or an int (a
+    // Choice setting needs an int).
+    Param& addSetting(std::string name, float* value, const SettingSpec& setting, std::string note = {});
+    Param& addSetting(std::string name, int* value, const SettingSpec& setting, std::string note = {});
+    template <class E>
+    Param& addChoice(std::string name, Choice<E>* value, std::vector<std::string> choices,
+                     std::string description) {
+        return addChoice(std::move(name), value->index(), std::move(choices), std::move(description));
+    }
+    template <class E>
+    Param& addSetting(std::string name, Choice<E>* value, const SettingSpec& setting, std::string note = {}) {
+        return addSetting(std::move(name), value->index(), setting, std::move(note));
+    }
 
     // Checks the text against the type and range; on error names the parameter and what is allowed,
     // and leaves the value as it was.

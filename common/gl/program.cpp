@@ -61,6 +61,15 @@ Result<CompiledStage> compileStage(GLenum stage, const fs::path& file, const std
 
 }  // namespace
 
+std::string ProgramSources::name() const {
+    if (!label.empty()) return label;
+    std::string files;
+    for (const fs::path* path : {&compute, &vertex, &fragment}) {
+        if (!path->empty()) files += (files.empty() ? "" : " + ") + path->generic_string();
+    }
+    return files;
+}
+
 Result<Program> Program::build(const ProgramSources& sources) {
     std::vector<std::pair<GLenum, fs::path>> stages;
     if (!sources.compute.empty()) stages.emplace_back(GL_COMPUTE_SHADER, sources.compute);
@@ -69,12 +78,7 @@ Result<Program> Program::build(const ProgramSources& sources) {
     if (stages.empty()) return Error{"a program needs a vertex and fragment shader, or a compute shader"};
 
     Program program;
-    program.label_ = sources.label;
-    if (program.label_.empty()) {
-        for (auto& [stage, path] : stages) {
-            program.label_ += (program.label_.empty() ? "" : " + ") + path.generic_string();
-        }
-    }
+    program.label_ = sources.name();
 
     // The Shader effects chapter's lifetime pitfall, the other end: a program made before the context
     // (a global, or an object built before the window) would call GL through null function pointers.

@@ -22,6 +22,8 @@ struct ProgramSources {
     std::filesystem::path compute;
     std::string defines;  // extra lines after #version, e.g. "#define TAPS 16"
     std::string label;    // for debuggers and messages; defaults to the file names
+
+    std::string name() const;  // the label, or the file names joined by " + "
 };
 
 class Program {

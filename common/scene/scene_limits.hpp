@@ -9,7 +9,9 @@
 namespace fx::scene_limits {
 
 inline constexpr std::size_t kMaxObjects = 4096;
-inline constexpr std::size_t kMaxLights = 256;
+// As many as the GPU's point light list holds (kMaxGridLights, scene_light_grid.hpp): every light a
+// lesson can draw, written as lights of their own or as grids (the two together have that limit).
+inline constexpr std::size_t kMaxLights = 1024;
 inline constexpr std::size_t kMaxLightGrids = 64;
 inline constexpr std::size_t kMaxEmitters = 256;
 inline constexpr std::size_t kMaxClouds = 16;

@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <map>
@@ -43,14 +44,15 @@ Scene parseSections(const nlohmann::json& root, const fs::path& file, const Scen
     AssetPathReader assets(file.parent_path(), options.assetRoot, options.checkFilesExist);
     reader.forEachObject("lights", scene_limits::kMaxLights,
                          [&](JsonFieldReader& light) { scene.lights.push_back(parseLight(light)); });
-    int gridLights = 0;
+    // The point lights go into one GPU list, whether the scene writes them one by one or as grids.
+    int pointLights = int(std::count_if(scene.lights.begin(), scene.lights.end(),
+                                        [](const Light& l) { return l.type == LightType::point; }));
     reader.forEachObject("lightGrids", scene_limits::kMaxLightGrids, [&](JsonFieldReader& grid) {
         scene.lightGrids.push_back(parseLightGrid(grid));
-        gridLights += scene.lightGrids.back().lightCount();
-        // The lights go into one GPU list: all grids together have the limit one grid has.
-        if (gridLights > kMaxGridLights)
-            grid.fail("count", cat("the scene's grids make ", gridLights, " lights together; at most ",
-                                   kMaxGridLights));
+        pointLights += scene.lightGrids.back().lightCount();
+        if (pointLights > kMaxGridLights)
+            grid.fail("count", cat("the scene's point lights and grids make ", pointLights,
+                                   " lights together; at most ", kMaxGridLights));
     });
     std::set<std::string> names;
     int mirrors = 0;

@@ -34,6 +34,14 @@ ParticleEmitter parseEmitter(JsonFieldReader& emitter, const AssetPathReader& as
 CloudLayer parseCloudLayer(JsonFieldReader& cloud, const AssetPathReader& assets);
 PostEffects parsePostEffects(JsonFieldReader& post, const Camera& camera);
 
+// A setting that starts a lesson's parameter (scene/scene_settings.cpp), read at `key` with the range
+// it declares: `fallback` when the file leaves it out, a refusal when it is required. Where its range
+// has no end (a focus distance), the file may write "infinity".
+float readSetting(JsonFieldReader& reader, std::string_view key, std::string_view path, float fallback);
+int readIntegerSetting(JsonFieldReader& reader, std::string_view key, std::string_view path, int fallback);
+// A setting's range as the reader checks it (an infinite end becomes the largest float).
+NumberRange settingRange(std::string_view path);
+
 // Ranges shared by several sections.
 inline constexpr NumberRange kCoordinateRange{-1.0e5, 1.0e5};  // metres
 inline constexpr NumberRange kHdrColorRange{0.0, 1.0e4};       // linear colour, may exceed 1

@@ -14,10 +14,13 @@ constexpr double kFocusMargin = 1.0e-3;
 
 Lens parseLens(JsonFieldReader& reader) {
     Lens lens;
-    lens.focalLengthMm = reader.requiredNumber("focalLength", NumberRange::aboveZero(2000.0));
-    lens.sensorWidthMm = reader.number("sensorWidth", lens.sensorWidthMm, NumberRange::aboveZero(100.0));
-    lens.fNumber = reader.requiredNumber("fNumber", NumberRange::aboveZero(64.0));
-    lens.focusDistanceM = reader.requiredNumber("focusDistance", NumberRange::aboveZero(1.0e5));
+    // Their ranges are declared in scene/scene_settings.cpp (they start lesson 09's parameters); a far
+    // mountain is in focus at "infinity".
+    lens.focalLengthMm = readSetting(reader, "focalLength", "camera.lens.focalLength", lens.focalLengthMm);
+    lens.sensorWidthMm = readSetting(reader, "sensorWidth", "camera.lens.sensorWidth", lens.sensorWidthMm);
+    lens.fNumber = readSetting(reader, "fNumber", "camera.lens.fNumber", lens.fNumber);
+    lens.focusDistanceM =
+        readSetting(reader, "focusDistance", "camera.lens.focusDistance", lens.focusDistanceM);
     // The circle of confusion has (focus distance - focal length) in a denominator: at equality it is
     // infinite, inside the focal length the sign flips. A margin of 0.1% keeps float rounding (0.035 m is
     // not exactly 35 mm in a float) from letting the zero through as a tiny difference.

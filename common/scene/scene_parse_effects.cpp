@@ -18,18 +18,19 @@ glm::vec4 readParticleColor(JsonFieldReader& reader, std::string_view key, glm::
 }
 
 CloudNoise parseCloudNoise(JsonFieldReader& reader, CloudNoise noise) {
-    noise.scale = reader.number("scale", noise.scale, NumberRange::aboveZero(100.0));
+    noise.scale = readSetting(reader, "scale", "clouds[0].noise[0].scale", noise.scale);  // every layer's
     noise.scroll = reader.vec2("scroll", noise.scroll, NumberRange::closed(-10.0, 10.0));
     reader.reportUnknown();
     return noise;
 }
 
+// The settings below start lessons' parameters: their ranges are declared in scene/scene_settings.cpp.
 BloomSettings parseBloom(JsonFieldReader& reader) {
     BloomSettings bloom;
-    bloom.threshold = reader.number("threshold", bloom.threshold, NumberRange::closed(0.0, 1.0e4));
-    bloom.knee = reader.number("knee", bloom.knee, kUnitRange);
-    bloom.intensity = reader.number("intensity", bloom.intensity, NumberRange::closed(0.0, 100.0));
-    bloom.levels = reader.integer("levels", bloom.levels, NumberRange::closed(1, 16));
+    bloom.threshold = readSetting(reader, "threshold", "postEffects.bloom.threshold", bloom.threshold);
+    bloom.knee = readSetting(reader, "knee", "postEffects.bloom.knee", bloom.knee);
+    bloom.intensity = readSetting(reader, "intensity", "postEffects.bloom.intensity", bloom.intensity);
+    bloom.levels = readIntegerSetting(reader, "levels", "postEffects.bloom.levels", bloom.levels);
     reader.reportUnknown();
     return bloom;
 }
@@ -37,25 +38,25 @@ BloomSettings parseBloom(JsonFieldReader& reader) {
 ColorMatrixSettings parseColorMatrix(JsonFieldReader& reader) {
     ColorMatrixSettings settings;
     settings.preset = reader.requiredEnumeration<ColorMatrixPreset>("preset");
-    settings.amount = reader.number("amount", settings.amount, kUnitRange);
+    settings.amount = readSetting(reader, "amount", "postEffects.colorMatrix.amount", settings.amount);
     reader.reportUnknown();
     return settings;
 }
 
 RadialBlurSettings parseRadialBlur(JsonFieldReader& reader) {
     RadialBlurSettings blur;
-    blur.center = reader.vec2("center", blur.center, kUnitRange);
-    blur.length = reader.number("length", blur.length, kUnitRange);
-    blur.start = reader.number("start", blur.start, NumberRange::closed(0.0, 2.0));
-    blur.taps = reader.integer("taps", blur.taps, NumberRange::closed(1, 64));
+    blur.center = reader.vec2("center", blur.center, settingRange("postEffects.radialBlur.center[0]"));
+    blur.length = readSetting(reader, "length", "postEffects.radialBlur.length", blur.length);
+    blur.start = readSetting(reader, "start", "postEffects.radialBlur.start", blur.start);
+    blur.taps = readIntegerSetting(reader, "taps", "postEffects.radialBlur.taps", blur.taps);
     reader.reportUnknown();
     return blur;
 }
 
 DepthOfFieldSettings parseDepthOfField(JsonFieldReader& reader) {
     DepthOfFieldSettings dof;
-    dof.maxCocPixels = reader.number("maxCoc", dof.maxCocPixels, NumberRange::aboveZero(256.0));
-    dof.taps = reader.integer("taps", dof.taps, NumberRange::closed(1, 128));
+    dof.maxCocPixels = readSetting(reader, "maxCoc", "postEffects.depthOfField.maxCoc", dof.maxCocPixels);
+    dof.taps = readIntegerSetting(reader, "taps", "postEffects.depthOfField.taps", dof.taps);
     reader.reportUnknown();
     return dof;
 }
@@ -70,7 +71,7 @@ ToneMapSettings parseToneMap(JsonFieldReader& reader) {
                                         "\" (allowed: ", allowedNames<ToneCurve>(), ")"));
     }
     toneMap.curve = reader.enumeration<ToneCurve>("operator", toneMap.curve);
-    toneMap.exposure = reader.number("exposure", toneMap.exposure, NumberRange::aboveZero(1000.0));
+    toneMap.exposure = readSetting(reader, "exposure", "postEffects.toneMap.exposure", toneMap.exposure);
     reader.reportUnknown();
     return toneMap;
 }
@@ -115,9 +116,8 @@ ParticleEmitter parseEmitter(JsonFieldReader& reader, const AssetPathReader& ass
 CloudLayer parseCloudLayer(JsonFieldReader& reader, const AssetPathReader& assets) {
     CloudLayer cloud;
     cloud.name = reader.text("name", "");
-    const NumberRange heights = NumberRange::closed(-1.0e4, 1.0e5);
-    cloud.bottom = reader.requiredNumber("bottom", heights);
-    cloud.top = reader.requiredNumber("top", heights);
+    cloud.bottom = readSetting(reader, "bottom", "clouds[0].bottom", cloud.bottom);  // every layer's
+    cloud.top = readSetting(reader, "top", "clouds[0].top", cloud.top);
     if (cloud.bottom >= cloud.top)
         reader.fail("bottom", cat(formatNumber(cloud.bottom), " is not below top (", formatNumber(cloud.top),
                                   "); the slab would have no thickness"));
@@ -134,9 +134,10 @@ CloudLayer parseCloudLayer(JsonFieldReader& reader, const AssetPathReader& asset
             cloud.noise[i] = parseCloudNoise(layer, cloud.noise[i]);
         }
     }
-    // The shader divides by (1 - threshold) to stretch what is left of the density back to [0, 1].
-    cloud.threshold = reader.number("threshold", cloud.threshold, NumberRange{0.0, 1.0, false, true});
-    cloud.steps = reader.integer("steps", cloud.steps, NumberRange::closed(1, 512));
+    // 1 leaves no cloud: the march is not drawn then (effects/clouds/cloud_march.hpp: thresholdClears), so
+    // the shader's division by (1 - threshold) never meets 0.
+    cloud.threshold = readSetting(reader, "threshold", "clouds[0].threshold", cloud.threshold);
+    cloud.steps = readIntegerSetting(reader, "steps", "clouds[0].steps", cloud.steps);
     cloud.color = reader.vec3("color", cloud.color, kHdrColorRange);
     reader.reportUnknown();
     return cloud;

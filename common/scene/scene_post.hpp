@@ -1,8 +1,8 @@
 #pragma once
 // The post-processing a scene asks for. An effect is requested when it is present; its settings start
 // from the defaults below. The order the passes run in is the lesson's business, not the scene's.
-// A lesson's parameters start from these settings (Param::fromScene with the paths
-// postEffectSettings() names); the command line and the overlay override them.
+// Each setting's range, default and help are declared once, in scene/scene_settings.cpp, which also
+// hands them to the lessons' parameters; the command line and the overlay override them.
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,13 +80,8 @@ struct PostEffects {
     bool operator==(const PostEffects&) const = default;
 };
 
-// The settings of the effects a scene asks for, by their path in the scene file, as text a lesson
-// parameter takes: {"postEffects.bloom.threshold", "1"}, {"postEffects.radialBlur.center[0]", "0.5"},
-// {"postEffects.toneMap.operator", "filmic"}.
-std::vector<SettingText> postEffectSettings(const PostEffects& post);
-// The shortest text that reads back as the same float, so a parameter gets exactly the scene's value.
+// The shortest text that reads back as the same float, so a parameter gets exactly the scene's value;
+// "infinity" for infinity (a focus distance).
 std::string settingNumberText(float value);
-// Every setting path a scene file can have, whether this one asks for the effect or not.
-std::vector<std::string> postEffectSettingPaths();
 
 }  // namespace fx

@@ -1,5 +1,6 @@
 #include "scene/scene_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -7,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/log.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace fx {
 namespace {
@@ -26,8 +29,10 @@ double shortestDecimal(float value) {
     return double(value);
 }
 
-// Whole numbers are written without ".0", as a person would write them.
+// Whole numbers are written without ".0", as a person would write them; infinity (a focus distance) as
+// the word the reader takes, since JSON has no number for it.
 Json number(float value) {
+    if (std::isinf(value)) return value > 0 ? "infinity" : "-infinity";
     double decimal = shortestDecimal(value);
     if (std::fabs(decimal) < 1.0e15 && std::floor(decimal) == decimal)
         return static_cast<std::int64_t>(decimal);
@@ -208,31 +213,30 @@ Json cloudJson(const CloudLayer& cloud) {
     return json;
 }
 
-Json postEffectsJson(const PostEffects& post) {
+// Every effect the scene asks for, with the settings scene/scene_settings.cpp declares for it, in its
+// order: "center[0]" and "center[1]" make one array.
+Json postEffectsJson(const Scene& scene) {
+    const std::vector<SettingText> values = sceneSettings(scene);
     Json json = Json::object();
-    if (const auto& bloom = post.bloom) {
-        json[std::string(enumName(PostEffect::bloom))] = Json{{"threshold", number(bloom->threshold)},
-                                                              {"knee", number(bloom->knee)},
-                                                              {"intensity", number(bloom->intensity)},
-                                                              {"levels", bloom->levels}};
-    }
-    if (const auto& matrix = post.colorMatrix) {
-        json[std::string(enumName(PostEffect::colorMatrix))] =
-            Json{{"preset", name(matrix->preset)}, {"amount", number(matrix->amount)}};
-    }
-    if (const auto& blur = post.radialBlur) {
-        json[std::string(enumName(PostEffect::radialBlur))] = Json{{"center", vector(blur->center)},
-                                                                   {"length", number(blur->length)},
-                                                                   {"start", number(blur->start)},
-                                                                   {"taps", blur->taps}};
-    }
-    if (const auto& dof = post.depthOfField) {
-        json[std::string(enumName(PostEffect::depthOfField))] =
-            Json{{"maxCoc", number(dof->maxCocPixels)}, {"taps", dof->taps}};
-    }
-    if (const auto& toneMap = post.toneMap) {
-        json[std::string(enumName(PostEffect::toneMap))] =
-            Json{{"operator", name(toneMap->curve)}, {"exposure", number(toneMap->exposure)}};
+    for (PostEffect effect : {PostEffect::bloom, PostEffect::colorMatrix, PostEffect::radialBlur,
+                              PostEffect::depthOfField, PostEffect::toneMap}) {
+        if (!scene.postEffects.wants(effect)) continue;
+        const std::string prefix = cat("postEffects.", enumName(effect), ".");
+        Json fields = Json::object();
+        for (const SettingSpec* spec : settingsUnder(prefix)) {
+            auto value = std::find_if(values.begin(), values.end(),
+                                      [&](const SettingText& v) { return v.setting == spec->path; });
+            if (value == values.end()) continue;
+            Json written = spec->type == ParamType::Choice
+                               ? Json(value->text)
+                               : number(std::strtof(value->text.c_str(), nullptr));
+            std::string field = settingField(*spec, prefix);
+            if (auto bracket = field.find('['); bracket != std::string::npos)
+                fields[field.substr(0, bracket)].push_back(written);
+            else
+                fields[field] = written;
+        }
+        json[std::string(enumName(effect))] = fields;
     }
     return json;
 }
@@ -296,7 +300,7 @@ std::string saveScene(const Scene& scene) {
     json["objects"] = arrayOf(scene.objects, objectJson);
     if (!scene.emitters.empty()) json["emitters"] = arrayOf(scene.emitters, emitterJson);
     if (!scene.clouds.empty()) json["clouds"] = arrayOf(scene.clouds, cloudJson);
-    Json post = postEffectsJson(scene.postEffects);
+    Json post = postEffectsJson(scene);
     if (!post.empty()) json["postEffects"] = post;
     return withNumberArraysOnOneLine(json.dump(2)) + "\n";
 }

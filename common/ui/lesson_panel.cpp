@@ -16,10 +16,12 @@ namespace {
 // The value's widget; true when the user changed it this frame.
 bool drawParamWidget(const Param& p) {
     switch (p.type) {
+        // The slider's span (a setting's may be narrower than its range: the values a lesson is shown
+        // with); Ctrl+click types any value.
         case ParamType::Float:
-            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.min), float(p.max));
+            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.sliderMin), float(p.sliderMax));
         case ParamType::Int:
-            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.min), int(p.max));
+            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.sliderMin), int(p.sliderMax));
         case ParamType::Bool:
             return ImGui::Checkbox(p.name.c_str(), p.boolValue);
         case ParamType::Choice: {

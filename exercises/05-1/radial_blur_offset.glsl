@@ -6,11 +6,13 @@ const int kChapter = 1;       // v = d * (max(|d| - start, 0) / |d|) * length: 0
 const int kGuarded = 2;       // the same, defined at the centre pixel
 const float kCentreEpsilon = 1e-6;
 
-layout(location = 0) uniform vec2 centrePixels;
-layout(location = 1) uniform float blurLength;     // the chapter's z
-layout(location = 2) uniform float startDistance;  // the chapter's w
-layout(location = 3) uniform int formula;
-layout(location = 5) uniform vec2 targetSize;      // at least 1x1
+#include "effects/post/post_bindings.glsl"
+
+layout(location = kBlurCentreLocation) uniform vec2 centrePixels;
+layout(location = kBlurLengthLocation) uniform float blurLength;     // the chapter's z
+layout(location = kBlurStartLocation) uniform float startDistance;   // the chapter's w
+layout(location = kBlurFormulaLocation) uniform int formula;
+layout(location = kBlurTargetSizeLocation) uniform vec2 targetSize;  // at least 1x1
 
 vec2 tapOffset(vec2 pixel) {
     vec2 d = (centrePixels - pixel) / targetSize;  // toward the centre, in texture coordinates

@@ -2,8 +2,10 @@
 // This file stands in for shaders/effects/dof/coc.glsl: the lesson's CoC heat map and its blurs, and
 // `./fxlab check 09 1`, build from it. signedCocPixels is yours to write; the rest is given. The CoC
 // is a diameter in pixels, negative in front of the focus plane (near field), positive behind it.
-layout(location = 10) uniform vec2 depthRange;  // the projection's near and far planes (m)
-layout(location = 11) uniform vec4 lens;        // 1/P (1/m), K (px m), max |CoC| (px), radius per diameter
+#include "effects/dof/dof_bindings.glsl"
+
+layout(location = kDofDepthRangeLocation) uniform vec2 depthRange;  // the projection's near and far planes (m)
+layout(location = kDofLensLocation) uniform vec4 lens;        // 1/P (1/m), K (px m), max |CoC| (px), radius per diameter
 
 // View-space distance for a window-space depth of a standard projection (depth range 0..1). The
 // chapter's ToRealZ without 2d - 1: n f / (f - d (f - n)) keeps its precision near d = 1 (the sky).

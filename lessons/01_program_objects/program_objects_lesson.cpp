@@ -1,24 +1,91 @@
-#include "program_objects_lesson.hpp"
-
+// Lesson 01: program objects (the Shader effects chapter, §1 and its learning goals).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <optional>
 
 #include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/gpu_mesh.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "gl/debug_output.hpp"
+#include "gl/program.hpp"
 #include "raw_programs.hpp"
+
+namespace fx::glsl {
+#include "shaders/lessons/01_program_objects/skinning_bindings.glsl"
+}  // namespace fx::glsl
 
 namespace lesson01 {
 
 using namespace fx;
+
+class ProgramObjectsLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Parentheses; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { CopyPasted, CheckedPrograms, CachedLocations, Parentheses, LiveReload };
+    enum Broken { NotBroken, SyntaxError, UndeclaredName, LinkError };
+
+private:
+    // Parameters.
+    // Steps 1 and 2 start with the chapter's typo in the normals program: step 1 shows what it does
+    // unchecked, step 2 the check that catches it. "none" shows both steps working.
+    int broken_ = SyntaxError;
+    bool lookupEveryDraw_ = false;
+    int gridSize_ = 20;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int meshDetail_ = 128;  // sphere segments for step 4
+    int spheres_ = 16;      // instances for step 4
+
+    Gpu<GpuMesh> gridBox_{makeBox({0.18f, 0.18f, 0.18f}), "grid box"};
+    GpuMesh denseSphere_;
+    int denseSphereDetail_ = 0;
+
+    // Step 1: raw names, built without checks (again whenever broken_shader changes).
+    gl::ProgramName rawLit_, rawUnlit_, rawNormals_;
+    int rawBuiltWith_ = -1;
+    std::int64_t rawErrorsLastFrame_ = 0;  // GL errors step 1's draws raised (none checks them)
+    // Steps 2 to 5: checked, reloadable program objects.
+    gl::ReloadableProgram lit_, unlit_, normals_;
+    // Step 2: the normals program rebuilt from the broken file, checked; only while step 2 shows it.
+    gl::ReloadableProgram brokenAttempt_;
+    int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
+    gl::ReloadableProgram skinGrouped_, skinParenthesised_;
+    Gpu<FullscreenPass> present_{"common/copy.frag", "copy"};
+
+    // Step 3's measurements (CPU side, per frame).
+    int lookupsLastFrame_ = 0;
+    double lookupMsLastFrame_ = 0;
+    // Step 4's two skinning passes, timed side by side.
+    PassGroup groupedPass_, parenthesisedPass_;
+
+    void drawScene(GLuint program, const FrameInfo& frame) const;
+    // The chapter's picture of several programs: the box unlit, the sphere in the normals program,
+    // the rest lit.
+    void drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals, const FrameInfo& frame) const;
+    void updateRawPrograms();
+    void drawGrid(GLuint program, const FrameInfo& frame);
+    void buildSkinningComparison(FrameGraph& graph, const FrameInfo& frame);
+    void updateBrokenAttempt(int step);
+};
 
 namespace {
 
@@ -32,10 +99,6 @@ const OperationCount kGrouped = operationCount(SkinningProduct::grouped);       
 const OperationCount kParenthesised = operationCount(SkinningProduct::parenthesised);  // T*(J*p)
 
 }  // namespace
-
-LessonInfo ProgramObjectsLesson::info() const {
-    return {1, "program-objects", "Program objects", "scenes/01_program_objects.json"};
-}
 
 std::vector<std::string> ProgramObjectsLesson::steps() const {
     return {
@@ -72,12 +135,7 @@ void ProgramObjectsLesson::declareParams(ParamSet& params) {
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
-Status ProgramObjectsLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    gridBox_ = GpuMesh(makeBox({0.18f, 0.18f, 0.18f}), "grid box");
-    emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
-
+Status ProgramObjectsLesson::init(const Scene&) {
     lit_ = gl::ReloadableProgram({shader("lit.vert"), shader("lit.frag"), {}, {}, "lit"});
     unlit_ = gl::ReloadableProgram({shader("lit.vert"), shader("unlit.frag"), {}, {}, "unlit"});
     normals_ = gl::ReloadableProgram({shader("lit.vert"), shader("normals.frag"), {}, {}, "normals"});
@@ -85,7 +143,6 @@ Status ProgramObjectsLesson::init(const Scene& scene) {
         gl::ReloadableProgram({shader("skinning.vert"), shader("lit.frag"), {}, {}, "skinning (T*J)*p"});
     skinParenthesised_ = gl::ReloadableProgram(
         {shader("skinning.vert"), shader("lit.frag"), {}, "#define PARENTHESISED 1", "skinning T*(J*p)"});
-    copy_ = gl::ReloadableProgram({"common/fullscreen.vert", "common/copy.frag", {}, {}, "copy"});
     return Status::success();
 }
 
@@ -131,41 +188,41 @@ void ProgramObjectsLesson::updateBrokenAttempt(int step) {
 
 void ProgramObjectsLesson::drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals,
                                              const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, *scene_, camera);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    for (GLuint p : {lit, unlit, normals}) SceneMeshes::setFrameUniforms(p, frame.world.scene(), camera);
     auto named = [](const char* name) { return [name](const SceneObject& o) { return o.name == name; }; };
     MeshDrawOptions rest;
     rest.only = [](const SceneObject& o) { return o.name != kUnlitObject && o.name != kNormalsObject; };
-    meshes_.draw(lit, *scene_, frame.seconds, rest);
+    frame.world.draw(lit, rest);
     MeshDrawOptions box;
     box.only = named(kUnlitObject);
-    meshes_.draw(unlit, *scene_, frame.seconds, box);
+    frame.world.draw(unlit, box);
     // glUseProgram with a program that did not link fails and leaves the program bound before it in
     // use: what the object looks like then depends on what ran last (the chapter's engine drew it
     // black). Unbinding first makes it the same every frame: no program, nothing drawn.
     glUseProgram(0);
     MeshDrawOptions sphere;
     sphere.only = named(kNormalsObject);
-    meshes_.draw(normals, *scene_, frame.seconds, sphere);
+    frame.world.draw(normals, sphere);
 }
 
 void ProgramObjectsLesson::drawScene(GLuint program, const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    SceneMeshes::setFrameUniforms(program, *scene_, camera);
-    meshes_.draw(program, *scene_, frame.seconds);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
+    frame.world.draw(program);
 }
 
 void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-    SceneMeshes::setFrameUniforms(program, *scene_, camera);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+    SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
     glUseProgram(program);
     int n = gridSize_;
     lookupsLastFrame_ = 0;
     double lookupSeconds = 0;
     for (int z = 0; z < n; ++z) {
         for (int x = 0; x < n; ++x) {
-            GLint modelLocation = uniform_location::model;
-            GLint colorLocation = uniform_location::baseColor;
+            GLint modelLocation = glsl::kModelLocation;
+            GLint colorLocation = glsl::kBaseColorLocation;
             if (lookupEveryDraw_) {
                 // What the chapter warns against: a string comparison per uniform per draw.
                 auto start = std::chrono::steady_clock::now();
@@ -180,8 +237,8 @@ void ProgramObjectsLesson::drawGrid(GLuint program, const FrameInfo& frame) {
             glm::vec3 color(0.3f + 0.7f * (fx_ + 0.5f), 0.4f, 0.3f + 0.7f * (fz + 0.5f));
             glProgramUniformMatrix4fv(program, modelLocation, 1, GL_FALSE, glm::value_ptr(model));
             glProgramUniform3fv(program, colorLocation, 1, glm::value_ptr(color));
-            glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
-            gridBox_.draw();
+            glProgramUniform3f(program, glsl::kEmissiveLocation, 0, 0, 0);
+            gridBox_->draw();
         }
     }
     lookupMsLastFrame_ = lookupSeconds * 1000.0;
@@ -195,8 +252,9 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
     TextureDesc colorDesc{TextureSize::output(), TextureFormat::RGBA8, 1};
     TextureDesc depthDesc{TextureSize::output(), TextureFormat::Depth32F, 1};
     auto drawSphere = [this, frame](GLuint program) {
-        CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
-        SceneMeshes::setFrameUniforms(program, *scene_, camera);
+        CameraMatrices camera =
+            cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
+        SceneMeshes::setFrameUniforms(program, frame.world.scene(), camera);
         // Four joints swaying with time (wrapped, so the angle stays small after hours).
         float phase = float(std::fmod(frame.seconds, 4.0) / 4.0 * 6.2831853);
         glm::mat4 joints[4];
@@ -204,20 +262,20 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
             joints[j] = glm::rotate(glm::mat4(1.0f), 0.3f * std::sin(phase + float(j)),
                                     glm::vec3(0, 1, 0.3f * float(j)));
         }
-        glProgramUniformMatrix4fv(program, 20, 4, GL_FALSE, glm::value_ptr(joints[0]));
+        glProgramUniformMatrix4fv(program, glsl::kJointsLocation, 4, GL_FALSE, glm::value_ptr(joints[0]));
         int row = std::max(1, int(std::lround(std::sqrt(double(spheres_)))));
         float scale = 1.0f / float(row);
         glm::mat4 model =
             glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 1.3f, 0)), glm::vec3(scale));
-        glProgramUniform1i(program, 24, row);
-        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-        glProgramUniform3f(program, uniform_location::baseColor, 0.8f, 0.55f, 0.3f);
-        glProgramUniform3f(program, uniform_location::emissive, 0, 0, 0);
+        glProgramUniform1i(program, glsl::kSpheresPerRowLocation, row);
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform3f(program, glsl::kBaseColorLocation, 0.8f, 0.55f, 0.3f);
+        glProgramUniform3f(program, glsl::kEmissiveLocation, 0, 0, 0);
         glUseProgram(program);
         denseSphere_.draw(row * row);
     };
     // The opaque scene's state, on a near-black background of its own so the two products stand out.
-    PassState sceneState = hdrSceneState(*scene_);
+    PassState sceneState = hdrSceneState(frame.world.scene());
     sceneState.clearColor = ClearColor{0.02f, 0.02f, 0.03f, 1.0f};
     TextureHandle grouped[2], parenthesised[2];
     auto& a = graph
@@ -241,17 +299,12 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         graph.inspect("skinning.parenthesised.color");
     }
     TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
-    graph
-        .addPass("present",
-                 [this, shown](PassContext& ctx) {
-                     glBindTextureUnit(0, ctx.native(shown));
-                     glUseProgram(copy_.name());
-                     glBindVertexArray(emptyVao_.name());
-                     glDrawArrays(GL_TRIANGLES, 0, 3);
-                 })
+    const FullscreenPass* present = &*present_;
+    present_
+        ->addPass(graph, "present",
+                  [present, shown](PassContext& ctx) { present->draw({ctx.native(shown)}); })
         .read(shown)
         .writeColor(graph.output())
-        .setState({.depthTest = false, .depthWrite = false, .blend = false, .faceCulling = false})
         .setTaps(1);
 }
 
@@ -262,7 +315,7 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         return;
     }
     if (frame.step == CopyPasted) updateRawPrograms();
-    PassState sceneState = hdrSceneState(*scene_);
+    PassState sceneState = hdrSceneState(frame.world.scene());
     graph
         .addPass(
             "scene",
@@ -364,3 +417,5 @@ void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson01
+
+FX_LESSON(lesson01::ProgramObjectsLesson, "Program objects", "scenes/01_program_objects.json")

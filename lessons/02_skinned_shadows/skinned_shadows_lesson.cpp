@@ -1,16 +1,62 @@
-#include "skinned_shadows_lesson.hpp"
-
+// Lesson 02: skeletal-mesh shadows (the Shader effects chapter, §2; hard cases 17, 19, 20).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
 
 namespace lesson02 {
 
 using namespace fx;
+
+class SkinnedShadowsLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return ProductOrder; }  // the crowd: every knob has work to show
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { StaticCastersOnly, SkinnedCasters, ProductOrder, ErrorFlood, CutoutShadows };
+
+    // What the shadow pass does in a step (public so tests can build the same frame).
+    ShadowPassOptions shadowOptionsForStep(int step, bool benchmark) const;
+    // The crowd of step 3: where each copy of the character stands (the first is where it is).
+    static std::vector<glm::mat4> crowdPlacements(int count);
+
+private:
+    // Parameters; map size and taps start at the scene's values (res/scenes/02_skinned_shadows.json).
+    int mapSize_ = 2048;
+    int filterTaps_ = 16;
+    float filterRadius_ = 0.03f;
+    int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
+    int crowd_ = 16;
+    int materialUpload_ = 0;  // 0: always (the chapter's flood), 1: ask the program
+    int cutoffUniform_ = 0;   // 0: first program only (the chapter's bug), 1: every program
+
+    ShadowSettings sceneShadow_;
+    Gpu<ShadowMap> shadows_;
+    Gpu<ShadowLitPass> lit_;
+    Gpu<OutputTransformPass> present_;
+
+    // Filled while the frame executes (the pass bodies write them), read by the panel and report.
+    mutable ShadowPassStats stats_;
+    ShadowPassStats otherStats_;
+    // The shadow pass, and in step 3 the one drawing with the other product: timed side by side.
+    PassGroup shadowPass_, otherProductPass_;
+};
 
 namespace {
 
@@ -19,10 +65,6 @@ constexpr float kCrowdSpacingX = 1.1f;
 constexpr float kCrowdSpacingZ = 1.3f;
 
 }  // namespace
-
-LessonInfo SkinnedShadowsLesson::info() const {
-    return {2, "skinned-shadows", "Skeletal-mesh shadows", "scenes/02_skinned_shadows.json"};
-}
 
 std::vector<std::string> SkinnedShadowsLesson::steps() const {
     return {
@@ -65,12 +107,7 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
 }
 
 Status SkinnedShadowsLesson::init(const Scene& scene) {
-    scene_ = &scene;
     if (const Light* light = shadowCastingLight(scene)) sceneShadow_ = light->shadow;
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    lit_ = ShadowLitPass::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
@@ -114,21 +151,14 @@ ShadowPassOptions SkinnedShadowsLesson::shadowOptionsForStep(int step, bool benc
     return o;
 }
 
-void SkinnedShadowsLesson::simulations(SceneWork& work) {
-    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
-    work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
-}
-
 void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    const Scene& scene = *scene_;
     ShadowSettings settings = sceneShadow_;
     settings.casts = true;
     settings.mapSize = mapSize_;
     settings.filterTaps = filterTaps_;
 
     ShadowPassOptions options = shadowOptionsForStep(frame.step, frame.benchmark);
-    DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap map = shadows_->declare(graph, frame.world, settings, options);
     if (map.pass) map.pass->joinGroup(shadowPass_);
 
     // Step 3: the other product draws the same crowd into its own map, so both times stand side by
@@ -140,15 +170,14 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
         other.passName = "shadow map (other product)";
         other.textureName = "shadow.map_other_product";
         other.stats = &otherStats_;
-        DeclaredShadowMap compared =
-            shadows_.declare(graph, scene, meshes_, frame.seconds, settings, map.lookup.light, other);
+        DeclaredShadowMap compared = shadows_->declare(graph, frame.world, settings, map.lookup.light, other);
         if (compared.pass) compared.pass->keepAlive().joinGroup(otherProductPass_);
     }
 
-    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
-    shadows_.declareDepthView(graph, map);
-    lit_.declareLightView(graph, scene, meshes_, frame.seconds, map, options.skinnedPlacements);
-    present_.declare(graph, hdr.color);
+    HdrSceneTargets hdr = lit_->declare(graph, frame.world, map, options.skinnedPlacements);
+    shadows_->declareDepthView(graph, map);
+    lit_->declareLightView(graph, frame.world, map, options.skinnedPlacements);
+    present_->declare(graph, hdr.color);
 }
 
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
@@ -209,3 +238,5 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson02
+
+FX_LESSON(lesson02::SkinnedShadowsLesson, "Skeletal-mesh shadows", "scenes/02_skinned_shadows.json")

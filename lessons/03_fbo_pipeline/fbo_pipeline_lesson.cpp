@@ -1,16 +1,62 @@
-#include "fbo_pipeline_lesson.hpp"
-
+// Lesson 03: the FBO pipeline and its draw order (the Shader effects chapter, §3.1 to §3.4; its
+// hard cases 15 state leaks, 16 viewport leaks and 21 aspect: docs/chapters.md).
 #include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
 #include "chapter_order.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/post/ui_queue_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
+#include "lit_scene_pass.hpp"
 
 namespace lesson03 {
 
 using namespace fx;
+
+class FboPipelineLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { StraightToWindow, Reordered, EachPassSetsItsState, FloatTarget, OneOutputTransform };
+
+private:
+    // Step 5: left of this fraction of the width, the scene shader still encodes for the display and
+    // the output transform encodes again (the washout); right of it, the fix.
+    float washoutSplit_ = 0.5f;
+    // Steps 4 and 5: the scene pass keeps the shadow map's viewport (the deliberate bug the graph
+    // otherwise rules out by setting every pass's viewport from its target).
+    bool viewportBug_ = false;
+
+    Gpu<ShadowMap> shadows_;
+    Gpu<LitScenePass> litScene_;
+    Gpu<FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};
+    Gpu<OutputTransformPass> outputTransform_;
+    Gpu<UiQueuePass> uiQueue_;
+
+    PassGroup shadowPass_;        // the shadow map pass: what state it inherited last frame
+    std::string noShadowReason_;  // why there is no shadow pass, if there is none
+
+    // The shadow pass's inherited state in `report`.
+    std::vector<std::string> shadowInherited(const FrameReport* report) const;
+
+    void declareStraightToWindow(FrameGraph& graph, const FrameInfo& frame, const DeclaredShadowMap& shadow);
+    void declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
+                                   const DeclaredShadowMap& shadow);
+};
 
 namespace {
 
@@ -28,10 +74,6 @@ PassState chapterDrawState(const Scene& scene) {
 }
 
 }  // namespace
-
-LessonInfo FboPipelineLesson::info() const {
-    return {3, "fbo-pipeline", "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json"};
-}
 
 std::vector<std::string> FboPipelineLesson::steps() const {
     return {
@@ -57,27 +99,14 @@ void FboPipelineLesson::declareParams(ParamSet& params) {
 }
 
 Status FboPipelineLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    litScene_ = LitScenePass::create();
-    copyToWindow_ = FullscreenPass("common/copy.frag", "to the window");
-    outputTransform_ = OutputTransformPass::create();
-    uiQueue_ = UiQueuePass::create();
     noShadowReason_ =
         shadowCastingLight(scene) ? "" : "the scene has no directional light that casts shadows";
     return Status::success();
 }
 
-void FboPipelineLesson::simulations(SceneWork& work) {
-    // Animation and GPU skinning once a frame, only when the scene has skinned meshes.
-    work.onUpdate(Simulation::animation, "skinning",
-                  [this](const SimulationStep& s) { meshes_.update(s.seconds); });
-}
-
 void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     ShadowSettings settings;
-    if (const Light* sun = shadowCastingLight(*scene_)) settings = sun->shadow;
+    if (const Light* sun = shadowCastingLight(frame.world.scene())) settings = sun->shadow;
     ShadowPassOptions options;
     // Until section 3.3 the chapter's CreateShadowMap sets no state: it relies on the frame's.
     options.setsItsOwnState = frame.step >= EachPassSetsItsState;
@@ -85,18 +114,17 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     if (frame.step == StraightToWindow) {
         // The chapter's old order: the draw state is set before the shadow map is created.
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_)).setTaps(0);
-        DeclaredShadowMap shadow =
-            shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene())).setTaps(0);
+        DeclaredShadowMap shadow = shadows_->declare(graph, frame.world, settings, options);
         if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
         declareStraightToWindow(graph, frame, shadow);
         return;
     }
-    DeclaredShadowMap shadow = shadows_.declare(graph, *scene_, meshes_, frame.seconds, settings, options);
+    DeclaredShadowMap shadow = shadows_->declare(graph, frame.world, settings, options);
     if (shadow.pass) shadow.pass->joinGroup(shadowPass_);
     if (frame.step == Reordered) {
         Pass& setup = graph.addPass("clear + draw state", [](PassContext&) {});
-        setup.writeColor(graph.output()).setState(chapterDrawState(*scene_)).setTaps(0);
+        setup.writeColor(graph.output()).setState(chapterDrawState(frame.world.scene())).setTaps(0);
         declareStraightToWindow(graph, frame, shadow);
     } else if (frame.step == EachPassSetsItsState) {
         declareStraightToWindow(graph, frame, shadow);
@@ -112,8 +140,8 @@ void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameIn
     // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
     scene.declaresState = frame.step >= EachPassSetsItsState;
     scene.clears = frame.step >= EachPassSetsItsState;
-    litScene_.declareIntoWindow(graph, *scene_, meshes_, frame.seconds, shadow, scene);
-    uiQueue_.declare(graph, frame.size);
+    litScene_->declareIntoWindow(graph, frame.world, shadow, scene);
+    uiQueue_->declare(graph, frame.size);
 }
 
 void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
@@ -127,18 +155,19 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
         sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
-        HdrSceneTargets main = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
-                                                            sceneOptions, "scene");
-        const FullscreenPass* copy = &copyToWindow_;
+        HdrSceneTargets main =
+            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
+        const FullscreenPass* copy = &*copyToWindow_;
         TextureHandle color = main.color;
-        graph.addPass("to the window", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
+        copyToWindow_
+            ->addPass(graph, "to the window",
+                      [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
             .read(color)
             .writeColor(graph.output())
-            .setState(FullscreenPass::state())
             .setTaps(1);
     } else {
-        HdrSceneTargets linear = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds, shadow,
-                                                              sceneOptions, "scene");
+        HdrSceneTargets linear =
+            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
         std::optional<SplitView> split;
         if (washoutSplit_ > 0.0f) {
             // The same scene, its shader still encoding: what the chapter saw before the fix. Only
@@ -146,13 +175,13 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
             LitSceneOptions washedOut;
             washedOut.passName = "scene (shader encodes too)";
             washedOut.encodeForDisplay = true;
-            HdrSceneTargets encoded = litScene_.declareIntoTargets(graph, *scene_, meshes_, frame.seconds,
-                                                                   shadow, washedOut, "scene_encoded");
+            HdrSceneTargets encoded =
+                litScene_->declareIntoTargets(graph, frame.world, shadow, washedOut, "scene_encoded");
             split = SplitView{encoded.color, washoutSplit_};
         }
-        outputTransform_.declare(graph, linear.color, split);
+        outputTransform_->declare(graph, linear.color, split);
     }
-    uiQueue_.declare(graph, frame.size);
+    uiQueue_->declare(graph, frame.size);
 }
 
 std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* report) const {
@@ -203,7 +232,7 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
         std::string target = cat(frame.size.width, "x", frame.size.height);
         bool bug = viewportBug_ && noShadowReason_.empty();
         int map = 0;
-        if (const Light* sun = shadowCastingLight(*scene_)) map = sun->shadow.mapSize;
+        if (const Light* sun = shadowCastingLight(frame.world.scene())) map = sun->shadow.mapSize;
         out.add(
             "sceneViewport",
             bug ? cat(map, "x", map, " on a ", target, " target (the shadow map's: only a corner is drawn)")
@@ -213,3 +242,5 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson03
+
+FX_LESSON(lesson03::FboPipelineLesson, "The FBO pipeline and its draw order", "scenes/03_fbo_pipeline.json")

@@ -30,19 +30,11 @@ struct LitSceneOptions {
 
 class LitScenePass {
 public:
-    LitScenePass() = default;  // empty: no GL yet
-    static LitScenePass create();
-
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
-
-    // Into the graph's output (the window). `scene`, `meshes` and `shadow` must outlive the frame.
-    fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
-                                double seconds, const fx::DeclaredShadowMap& shadow,
-                                const LitSceneOptions& options) const;
+    // Into the graph's output (the window).
+    fx::Pass& declareIntoWindow(fx::FrameGraph& graph, const fx::World& world,
+                                const fx::DeclaredShadowMap& shadow, const LitSceneOptions& options) const;
     // Into `<prefix>.color` (RGBA16F, the output's size) and `<prefix>.depth` (Depth32F), cleared.
-    fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::Scene& scene,
-                                           const fx::SceneMeshes& meshes, double seconds,
+    fx::HdrSceneTargets declareIntoTargets(fx::FrameGraph& graph, const fx::World& world,
                                            const fx::DeclaredShadowMap& shadow,
                                            const LitSceneOptions& options, const std::string& prefix) const;
 
@@ -50,10 +42,13 @@ public:
     static fx::ClearColor windowClearColor(const fx::Scene& scene);
 
 private:
-    fx::gl::ReloadableProgram program_;
+    fx::gl::ReloadableProgram program_{{"effects/shadow/shadowed_scene.vert",
+                                        "lessons/03_fbo_pipeline/scene_lit.frag",
+                                        {},
+                                        {},
+                                        "scene (lit, shadowed)"}};
 
-    fx::Pass& addPass(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
-                      double seconds, const fx::DeclaredShadowMap& shadow,
+    fx::Pass& addPass(fx::FrameGraph& graph, const fx::World& world, const fx::DeclaredShadowMap& shadow,
                       const LitSceneOptions& options) const;
 };
 

@@ -1,16 +1,72 @@
-#include "colour_matrix_lesson.hpp"
-
+// Lesson 04: colour matrix (the Shader effects chapter, §3.4, §3.5, hard cases 5 to 8, Exercise 02).
 #include <algorithm>
 #include <array>
 #include <cstdio>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/colour_matrix.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson04 {
 
 using namespace fx;
+
+class ColourMatrixLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void update(const FrameInfo& frame) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { Identity, Grayscale, Sepia, Affine };
+    // The presets of step 4 (the `preset` parameter), in the order of its choices.
+    enum Preset {
+        None,
+        GrayscalePreset,
+        SepiaPreset,
+        Saturation,
+        HueRotation,
+        ChannelSwap,
+        BrightnessContrast,
+        Invert,
+        Invert3x3,
+        Custom,
+    };
+
+private:
+    // Parameters.
+    int preset_ = Invert;
+    float amount_ = 1.0f;
+    float saturation_ = 1.8f;
+    float hueDegrees_ = 120.0f;
+    int channelOrder_ = 3;  // "gbr"
+    float brightness_ = 0.1f;
+    float contrast_ = 1.4f;
+    bool splitView_ = true;
+    float divider_ = 0.72f;  // right of the blue cylinder: every object but the capsule is processed
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<ColourMatrixPass> grading_;
+    Gpu<OutputTransformPass> present_;
+    ColourTransform custom_;  // the matrix edited in the overlay (preset "custom")
+    PassGroup gradingGroup_ = groupNeeding(SceneFeature::colorMatrix);
+    PointDrag dividerDrag_;
+
+    // The transform the step (and, in step 4, the preset) selects, before `amount`.
+    ColourTransform selected(int step) const;
+    ColourTransform presetTransform(int preset) const;
+};
 
 namespace {
 
@@ -40,10 +96,6 @@ std::string equations(const ColourTransform& t) {
 
 }  // namespace
 
-LessonInfo ColourMatrixLesson::info() const {
-    return {4, "colour-matrix", "Colour matrix", "scenes/04_colour_matrix.json"};
-}
-
 std::vector<std::string> ColourMatrixLesson::steps() const {
     return {
         "Render into a float target; one output transform",
@@ -65,8 +117,7 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
                    "Step 4: the transform (custom: the matrix edited in the panel)")
         .fromScene("postEffects.colorMatrix.preset")
         .inSteps(affine);
-    params.addFloat("amount", &amount_, 0.0f, 1.0f, "Blend from the original (0) to the full transform (1)")
-        .fromScene("postEffects.colorMatrix.amount");
+    params.addSetting("amount", &amount_, sceneSetting("postEffects.colorMatrix.amount"));
     params
         .addFloat("saturation", &saturation_, -1.0f, 3.0f,
                   "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours")
@@ -91,15 +142,6 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
                    "Show the picture before the matrix right of the divider, after it on the left");
     params.addFloat("divider", &divider_, 0.0f, 1.0f,
                     "Where the split view's divider is (drag it with the mouse)");
-}
-
-Status ColourMatrixLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    grading_ = ColourMatrixPass::create();
-    present_ = OutputTransformPass::create();
-    return Status::success();
 }
 
 ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
@@ -147,12 +189,12 @@ void ColourMatrixLesson::update(const FrameInfo& frame) {
 
 void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // Exercise 02: the lesson chooses a transform value and hands it to the one setter.
-    grading_.setTransform(blendFromIdentity(selected(frame.step), amount_));
+    grading_->setTransform(blendFromIdentity(selected(frame.step), amount_));
 
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     DeclaredPass graded = [&] {
         PassGroup::Scope in(graph, gradingGroup_);  // runs only when the scene asks for a colour matrix
-        return grading_.declare(graph, hdr.color);
+        return grading_->declare(graph, hdr.color);
     }();
     const bool calledFor = !lacks(graph, SceneFeature::colorMatrix);
     TextureHandle shown = calledFor ? graded.output : hdr.color;
@@ -160,10 +202,10 @@ void ColourMatrixLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     // The matrix's picture goes left of the divider, where the scene's red box, green sphere and blue
     // cylinder stand (the objects the steps' text talks about); the untouched frame is on the right.
     if (splitView_ && calledFor && !frame.benchmark) {
-        present_.declare(graph, hdr.color, SplitView{graded.output, divider_});
+        present_->declare(graph, hdr.color, SplitView{graded.output, divider_});
         return;
     }
-    present_.declare(graph, shown);
+    present_->declare(graph, shown);
 }
 
 void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
@@ -207,7 +249,7 @@ void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
 }
 
 void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
-    ColourTransform used = grading_.transform();
+    ColourTransform used = grading_->transform();
     out.add("transform", equations(used));
     out.add("needsOffset", !used.linear(), "needs an offset (not a 3x3 matrix)");
     out.add("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))), "white ->");
@@ -217,3 +259,5 @@ void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson04
+
+FX_LESSON(lesson04::ColourMatrixLesson, "Colour matrix", "scenes/04_colour_matrix.json")

@@ -1,20 +1,58 @@
-#include "radial_blur_lesson.hpp"
-
+// Lesson 05: radial blur (the Shader effects chapter, §3.6, hard cases 1 to 4, Exercises 03, 04).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/point_drag.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/post/radial_blur.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson05 {
 
 using namespace fx;
 
-namespace {
+class RadialBlurLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void update(const FrameInfo& frame) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return SampleCount; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
 
-constexpr float kCentreMin = -5.0f, kCentreMax = 5.0f;
+    enum Step { FirstVersion, ChapterStart, Guarded, SampleCount };
+
+    // What a step blurs with: the formula, the sample count, and whether the centre sits on a pixel.
+    RadialBlurParams paramsForStep(int step) const;
+
+private:
+    // Parameters (the chapter's defaults).
+    float centreX_ = 0.5f, centreY_ = 0.5f;
+    float length_ = 0.02f;
+    float start_ = 0.2f;
+    int samples_ = 8;
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<RadialBlur> blur_;
+    Gpu<OutputTransformPass> present_;
+    PassGroup blurGroup_ = groupNeeding(SceneFeature::radialBlur);
+    PointDrag centreDrag_;
+
+    // Whether both blur passes ran in the frame before `frame` (the scene asks for the blur).
+    bool blurRan(const FrameInfo& frame) const;
+};
+
+namespace {
 
 std::string numberText(float v) {
     if (std::isnan(v)) return "NaN";
@@ -36,10 +74,6 @@ bool centrePixel(const RadialBlurParams& params, Size2D size, glm::vec2& pixel) 
 
 }  // namespace
 
-LessonInfo RadialBlurLesson::info() const {
-    return {5, "radial-blur", "Radial blur", "scenes/05_radial_blur.json"};
-}
-
 std::vector<std::string> RadialBlurLesson::steps() const {
     return {
         "Zoom blur, first version",
@@ -50,39 +84,15 @@ std::vector<std::string> RadialBlurLesson::steps() const {
 }
 
 void RadialBlurLesson::declareParams(ParamSet& params) {
-    params
-        .addFloat("centre_x", &centreX_, kCentreMin, kCentreMax,
-                  "Blur centre, x in texture coordinates (0 left, 1 right; outside is off screen; drag it)")
-        .fromScene("postEffects.radialBlur.center[0]");
-    params
-        .addFloat("centre_y", &centreY_, kCentreMin, kCentreMax,
-                  "Blur centre, y in texture coordinates (0 bottom, 1 top; outside is off screen; drag it)")
-        .fromScene("postEffects.radialBlur.center[1]");
-    params
-        .addFloat("length", &length_, 0.0f, 0.2f,
-                  "The chapter's z: tap spacing per unit of distance to the centre (0: no blur; above 1/7 "
-                  "the far taps "
-                  "overshoot the centre)")
-        .fromScene("postEffects.radialBlur.length");
-    params
-        .addFloat("start", &start_, 0.0f, 2.0f,
-                  "Steps 2 to 4: distance from the centre that stays sharp (texture coordinates)")
-        .fromScene("postEffects.radialBlur.start")
+    params.addSetting("centre_x", &centreX_, sceneSetting("postEffects.radialBlur.center[0]"), "Drag it");
+    params.addSetting("centre_y", &centreY_, sceneSetting("postEffects.radialBlur.center[1]"), "Drag it");
+    params.addSetting("length", &length_, sceneSetting("postEffects.radialBlur.length"));
+    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"), "Steps 2 to 4")
         .inSteps({ChapterStart, Guarded, SampleCount});
-    Param& samples = params.addInt("samples", &samples_, 1, kRadialBlurMaxSamples,
-                                   "Step 4: taps per pixel, spread over the chapter's 8-tap streak");
+    Param& samples = params.addSetting("samples", &samples_, sceneSetting("postEffects.radialBlur.taps"),
+                                       "Step 4, spread over the chapter's 8-tap streak");
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
-    samples.fromScene("postEffects.radialBlur.taps");
     samples.inSteps({SampleCount});
-}
-
-Status RadialBlurLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    blur_ = RadialBlur::create();
-    present_ = OutputTransformPass::create();
-    return Status::success();
 }
 
 RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
@@ -114,18 +124,20 @@ RadialBlurParams RadialBlurLesson::paramsForStep(int step) const {
 void RadialBlurLesson::update(const FrameInfo& frame) {
     // Dragging moves the centre.
     if (auto at = centreDrag_.update(frame)) {
-        centreX_ = std::clamp(at->x, kCentreMin, kCentreMax);
-        centreY_ = std::clamp(at->y, kCentreMin, kCentreMax);
+        const SettingSpec& x = sceneSetting("postEffects.radialBlur.center[0]");
+        const SettingSpec& y = sceneSetting("postEffects.radialBlur.center[1]");
+        centreX_ = std::clamp(at->x, float(x.min), float(x.max));
+        centreY_ = std::clamp(at->y, float(y.min), float(y.max));
     }
 }
 
 void RadialBlurLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     RadialBlur::Declared blurred = [&] {
         PassGroup::Scope in(graph, blurGroup_);  // runs only when the scene asks for a radial blur
-        return blur_.declare(graph, hdr.color, paramsForStep(frame.step));
+        return blur_->declare(graph, hdr.color, paramsForStep(frame.step));
     }();
-    present_.declare(graph, lacks(graph, SceneFeature::radialBlur) ? hdr.color : blurred.blur.output);
+    present_->declare(graph, lacks(graph, SceneFeature::radialBlur) ? hdr.color : blurred.blur.output);
 }
 
 bool RadialBlurLesson::blurRan(const FrameInfo& frame) const {
@@ -169,3 +181,5 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson05
+
+FX_LESSON(lesson05::RadialBlurLesson, "Radial blur", "scenes/05_radial_blur.json")

@@ -1,16 +1,89 @@
-#include "bloom_lesson.hpp"
-
+// Lesson 06: bloom, with the whole chain live (Shader effects §3.7 and the Bloom chapter,
+// docs/chapters.md). Float targets first, then the two chapters' chains, then what the chapters leave
+// out (Karis average, soft knee, level-independent energy, tone curves).
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/bloom/bloom_chain.hpp"
+#include "effects/bloom/bloom_composite.hpp"
+#include "effects/bloom/bloom_flicker.hpp"
+#include "effects/bloom/bloom_reference.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
+#include "whole_frame.hpp"
 
 namespace lesson06 {
 
 using namespace fx;
+
+class BloomLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Beyond; }
+    std::string benchTexture() const override { return "bloom.result"; }
+    std::string benchReferenceName() const override { return "Gaussian"; }
+    void setBenchReference(bool on) override { benchReference_ = on; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond, WholeFrameStep };
+
+    // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
+    BloomChainSettings chainFor(int step) const;
+    // The composite's scale for a chain of `levels` levels in `step`.
+    float compositeScale(int step, int levels) const;
+    // What a large uniform area of grey value v comes out as in `step` (the chapters' invariant):
+    // v + gain * max(v - threshold, 0), with the gain for the levels that exist at `size`.
+    float uniformGain(int step, Size2D size) const;
+
+private:
+    void drawWholeFramePanel(const FrameInfo& frame) const;
+    void wholeFrameFacts(Facts& out, const FrameInfo& frame) const;
+    bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
+
+    // Parameters (the chapters' values).
+    float threshold_ = 1.0f;
+    float knee_ = 0.5f;
+    float intensity_ = 2.0f;   // the Shader effects chapter's intensity; step 5's glow strength
+    float bloomScale_ = 2.0f;  // the Bloom chapter's (Exercise 01: 1.0)
+    int levels_ = 6;
+    float downOffset_ = 0.75f;
+    float upOffset_ = 0.5f;
+    int format_ = 0;  // index into kChainFormats
+    bool karis_ = true;
+    int finish_ = 3;  // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
+    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
+    float exposure_ = 1.0f;
+    bool reference_ = false;
+    bool benchReference_ = false;
+    int frameOrder_ = 0;   // step 6: index into effectOrders(), 0 the chapter's
+    int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
+
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<BloomChain> chain_;
+    Gpu<BloomComposite> composite_;
+    Gpu<BloomReference> reference_glow_;
+    Gpu<BloomFlicker> flicker_;  // the glow's frame-to-frame change (bloom.flicker)
+    int flickerStep_ = -1;       // the step and Karis setting the flicker measure last compared
+    bool flickerKaris_ = false;
+    Gpu<OutputTransformPass> present_;
+    Gpu<WholeFrame> wholeFrame_;  // step 6
+    // Every bloom pass (chain, composite, flicker view, reference): its time, and the scene's say.
+    PassGroup bloomGroup_ = groupNeeding(SceneFeature::bloom);
+};
 
 namespace {
 
@@ -61,10 +134,6 @@ std::string brightestEmitters(const Scene& scene, std::size_t count) {
 
 }  // namespace
 
-LessonInfo BloomLesson::info() const {
-    return {6, "bloom", "Bloom", "scenes/06_bloom.json"};
-}
-
 std::vector<std::string> BloomLesson::steps() const {
     return {
         "An 8-bit target: everything bright clips",
@@ -79,31 +148,21 @@ std::vector<std::string> BloomLesson::steps() const {
 void BloomLesson::declareParams(ParamSet& params) {
     // The steps with a bloom chain (steps 1 and 2 compare the scene's formats before there is one).
     const std::vector<int> chainSteps = {Chapter000, Chapter001, Beyond, WholeFrameStep};
-    params
-        .addFloat("threshold", &threshold_, 0.0f, 16.0f,
-                  "Steps 3 to 5: brightness (the largest channel) above which light blooms")
-        .fromScene("postEffects.bloom.threshold")
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5")
         .inSteps(chainSteps);
+    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
     params
-        .addFloat("knee", &knee_, 0.0f, 1.0f,
-                  "Step 5: soft knee as a fraction of the threshold (0: the chapters' hard cut)")
-        .fromScene("postEffects.bloom.knee")
-        .inSteps({Beyond});
-    params
-        .addFloat("intensity", &intensity_, 0.0f, 4.0f,
-                  "Step 3: Shader effects' intensity; step 5: the glow's strength (a uniform area gains this "
-                  "times its "
-                  "bright part, for any level count)")
-        .fromScene("postEffects.bloom.intensity")
+        .addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+                    "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
+                    "part, for any level count")
         .inSteps({Chapter000, Beyond, WholeFrameStep});
     params
         .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                   "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)")
         .inSteps({Chapter001});
-    Param& levels = params.addInt("levels", &levels_, 1, kBloomMaxLevels,
-                                  "Steps 3 to 5: levels in the chain (fewer when the window is too small)");
+    Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
+                                      "Steps 3 to 5 (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
-    levels.fromScene("postEffects.bloom.levels");
     levels.inSteps(chainSteps);
     params
         .addFloat(
@@ -130,15 +189,9 @@ void BloomLesson::declareParams(ParamSet& params) {
         "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
     finish.inSteps({Beyond});
-    params
-        .addChoice(
-            "tone_map", &toneCurve_, enumNameList<ToneCurve>(),
-            "Step 5: the output's tone curve (clip: none, everything above 1 clips, as in the chapters)")
-        .fromScene("postEffects.toneMap.operator")
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5")
         .inSteps({Beyond});
-    params
-        .addFloat("exposure", &exposure_, 0.01f, 16.0f, "Step 5: multiplies the light before the tone curve")
-        .fromScene("postEffects.toneMap.exposure")
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"), "Step 5")
         .inSteps({Beyond});
     params
         .addBool(
@@ -157,19 +210,6 @@ void BloomLesson::declareParams(ParamSet& params) {
         .addChoice("frame_matrix", &frameMatrix_, {"identity", "grayscale", "sepia"},
                    "Step 6: the colour matrix the whole frame applies")
         .inSteps({WholeFrameStep});
-}
-
-Status BloomLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    chain_ = BloomChain::create();
-    composite_ = BloomComposite::create();
-    reference_glow_ = BloomReference::create();
-    flicker_ = BloomFlicker::create();
-    present_ = OutputTransformPass::create();
-    wholeFrame_ = WholeFrame::create();
-    return Status::success();
 }
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
@@ -218,13 +258,13 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         int n =
             int(bloomLevels(graph.outputSize(), firstLevelDivisor(w.chain.filters), w.chain.levels).size());
         w.compositeScale = compositeScale(step, std::max(n, 1));
-        wholeFrame_.declare(graph, *scene_, meshes_, frame, w, chain_, composite_, present_);
+        wholeFrame_->declare(graph, frame, w, *chain_, *composite_, *present_);
         return;
     }
     TextureFormat sceneFormat = step == EightBit ? TextureFormat::RGBA8 : TextureFormat::RGBA16F;
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds, sceneFormat);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world, sceneFormat);
     TextureHandle shown = hdr.color;
-    ToneCurve curve = step == Beyond ? static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2)) : ToneCurve::clip;
+    ToneCurve curve = step == Beyond ? *toneCurve_ : ToneCurve::clip;
     float exposure = step == Beyond ? exposure_ : 1.0f;
 
     // Steps 1 and 2 come before bloom: step 4's chain is declared switched off, so the pass table
@@ -248,14 +288,14 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 threshold_, knee_, {}, normalisedCompositeScale(intensity_, int(levels.size()))};
             for (const BloomLevel& l : levels)
                 r.sigmas.push_back(bloomLevelSigma(l.index, downOffset_, upOffset_));
-            BloomReference::Declared d = reference_glow_.declare(graph, hdr.color, r);
+            BloomReference::Declared d = reference_glow_->declare(graph, hdr.color, r);
             if (!d.empty()) {
                 DeclaredPass result =
-                    composite_.declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
+                    composite_->declare(graph, hdr.color, d.glow, {std::nullopt, 0.0f, 1.0f});
                 if (calledFor) shown = result.output;
             }
         } else {
-            BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
+            BloomChain::Declared d = chain_->declare(graph, hdr.color, settings);
             if (!d.empty()) {
                 int n = int(d.levels.size());
                 // With the blur done at half size (a chain of two levels or more) one bilinear tap
@@ -264,15 +304,15 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 if (settings.wideTop && n > 1) enlarge.reset();
                 BloomCompositeSettings c{enlarge, settings.upOffset, compositeScale(chainStep, n)};
                 if (!runs) {
-                    DeclaredPass result = composite_.declare(graph, hdr.color, d.glow(), c);
+                    DeclaredPass result = composite_->declare(graph, hdr.color, d.glow(), c);
                     for (Pass* p : d.passes) p->disable(off);  // a scene without bloom has said why already
                     result.pass.disable(off);
                 } else if (step == Beyond && fused(finish_)) {
                     // The composite and the output transform in one pass: present_ has nothing left to do.
-                    composite_.declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
+                    composite_->declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
                     presented = true;
                 } else {
-                    shown = composite_.declare(graph, hdr.color, d.glow(), c).output;
+                    shown = composite_->declare(graph, hdr.color, d.glow(), c).output;
                 }
                 if (runs) {
                     // The glow's change since last frame (a moving firefly flickers it; Karis steadies it).
@@ -282,7 +322,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                         bool restart = step != flickerStep_ || settings.karisAverage != flickerKaris_;
                         flickerStep_ = step;
                         flickerKaris_ = settings.karisAverage;
-                        flicker_.declare(graph, d.glow(), d.levels.front().size, restart);
+                        flicker_->declare(graph, d.glow(), d.levels.front().size, restart);
                     } else {
                         flickerStep_ = -1;  // the next shown frame starts the comparison over
                     }
@@ -290,7 +330,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             }
         }
     }  // the present pass is no part of the bloom group
-    if (!presented) present_.declare(graph, shown, std::nullopt, curve, exposure);
+    if (!presented) present_->declare(graph, shown, std::nullopt, curve, exposure);
 }
 
 void BloomLesson::drawPanel(const FrameInfo& frame) {
@@ -304,10 +344,10 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
             "Inspect scene.color and look at the range: %s",
             step == EightBit
                 ? "nothing above 1."
-                : cat("the brightest emitters are ", brightestEmitters(*scene_, 3), ".").c_str());
+                : cat("the brightest emitters are ", brightestEmitters(frame.world.scene(), 3), ".").c_str());
         return;
     }
-    if (flicker_.stats().measured && !showsReference(step)) {
+    if (flicker_->stats().measured && !showsReference(step)) {
         ImGui::TextWrapped(
             "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
             "frame's|.%s",
@@ -320,7 +360,8 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (step == WholeFrameStep) wholeFrameFacts(out, frame);
     if (step < Chapter000) {
         out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
-        out.add("brightestEmitters", brightestEmitters(*scene_, 3), "the scene's brightest emitters");
+        out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3),
+                "the scene's brightest emitters");
         return;
     }
     BloomChainSettings s = chainFor(step);
@@ -332,11 +373,11 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("uniformGain", cat(uniformGain(step, frame.size)),
             cat("a uniform grey v comes out as v + gain * max(v - ", threshold_, ", 0); gain"));
     if (step == Beyond) {
-        out.add("toneCurve", toString(static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2))), "tone curve");
+        out.add("toneCurve", toString(*toneCurve_), "tone curve");
         out.add("reference", showsReference(step), "showing the reference Gaussian");
         out.add("finish", kFinishNames[std::clamp(finish_, 0, 3)], "how the chain ends");
     }
-    const BloomFlicker::Stats& f = flicker_.stats();
+    const BloomFlicker::Stats& f = flicker_->stats();
     if (f.measured && !showsReference(step) && step != WholeFrameStep) {
         out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
         out.add("glowChangeMaxPercent", cat(f.maxPercent),
@@ -391,3 +432,5 @@ void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson06
+
+FX_LESSON(lesson06::BloomLesson, "Bloom", "scenes/06_bloom.json")

@@ -83,23 +83,13 @@ bool followsChapterTable(const std::vector<std::string>& executed, std::string* 
     return true;
 }
 
-WholeFrame WholeFrame::create() {
-    WholeFrame w;
-    w.shadows_ = ShadowMap::create();
-    w.lit_ = ShadowLitPass::create();
-    w.blur_ = RadialBlur::create();
-    w.grading_ = ColourMatrixPass::create();
-    w.ui_ = UiQueuePass::create();
-    return w;
-}
-
-void WholeFrame::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                         const FrameInfo& frame, const WholeFrameSettings& settings, const BloomChain& chain,
-                         const BloomComposite& composite, const OutputTransformPass& present) {
+void WholeFrame::declare(FrameGraph& graph, const FrameInfo& frame, const WholeFrameSettings& settings,
+                         const BloomChain& chain, const BloomComposite& composite,
+                         const OutputTransformPass& present) {
     ShadowSettings shadowSettings;
-    if (const Light* sun = shadowCastingLight(scene)) shadowSettings = sun->shadow;
-    DeclaredShadowMap shadow = shadows_.declare(graph, scene, meshes, frame.seconds, shadowSettings, {});
-    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes, frame.seconds, shadow);
+    if (const Light* sun = shadowCastingLight(frame.world.scene())) shadowSettings = sun->shadow;
+    DeclaredShadowMap shadow = shadows_.declare(graph, frame.world, shadowSettings, {});
+    HdrSceneTargets hdr = lit_.declare(graph, frame.world, shadow);
 
     // The chain reads the scene wherever its glow is added, as the chapter's high pass reads fboMain.
     BloomChain::Declared glow = chain.declare(graph, hdr.color, settings.chain);

@@ -55,14 +55,10 @@ struct WholeFrameSettings {
 
 class WholeFrame {
 public:
-    WholeFrame() = default;  // empty: no GL yet
-    static WholeFrame create();
-
-    // Declares the frame. `chain`, `composite` and `present` are the lesson's (one program each);
-    // `scene` and `meshes` must outlive the frame.
-    void declare(fx::FrameGraph& graph, const fx::Scene& scene, const fx::SceneMeshes& meshes,
-                 const fx::FrameInfo& frame, const WholeFrameSettings& settings, const fx::BloomChain& chain,
-                 const fx::BloomComposite& composite, const fx::OutputTransformPass& present);
+    // Declares the frame. `chain`, `composite` and `present` are the lesson's (one program each).
+    void declare(fx::FrameGraph& graph, const fx::FrameInfo& frame, const WholeFrameSettings& settings,
+                 const fx::BloomChain& chain, const fx::BloomComposite& composite,
+                 const fx::OutputTransformPass& present);
 
 private:
     fx::ShadowMap shadows_;

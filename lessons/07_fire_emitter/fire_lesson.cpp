@@ -1,17 +1,17 @@
 #include "fire_lesson.hpp"
 
-#include "fire_workloads.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include <imgui.h>
 
+#include "app/runner.hpp"
 #include "base/log.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson07 {
 
@@ -29,10 +29,6 @@ std::vector<std::string> workloadNames() {
 }
 
 }  // namespace
-
-LessonInfo FireLesson::info() const {
-    return {7, "fire-emitter", "Fire emitter", "scenes/07_fire_emitter.json"};
-}
 
 std::vector<std::string> FireLesson::steps() const {
     return {
@@ -74,22 +70,13 @@ void FireLesson::declareParams(ParamSet& params) {
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     offscreen.inSteps({Beyond});
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
-    params.addFloat("threshold", &threshold_, 0.0f, 16.0f, "Bloom: brightness above which light blooms")
-        .fromScene("postEffects.bloom.threshold");
-    params.addFloat("intensity", &intensity_, 0.0f, 4.0f, "Bloom: the Shader effects chapter's intensity")
-        .fromScene("postEffects.bloom.intensity");
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
+    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+                      "Bloom, the Shader effects chapter's");
 }
 
 Status FireLesson::init(const Scene& scene) {
-    scene_ = &scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    chain_ = BloomChain::create();
-    bloom_ = BloomComposite::create();
-    present_ = OutputTransformPass::create();
-    composite_ = FullscreenPass("effects/particles/particles_composite.frag", "particles: composite");
-    renderer_ = ParticleRenderer::create();
-    device_ = gl::queryDeviceLimits();
+    device_ = gl::queryDeviceLimits();  // the particle pool is fitted to it
     // One sprite for every emitter that has one (one texture, one draw); a sprite that cannot be read
     // stops the run with its path.
     const ParticleEmitter* first = nullptr;
@@ -97,7 +84,7 @@ Status FireLesson::init(const Scene& scene) {
         if (e.sprite.empty()) continue;
         if (!first) {
             first = &e;
-            if (Status s = renderer_.loadSprite(e.sprite.resolved); !s) return s;
+            if (Status s = renderer_->loadSprite(e.sprite.resolved); !s) return s;
         } else if (e.sprite.resolved != first->sprite.resolved) {
             log::warning("emitter '", e.name, "' asks for sprite ", e.sprite.path,
                          "; lesson 07 draws every emitter with ", first->sprite.path);
@@ -114,12 +101,12 @@ void FireLesson::update(const FrameInfo& frame) {
 
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
-    HdrSceneTargets hdr = scenePass_.declare(graph, *scene_, meshes_, frame.seconds);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
     const bool particles = !lacks(graph, SceneFeature::particles);
 
     // The simulation's setup follows the step and the parameters; a change starts it over. Without an
     // emitter in the scene nothing is made: no buffer, no dispatch.
-    const Setup wanted = setupFor(step);
+    const Setup wanted = setupFor(frame);
     if (particles && (!configured_ || !(wanted == setup_))) {
         configure(wanted);
     } else if (particles && frame.benchmark) {
@@ -131,11 +118,12 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
     const std::string notInView = "every emitter's bounds are outside the view";
     const bool inView = particles && anyEmitterInView(frame);
-    const Camera& cam = scene_->camera;
+    const Camera cam = frame.world.scene().camera;
     {
         PassGroup::Scope in(graph, particleGroup_);
-        Pass& sim = graph.addPass("particles.simulate",
-                                  [this](PassContext&) { simulate(std::exchange(pendingDt_, 0.0)); });
+        Pass& sim = graph.addPass("particles.simulate", [this, cam](PassContext&) {
+            simulate(std::exchange(pendingDt_, 0.0), cam);
+        });
         sim.keepAlive().setTaps(0);  // the simulation: buffers only
 
         // The pool in the inspector (particles.pool): one texel per slot. Nothing reads it, so the
@@ -209,11 +197,12 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                                           .clearColor = ClearColor{0, 0, 0, 0}});
             off.setTaps(2);  // the sprite and the scene's depth (the soft fade)
             if (particles && !inView) off.notCalledFor(notInView);
-            const FullscreenPass* composite = &composite_;
-            Pass& over = graph.addPass("particles.composite", [composite, color](PassContext& ctx) {
-                glProgramUniform1f(composite->program(), 0, kSceneHdrMax);
-                composite->draw({GLuint(ctx.native(color))});
-            });
+            const FullscreenPass* composite = &*composite_;
+            Pass& over =
+                composite_->addPass(graph, "particles.composite", [composite, color](PassContext& ctx) {
+                    glProgramUniform1f(composite->program(), glsl::kHdrMaxLocation, kSceneHdrMax);
+                    composite->draw({GLuint(ctx.native(color))});
+                });
             PassState state = FullscreenPass::state();
             state.blend = true;
             state.blendFunction = BlendFunction::premultipliedAlpha();
@@ -226,16 +215,16 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     {
         PassGroup::Scope in(graph, bloomGroup_);
         BloomChainSettings settings = chapter000Bloom(threshold_, intensity_, 6);
-        BloomChain::Declared d = chain_.declare(graph, hdr.color, settings);
+        BloomChain::Declared d = chain_->declare(graph, hdr.color, settings);
         if (!d.empty()) {
             BloomCompositeSettings c{settings.filters, settings.upOffset,
                                      chapter000CompositeScale(int(d.levels.size()))};
-            DeclaredPass result = bloom_.declare(graph, hdr.color, d.glow(), c);
+            DeclaredPass result = bloom_->declare(graph, hdr.color, d.glow(), c);
             if (!lacks(graph, SceneFeature::bloom)) shown = result.output;
         }
     }
     // Steps 1 and 2 clip like the chapter; from step 3 a filmic curve keeps the flame's colour.
-    present_.declare(graph, shown, std::nullopt, step <= Hitch ? ToneCurve::clip : ToneCurve::filmic, 1.0f);
+    present_->declare(graph, shown, std::nullopt, step <= Hitch ? ToneCurve::clip : ToneCurve::filmic, 1.0f);
 }
 
 void FireLesson::drawPanel(const FrameInfo& frame) {
@@ -262,7 +251,7 @@ void FireLesson::drawPanel(const FrameInfo& frame) {
 }
 
 void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
-    if (!scene_ || scene_->emitters.empty()) {
+    if (frame.world.scene().emitters.empty()) {
         out.add("particles", "none", "the scene has no emitter: no buffer, no dispatch, no particle pass");
         out.add("poolBytes", "0", "particle pool (bytes)");
         return;
@@ -272,8 +261,8 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("drawCalls", std::to_string(drawCalls_), "particle draw calls");
     std::uint32_t live = system_.liveCount();
     std::uint64_t replaced = system_.replacedCount();
-    if (setup_.path == Path::gpu && !frame.benchmark) {
-        GpuParticleStats stats = gpu_.readStats();
+    if (setup_.path == Path::gpu && gpu_ && !frame.benchmark) {
+        GpuParticleStats stats = gpu_->readStats();
         live = stats.live;
         replaced = stats.replaced;
     }
@@ -286,7 +275,7 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("simulateCpuMs", cat(simulateMs_), "simulating: CPU time in this frame's simulation calls (ms)");
     out.add("drawCpuMs", cat(drawCpuMs_), "drawing: CPU time inside the draw calls (ms)");
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
-    std::uint64_t bytes = setup_.path == Path::gpu ? gpu_.bytes() : renderer_.instanceBytes();
+    std::uint64_t bytes = setup_.path == Path::gpu ? (gpu_ ? gpu_->bytes() : 0) : renderer_->instanceBytes();
     out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");
     out.add("buffers",
             setup_.path == Path::gpu
@@ -316,3 +305,5 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson07
+
+FX_LESSON(lesson07::FireLesson, "Fire emitter", "scenes/07_fire_emitter.json")

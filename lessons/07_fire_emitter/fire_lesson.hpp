@@ -1,4 +1,7 @@
 #pragma once
+// Lesson 07's class, shared by its steps and frame (fire_lesson.cpp) and its simulation paths
+// (fire_simulation.cpp).
+//
 // Lesson 07: the fire emitter (Shader effects §3.8, hard cases 22 to 25; docs/chapters.md). The
 // chapter's fire (one object and one draw per particle, simulated on the CPU), what it does wrong
 // after a long frame, one instanced draw, the simulation on the GPU with an indirect draw, then what
@@ -22,9 +25,16 @@
 
 namespace lesson07 {
 
+inline constexpr const char* kPathNames[] = {"objects", "instanced", "gpu"};
+// The bench's workloads: every path at every count, in one sweep so their times share one run.
+inline constexpr int kWorkloadCounts[] = {100, 1000, 10000, 100000};
+inline constexpr int kInstancedCount = 2000;  // step 3's fire
+inline constexpr int kGpuCount = 100000;      // step 4's fire
+// The chapter's emitter moved aside by this much for step 2's two fires (m, along x).
+inline constexpr float kSideBySide = 0.9f;
+
 class FireLesson final : public fx::Lesson {
 public:
-    fx::LessonInfo info() const override;
     std::vector<std::string> steps() const override;
     void declareParams(fx::ParamSet& params) override;
     fx::Status init(const fx::Scene& scene) override;
@@ -47,15 +57,15 @@ public:
         bool premultiplied = false;  // step 5: one blend for fire and smoke
         bool operator==(const Setup&) const = default;
     };
-    Setup setupFor(int step) const;
+    Setup setupFor(const fx::FrameInfo& frame) const;
     // The 0.5 s long frame of step 2 lands on this frame (the lesson clock's third step, then every 120th).
     bool hitchOn(const fx::FrameInfo& frame) const;
 
 private:
     void configure(const Setup& setup);
-    void restart();            // the steady flame again, from the same state (prewarmed)
-    void simulate(double dt);  // the "particles.simulate" pass body
-    int draw(const fx::ParticleDrawSettings& settings);  // the draw pass bodies: draw calls made
+    void restart();  // the steady flame again, from the same state (prewarmed)
+    void simulate(double dt, const fx::Camera& sceneCamera);  // the "particles.simulate" pass body
+    int draw(const fx::ParticleDrawSettings& settings);       // the draw pass bodies: draw calls made
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
     void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
 
@@ -72,14 +82,13 @@ private:
     float threshold_ = 1.0f;  // the chapter's bloom (lesson 06, step 3)
     float intensity_ = 2.0f;
 
-    const fx::Scene* scene_ = nullptr;
-    fx::SceneMeshes meshes_;
-    fx::HdrScenePass scenePass_;
-    fx::ParticleRenderer renderer_;
-    fx::FullscreenPass composite_;
-    fx::BloomChain chain_;
-    fx::BloomComposite bloom_;
-    fx::OutputTransformPass present_;
+    fx::Gpu<fx::HdrScenePass> scenePass_;
+    fx::Gpu<fx::ParticleRenderer> renderer_;
+    fx::Gpu<fx::FullscreenPass> composite_{"effects/particles/particles_composite.frag",
+                                           "particles: composite"};
+    fx::Gpu<fx::BloomChain> chain_;
+    fx::Gpu<fx::BloomComposite> bloom_;
+    fx::Gpu<fx::OutputTransformPass> present_;
     fx::PassGroup particleGroup_ = fx::groupNeeding(fx::SceneFeature::particles);
     fx::PassGroup bloomGroup_ = fx::groupNeeding(fx::SceneFeature::bloom);
 
@@ -90,7 +99,7 @@ private:
     std::vector<fx::EmitterSetup> fitted_;  // setup_'s emitters fitted to the particle budget
     fx::ParticleBudget budget_;
     fx::ParticleSystem system_;
-    fx::GpuParticles gpu_;
+    std::optional<fx::GpuParticles> gpu_;   // the GPU path's pool, made when that path is configured
     double firstDt_ = 0;                    // the GPU's first frame also runs the prewarm
     std::vector<fx::GpuParticle> visible_;  // CPU paths: the live particles in draw order
     double pendingDt_ = 0;                  // time since the simulation last ran, for the pass body

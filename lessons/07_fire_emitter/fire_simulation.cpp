@@ -7,7 +7,6 @@
 #include "base/log.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "fire_lesson.hpp"
-#include "fire_workloads.hpp"
 
 namespace lesson07 {
 
@@ -38,12 +37,13 @@ float emitterRadius(const ParticleEmitter& e) {
 
 }  // namespace
 
-FireLesson::Setup FireLesson::setupFor(int step) const {
+FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
+    const int step = frame.step;
     Setup setup;
     const bool beyond = step == Beyond;
-    for (const ParticleEmitter& e : scene_->emitters) {
+    for (const ParticleEmitter& e : frame.world.scene().emitters) {
         if (!beyond && e.kind != EmitterKind::fire) continue;  // smoke and sparks are step 5's
-        EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_.hasSprite()};
+        EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_->hasSprite()};
         if (e.kind == EmitterKind::fire) s.emitter.spinDegreesPerSecond += spin_;
         if (step == Objects) s.rules = {true, true};
         if (step == Hitch) {
@@ -91,14 +91,17 @@ void FireLesson::configure(const Setup& setup) {
     if (budget_.clamped()) log::warning("lesson 07: ", budget_.warning());
     const bool gpu = setup.path == Path::gpu;
     system_ = ParticleSystem(fitted_, !gpu);
-    gpu_ = gpu ? GpuParticles::create(system_) : GpuParticles();
+    if (gpu)
+        gpu_.emplace(system_);
+    else
+        gpu_.reset();
     restart();
 }
 
 void FireLesson::restart() {
     const bool gpu = setup_.path == Path::gpu;
     system_ = ParticleSystem(fitted_, !gpu);
-    gpu_.clear();
+    if (gpu_) gpu_->clear();
     // Start from a steady flame. The fixed rules catch up in one step (every spawn owed, born at its
     // time); the chapter's timer needs frame by frame.
     double longest = 0;
@@ -117,17 +120,17 @@ void FireLesson::restart() {
         system_.update(longest);
 }
 
-void FireLesson::simulate(double dt) {
+void FireLesson::simulate(double dt, const Camera& sceneCamera) {
     Clock::time_point start = Clock::now();
     dt += std::exchange(firstDt_, 0.0);
     system_.update(dt);
-    renderer_.setEmitters(system_.emitters());
+    renderer_->setEmitters(system_.emitters());
     if (setup_.path == Path::gpu) {
-        gpu_.simulate(system_, dt, renderer_.emitterBuffer());
+        gpu_->simulate(system_, dt, renderer_->emitterBuffer());
         visible_.clear();
     } else {
         system_.collect(visible_);
-        CameraMatrices camera = cameraMatrices(scene_->camera, 1, 1);
+        CameraMatrices camera = cameraMatrices(sceneCamera, 1, 1);
         auto sortedBegin = std::find_if(visible_.begin(), visible_.end(), [this](const GpuParticle& p) {
             return int(p.extra.y) >= setup_.sortedFrom;
         });
@@ -159,7 +162,7 @@ void FireLesson::simulate(double dt) {
 
 void FireLesson::drawPoolView(GLuint texture, int rows) const {
     if (setup_.path == Path::gpu) {
-        gpu_.drawPoolView(texture, int(system_.emitters().size()));
+        gpu_->drawPoolView(texture, int(system_.emitters().size()));
     } else {
         std::vector<float> texels = system_.poolViewTexels(rows);
         glTextureSubImage2D(texture, 0, 0, 0, 256, rows, GL_RGBA, GL_FLOAT, texels.data());
@@ -171,13 +174,13 @@ int FireLesson::draw(const ParticleDrawSettings& settings) {
     int calls = 0;
     switch (setup_.path) {
         case Path::objects:
-            calls = renderer_.drawObjects(visible_, settings);
+            calls = renderer_->drawObjects(visible_, settings);
             break;
         case Path::instanced:
-            calls = renderer_.drawInstanced(visible_, settings);
+            calls = renderer_->drawInstanced(visible_, settings);
             break;
         case Path::gpu:
-            calls = renderer_.drawIndirect(gpu_, settings);
+            calls = renderer_->drawIndirect(*gpu_, settings);
             break;
     }
     drawCpuMs_ = msSince(start);
@@ -186,7 +189,7 @@ int FireLesson::draw(const ParticleDrawSettings& settings) {
 }
 
 bool FireLesson::anyEmitterInView(const FrameInfo& frame) const {
-    CameraMatrices camera = cameraMatrices(scene_->camera, frame.size.width, frame.size.height);
+    CameraMatrices camera = cameraMatrices(frame.world.scene().camera, frame.size.width, frame.size.height);
     const glm::mat4 m = glm::transpose(camera.viewProjection);
     // The six planes of the view volume (Gribb and Hartmann), each as (normal, distance).
     const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1],

@@ -1,18 +1,110 @@
-#include "clouds_lesson.hpp"
-
+// Lesson 08: ray-marched clouds (the Clouds chapter: its sections 1.1 to 2.6, pitfalls and hard cases).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/trigonometric.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/clouds/cloud_march.hpp"
+#include "effects/clouds/cloud_pass.hpp"
+#include "effects/clouds/cloud_shadow_pass.hpp"
+#include "effects/clouds/cloud_temporal.hpp"
+#include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
+#include "effects/shadow/shadow_map.hpp"
+#include "scene/scene_settings.hpp"
 
 namespace lesson08 {
 
 using namespace fx;
+
+class CloudsLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void simulations(SceneWork& work) override;
+    void update(const FrameInfo& frame) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Beyond; }
+    // Step 9's cloud layer as laid over the scene (full size unless marched at half resolution).
+    std::string benchTexture() const override { return "clouds.result"; }
+    void facts(Facts& out, const FrameInfo& frame) const override;
+
+    enum Step {
+        ScreenTexture,
+        Plane,
+        TwoScales,
+        DepthAware,
+        March,
+        EyeInsideDither,
+        Shadows,
+        ThresholdHeight,
+        Beyond,
+    };
+
+    // A combination of the quality knobs, named for the bench's error-against-cost plot.
+    struct QualityPreset {
+        const char* name;
+        float steps;
+        CloudDither dither;
+        bool accumulate;
+        bool halfResolution;
+    };
+    // The knobs in effect in step 9: the preset's when one is chosen, else the parameters'.
+    QualityPreset quality() const;
+
+    // What the cloud pass does in `step` (without the camera, which buildFrame adds).
+    CloudFrameSettings settingsForStep(int step, int frameIndex) const;
+
+private:
+    // Parameters; the slab, scales, threshold and samples start at the scene's first cloud layer.
+    float bottom_ = 0.0f;
+    float top_ = 2.0f;
+    float scale0_ = 1.0f / 311.0f;
+    float scale1_ = 1.0f / 127.0f;
+    float threshold_ = 0.5f;
+    float steps_ = 8.0f;  // a float on purpose: the overlay can ask for 8.5 (hard case 10)
+    bool rejectBehind_ = true;
+    float cameraLift_ = 0.0f;
+    Choice<CloudDither> dither_{CloudDither::ign};
+    bool beerLambert_ = true;
+    bool distanceOcclusion_ = true;
+    bool cloudShadows_ = true;  // step 9: the clouds' shadows on the ground
+    int accumulate_ = 1;        // step 9: 0 off, 1 on
+    int resolution_ = 0;        // step 9: 0 full, 1 half
+
+    int quality_ = 0;  // step 9: 0 the knobs above, else one of kQualityPresets
+
+    // What restarts the running average when it changes (everything but the camera and the jitter).
+    std::uint64_t settingsKey(const CloudFrameSettings& s, int step) const;
+
+    Scene viewScene_;  // the scene with the camera lifted by camera_lift (the same for every pass)
+    ShadowSettings sceneShadow_;
+    Gpu<ShadowMap> shadows_;
+    Gpu<ShadowLitPass> lit_;
+    Gpu<CloudPass> clouds_;
+    Gpu<CloudShadowPass> cloudShadow_;
+    glm::vec3 sunDirection_{0.0f, -1.0f, 0.0f};  // where the shadow-casting light travels
+    CloudDensityTexture density_;                // loaded only when the scene has a cloud layer
+    Gpu<OutputTransformPass> present_;
+    Gpu<CloudTemporal> temporal_;
+    int jitterFrame_ = 0;  // counts declared frames: moves IGN and R2 (the bench repeats one frame index)
+    CloudScroll scroll_;
+    glm::dvec4 scrollSpeed_{0.0};
+    glm::vec3 cloudColour_{1.0f};
+    PassGroup cloudGroup_ = groupNeeding(SceneFeature::clouds);
+};
 
 namespace {
 
@@ -39,11 +131,7 @@ constexpr int kQualityPresetCount = int(sizeof kQualityPresets / sizeof kQuality
 
 CloudsLesson::QualityPreset CloudsLesson::quality() const {
     if (quality_ > 0 && quality_ < kQualityPresetCount) return kQualityPresets[quality_];
-    return {"knobs", steps_, CloudDither(std::clamp(dither_, 0, 3)), accumulate_ == 1, resolution_ == 1};
-}
-
-LessonInfo CloudsLesson::info() const {
-    return {8, "clouds", "Ray-marched clouds", "scenes/08_clouds.json"};
+    return {"knobs", steps_, *dither_, accumulate_ == 1, resolution_ == 1};
 }
 
 std::vector<std::string> CloudsLesson::steps() const {
@@ -61,29 +149,15 @@ std::vector<std::string> CloudsLesson::steps() const {
 }
 
 void CloudsLesson::declareParams(ParamSet& params) {
-    params.addFloat("bottom", &bottom_, -100.0f, 1000.0f, "Height of the slab's lower face (m)")
-        .fromScene("clouds[0].bottom");
-    params
-        .addFloat("top", &top_, -100.0f, 1000.0f,
-                  "Height of the slab's upper face (m); at or below bottom: no cloud")
-        .fromScene("clouds[0].top");
-    params
-        .addFloat("scale0", &scale0_, 0.0001f, 1.0f,
-                  "Texture repeats per metre, layer 0 (the chapter: 1/311)")
-        .fromScene("clouds[0].noise[0].scale");
-    params
-        .addFloat("scale1", &scale1_, 0.0001f, 1.0f,
-                  "Texture repeats per metre, layer 1 (the chapter: 1/127)")
-        .fromScene("clouds[0].noise[1].scale");
-    params
-        .addFloat("threshold", &threshold_, 0.0f, 1.0f,
-                  "Steps 8 and 9: density at or below it is clear sky (1: no cloud, never a division by 0)")
-        .fromScene("clouds[0].threshold")
+    params.addSetting("bottom", &bottom_, sceneSetting("clouds[0].bottom"));
+    params.addSetting("top", &top_, sceneSetting("clouds[0].top"));
+    params.addSetting("scale0", &scale0_, sceneSetting("clouds[0].noise[0].scale"));
+    params.addSetting("scale1", &scale1_, sceneSetting("clouds[0].noise[1].scale"));
+    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"), "Steps 8 and 9")
         .inSteps({ThresholdHeight, Beyond});
-    Param& steps = params.addFloat("steps", &steps_, 0.0f, float(kCloudMaxSteps),
-                                   "Steps 5 to 9: samples along each ray (rounded down; 0: no cloud)");
+    // A float on purpose: the overlay can ask for 8.5 samples (rounded down; hard case 10).
+    Param& steps = params.addSetting("steps", &steps_, sceneSetting("clouds[0].steps"), "Steps 5 to 9");
     steps.knob = Knob{{2, 4, 8, 16, 32, 64, 128}, double(kCloudMaxSteps), "samples"};
-    steps.fromScene("clouds[0].steps");
     steps.inSteps({March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
     params
         .addBool("reject_behind", &rejectBehind_,
@@ -130,19 +204,11 @@ void CloudsLesson::declareParams(ParamSet& params) {
 }
 
 Status CloudsLesson::init(const Scene& scene) {
-    scene_ = &scene;
     viewScene_ = scene;
     if (const Light* light = shadowCastingLight(scene)) {
         sceneShadow_ = light->shadow;
         sunDirection_ = light->direction;
     }
-    meshes_ = SceneMeshes(scene);
-    shadows_ = ShadowMap::create();
-    lit_ = ShadowLitPass::create();
-    clouds_ = CloudPass::create();
-    cloudShadow_ = CloudShadowPass::create();
-    temporal_ = CloudTemporal::create();
-    present_ = OutputTransformPass::create();
     if (!scene.clouds.empty()) {
         // Only a scene with a cloud layer loads the texture: without one, no bytes and no pass.
         const CloudLayer& layer = scene.clouds.front();
@@ -163,8 +229,7 @@ void CloudsLesson::simulations(SceneWork& work) {
 }
 
 void CloudsLesson::update(const FrameInfo& frame) {
-    (void)frame;
-    viewScene_.camera = scene_->camera;
+    viewScene_.camera = frame.world.scene().camera;
     viewScene_.camera.position.y += cameraLift_;
     if (viewScene_.camera.aim == CameraAim::target) viewScene_.camera.target.y += cameraLift_;
 }
@@ -228,9 +293,10 @@ CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const
 
 void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const Scene& scene = viewScene_;
+    const World world = frame.world.seenThrough(viewScene_);
     ShadowSettings settings = sceneShadow_;
-    DeclaredShadowMap map = shadows_.declare(graph, scene, meshes_, frame.seconds, settings, {});
-    HdrSceneTargets hdr = lit_.declare(graph, scene, meshes_, frame.seconds, map);
+    DeclaredShadowMap map = shadows_->declare(graph, world, settings, {});
+    HdrSceneTargets hdr = lit_->declare(graph, world, map);
 
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     jitterFrame_ = (jitterFrame_ + 1) % 1024;
@@ -250,18 +316,18 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         if (frame.step == Beyond && cloudShadows_) {
             CloudShadowSettings shadow;
             shadow.toLight = cloudShadowToLight(sunDirection_);
-            cloudShadow_.declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
+            cloudShadow_->declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
         }
         if (temporal) {
             CloudTemporalOptions options{q.accumulate, q.halfResolution};
-            temporal_.declare(graph, clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
-                              settingsKey(s, frame.step), frame.size);
+            temporal_->declare(graph, *clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
+                               settingsKey(s, frame.step), frame.size);
         } else {
-            clouds_.declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+            clouds_->declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
         }
     }
-    shadows_.declareDepthView(graph, map);
-    present_.declare(graph, hdr.color);
+    shadows_->declareDepthView(graph, map);
+    present_->declare(graph, hdr.color);
 }
 
 std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) const {
@@ -294,7 +360,8 @@ void CloudsLesson::drawPanel(const FrameInfo& frame) {
 void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     const bool march = s.stage == CloudStage::march;
-    out.add("cloudLayer", !scene_ || scene_->clouds.empty() ? "none" : "first of the scene's", "cloud layer");
+    out.add("cloudLayer", frame.world.scene().clouds.empty() ? "none" : "first of the scene's",
+            "cloud layer");
     out.add("densityTextureBytes", std::to_string(density_.bytes()), "density texture (bytes, SRGB8_ALPHA8)");
     if (march) {
         out.add("samples", std::to_string(s.march.steps), "samples per ray");
@@ -305,9 +372,9 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
     if (frame.step == Beyond) {
         // The running average weighs a new frame 1/16 at least: past 16 frames it holds 16 frames' worth.
-        const int averaged = std::min(temporal_.framesAveraged(), CloudTemporalOptions{}.maxFrames);
+        const int averaged = std::min(temporal_->framesAveraged(), CloudTemporalOptions{}.maxFrames);
         out.add("framesAveraged", std::to_string(averaged), "frames in the average (at most 16)");
-        out.add("historyBytes", std::to_string(temporal_.historyBytes()), "history textures (bytes)");
+        out.add("historyBytes", std::to_string(temporal_->historyBytes()), "history textures (bytes)");
         out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
         out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
         // The sun's height decides the shadow's path through the slab (thickness / sin, sin held at 0.1 or
@@ -323,3 +390,5 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson08
+
+FX_LESSON(lesson08::CloudsLesson, "Ray-marched clouds", "scenes/08_clouds.json")

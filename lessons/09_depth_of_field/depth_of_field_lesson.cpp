@@ -1,18 +1,97 @@
-#include "depth_of_field_lesson.hpp"
-
+// Lesson 09: depth of field from a physical lens (the Depth of field chapter, docs/chapters.md): a
+// framebuffer shown by a full-screen pass, the chapter's naive blur, focusing by moving the camera,
+// the thin-lens CoC as a heat map, the chapter's 13-tap physical blur, then a near/far gather with a
+// ring kernel at half resolution, and the accumulation reference it is measured against.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/dof/depth_of_field.hpp"
+#include "effects/dof/dof_reference.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/scene_work.hpp"
+#include "gl/texture.hpp"
 #include "scene/scene_enums.hpp"
+#include "scene/scene_settings.hpp"
+#include "scene/thin_lens.hpp"
 
 namespace lesson09 {
 
 using namespace fx;
+
+class DepthOfFieldLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void drawPanel(const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+    int benchStep() const override { return Beyond; }
+    std::string benchReferenceName() const override { return "accumulation"; }
+    void setBenchReference(bool on) override { benchReference_ = on; }
+
+    enum Step { Framebuffer, Naive, MovedCamera, PhysicalCamera, ChapterShader, Beyond, Reference };
+
+    // The camera the frame's step draws with (position and projection) at the frame's size.
+    Camera cameraFor(const FrameInfo& frame) const;
+    // The thin-lens model of the current parameters at the frame's size.
+    ThinLensModel lensModel(const FrameInfo& frame) const;
+    CocConvention convention() const {
+        return chapterCompatible_ ? CocConvention::chapter : CocConvention::corrected;
+    }
+
+private:
+    bool showsReference(int step) const { return step == Reference || (step == Beyond && benchReference_); }
+    // In a window the reference's samples are spread over frames, as many a frame as the frame budget
+    // holds, summed into referenceSum_ in the order one frame would sum them (the finished picture is
+    // the headless one). Returns the sum; `exposure` is scaled to the mean of the samples so far.
+    TextureHandle declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
+                                             DofReferenceSettings settings, float& exposure);
+
+    // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
+    float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
+    float sensorWidthMm_ = 36.0f;
+    float fNumber_ = 1.4f;
+    float focusM_ = 15.264f;
+    bool chapterCompatible_ = false;
+    float maxCoc_ = 32.0f;
+    int taps_ = 22;
+    int method_ = 1;      // step 6: 0 the chapter's 13 taps, 1 the gather
+    int resolution_ = 1;  // 0 full, 1 half
+    int fields_ = 1;      // 0 one average, 1 near and far
+    float highlight_ =
+        0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
+    int referenceSamples_ = 64;
+    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
+    float exposure_ = 1.0f;
+    bool benchReference_ = false;
+
+    // The reference over frames (a window): its sum, what it is of, how far it is.
+    gl::Texture referenceSum_;
+    std::uint64_t referenceKey_ = 0;
+    int referenceDone_ = 0;
+    int referenceSlice_ = 0;       // samples the last frame added (0: none)
+    double referenceSeconds_ = 0;  // the lesson clock's time the sum shows
+
+    Scene view_;  // the scene with the step's camera (steps 1 to 3 move it, as the chapter does)
+    Gpu<HdrScenePass> scenePass_;
+    Gpu<DepthOfField> dof_;
+    Gpu<DofReference> reference_;
+    Gpu<OutputTransformPass> present_;
+    PassGroup dofGroup_ = groupNeeding(SceneFeature::depthOfField);
+};
 
 namespace {
 
@@ -26,10 +105,6 @@ float aspectOf(Size2D size) {
 }
 
 }  // namespace
-
-LessonInfo DepthOfFieldLesson::info() const {
-    return {9, "depth-of-field", "Depth of field", "scenes/09_depth_of_field.json"};
-}
 
 std::vector<std::string> DepthOfFieldLesson::steps() const {
     return {
@@ -46,37 +121,30 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
     const std::vector<int> lensSteps = {PhysicalCamera, ChapterShader, Beyond, Reference};
     params
-        .addFloat("focal_length", &focalLengthMm_, 0.0f, 2000.0f,
-                  "Steps 4 to 7: focal length (mm; the chapter: the image distance)")
-        .fromScene("camera.lens.focalLength")
-        .inSteps(lensSteps);
-    params.addFloat("sensor_width", &sensorWidthMm_, 1.0f, 100.0f, "Steps 4 to 7: sensor width (mm)")
-        .fromScene("camera.lens.sensorWidth")
+        .addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
+                    "Steps 4 to 7 (the chapter: the image distance)")
         .inSteps(lensSteps);
     params
-        .addFloat("f_number", &fNumber_, 0.0f, 32.0f,
-                  "Steps 4 to 7: f-number N; the aperture is F / N (below 0.5 counts as 0.5)")
-        .fromScene("camera.lens.fNumber")
+        .addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"), "Steps 4 to 7")
         .inSteps(lensSteps);
     params
-        .addFloat("focus_distance", &focusM_, -1.0f, 300.0f,
-                  "Steps 4 to 7: focus distance (m); at or inside the focal length counts as 1.001 focal "
-                  "lengths")
-        .fromScene("camera.lens.focusDistance")
+        .addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber"),
+                    "Steps 4 to 7 (below 0.5 counts as 0.5)")
+        .inSteps(lensSteps);
+    params
+        .addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"),
+                    "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)")
         .inSteps(lensSteps);
     params
         .addBool("chapter_compatible", &chapterCompatible_,
                  "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
                  "of view, the diameter used as a radius) instead of the corrected ones")
         .inSteps(lensSteps);
-    Param& maxCoc = params.addFloat("max_coc", &maxCoc_, 0.0f, 256.0f,
-                                    "Steps 4 to 6: largest CoC diameter (px); larger ones are clamped");
-    maxCoc.fromScene("postEffects.depthOfField.maxCoc");
+    Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
+                                      "Steps 4 to 6");
     maxCoc.knob = Knob{{8, 16, 32, 64}, 64, "px"};
     maxCoc.inSteps({PhysicalCamera, ChapterShader, Beyond});
-    Param& taps = params.addInt("taps", &taps_, 1, 128,
-                                "Step 6: taps of the ring kernel (16, 22, 43 or 71; others round down)");
-    taps.fromScene("postEffects.depthOfField.taps");
+    Param& taps = params.addSetting("taps", &taps_, sceneSetting("postEffects.depthOfField.taps"), "Step 6");
     taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
     taps.inSteps({Beyond});
     Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
@@ -101,38 +169,32 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         .addInt("reference_samples", &referenceSamples_, 1, 1024,
                 "Step 7: pinhole renders averaged over the aperture")
         .inSteps({Reference});
-    params
-        .addChoice("tone_map", &toneCurve_, enumNameList<ToneCurve>(),
-                   "The output's tone curve (not for the heat map, whose colours are for the display)")
-        .fromScene("postEffects.toneMap.operator");
-    params.addFloat("exposure", &exposure_, 0.01f, 16.0f, "Multiplies the light before the tone curve")
-        .fromScene("postEffects.toneMap.exposure");
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
+                      "Not for the heat map, whose colours are for the display");
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
 }
 
 Status DepthOfFieldLesson::init(const Scene& scene) {
-    scene_ = &scene;
     view_ = scene;
-    meshes_ = SceneMeshes(scene);
-    scenePass_ = HdrScenePass::create();
-    dof_ = DepthOfField::create();
-    reference_ = DofReference::create();
-    present_ = OutputTransformPass::create();
     return Status::success();
 }
 
-ThinLensModel DepthOfFieldLesson::lensModel(Size2D size) const {
+ThinLensModel DepthOfFieldLesson::lensModel(const FrameInfo& frame) const {
+    const Size2D size = frame.size;
     ThinLensInput in;
     in.lens = Lens{focalLengthMm_, sensorWidthMm_, fNumber_, focusM_};
-    in.nearM = scene_ ? scene_->camera.near : 0.1f;
-    in.farM = scene_ ? scene_->camera.far : 500.0f;
+    in.nearM = frame.world.scene().camera.near;
+    in.farM = frame.world.scene().camera.far;
     in.widthPixels = size.width;
     in.maxCocPixels = maxCoc_;
     in.convention = convention();
     return thinLensModel(in);
 }
 
-Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
-    Camera camera = scene_ ? scene_->camera : Camera{};
+Camera DepthOfFieldLesson::cameraFor(const FrameInfo& frame) const {
+    const int step = frame.step;
+    const Size2D size = frame.size;
+    Camera camera = frame.world.scene().camera;
     camera.lens.reset();
     if (step <= Naive) {
         // The chapter's first camera: the same line of sight, 55.9 m from the point it looks at.
@@ -156,26 +218,26 @@ Camera DepthOfFieldLesson::cameraFor(int step, Size2D size) const {
 
 void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
-    view_.camera = cameraFor(step, frame.size);
-    HdrSceneTargets hdr = scenePass_.declare(graph, view_, meshes_, frame.seconds);
-    const ThinLensModel model = lensModel(frame.size);
+    view_.camera = cameraFor(frame);
+    HdrSceneTargets hdr = scenePass_->declare(graph, frame.world.seenThrough(view_));
+    const ThinLensModel model = lensModel(frame);
     const DofLensUniforms lens = dofLensUniforms(model);
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
-    ToneCurve curve = static_cast<ToneCurve>(std::clamp(toneCurve_, 0, 2));
+    ToneCurve curve = *toneCurve_;
     float exposure = exposure_;
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
         if (step == Naive || step == MovedCamera) {
-            shown = dof_.declareNaive(graph, hdr.color, hdr.depth, {}).output;
+            shown = dof_->declareNaive(graph, hdr.color, hdr.depth, {}).output;
         } else if (step >= PhysicalCamera) {
-            TextureHandle coc = dof_.declareCoc(graph, hdr.depth, lens).output;
+            TextureHandle coc = dof_->declareCoc(graph, hdr.depth, lens).output;
             if (step == PhysicalCamera) {
-                shown = dof_.declareHeatMap(graph, hdr.color, coc, lens).output;
+                shown = dof_->declareHeatMap(graph, hdr.color, coc, lens).output;
                 curve = ToneCurve::clip;  // the heat map's colours are display colours
                 exposure = 1.0f;
             } else if (step == ChapterShader || (step == Beyond && method_ == 0 && !benchReference_)) {
-                shown = dof_.declareChapter(graph, hdr.color, coc, lens).output;
+                shown = dof_->declareChapter(graph, hdr.color, coc, lens).output;
             } else if (showsReference(step)) {
                 DofReferenceSettings r;
                 r.camera = view_.camera;
@@ -187,14 +249,14 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                 // Headless and in the bench all samples in one frame; in a window, a budget's worth a frame.
                 shown = frame.frameBudgetMs > 0 && !frame.benchmark
                             ? declareReferenceOverFrames(graph, frame, r, exposure)
-                            : reference_.declare(graph, view_, meshes_, frame.seconds, r).output;
+                            : reference_->declare(graph, frame.world.seenThrough(view_), r).output;
             } else {
                 DofGatherSettings g{taps_, resolution_ == 1, fields_ == 1, highlight_};
-                shown = dof_.declareGather(graph, hdr.color, coc, lens, g).result;
+                shown = dof_->declareGather(graph, hdr.color, coc, lens, g).result;
             }
         }
     }
-    present_.declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+    present_->declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
 }
 
 TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
@@ -225,7 +287,7 @@ TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, 
         }
         r.firstSample = referenceDone_;
         r.sampleCount = std::clamp(count, 1, n - referenceDone_);
-        reference_.declare(graph, view_, meshes_, referenceSeconds_, r, sum);
+        reference_->declare(graph, World(view_, frame.world.meshes(), referenceSeconds_), r, sum);
         referenceDone_ += r.sampleCount;
         referenceSlice_ = r.sampleCount;
     } else {
@@ -245,7 +307,7 @@ void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {
 
 void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
-    const Camera camera = cameraFor(step, frame.size);
+    const Camera camera = cameraFor(frame);
     out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
     out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
             "vertical field of view");
@@ -255,7 +317,7 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
                 "raw depth at the target (sharp at 0.935)");
         return;
     }
-    const ThinLensModel m = lensModel(frame.size);
+    const ThinLensModel m = lensModel(frame);
     out.add("convention", chapterCompatible_ ? "chapter-compatible" : "corrected", "convention");
     out.add("focus", cat(m.focusM), "focus distance used (m)");
     out.add("focalLength", cat(m.focalMm), "focal length F (mm)");
@@ -279,3 +341,5 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
 }
 
 }  // namespace lesson09
+
+FX_LESSON(lesson09::DepthOfFieldLesson, "Depth of field", "scenes/09_depth_of_field.json")

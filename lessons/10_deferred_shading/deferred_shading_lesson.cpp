@@ -1,15 +1,87 @@
-#include "deferred_shading_lesson.hpp"
-
+// Lesson 10: render to texture, multiple render targets and deferred shading with a thousand lights
+// (the Deferred rendering chapter, docs/chapters.md). The slides' framebuffer recipes first, then their
+// three-target example with its draw-buffer order bug and its sharpening variant, then what the chapter
+// only lists: a G-buffer of geometry, one lighting pass over many point lights, what the G-buffer's
+// layout costs, tiled light culling, and the chapter's homework, a planar reflection.
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/lesson.hpp"
+#include "app/runner.hpp"
 #include "base/log.hpp"
+#include "effects/deferred/deferred_lighting.hpp"
+#include "effects/deferred/gbuffer_pass.hpp"
+#include "effects/deferred/lecture_mrt.hpp"
 #include "effects/deferred/light_evaluations.hpp"
+#include "effects/deferred/planar_reflection.hpp"
+#include "effects/deferred/point_light_buffer.hpp"
+#include "effects/deferred/render_to_texture.hpp"
+#include "effects/deferred/tiled_culling.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/output_transform_pass.hpp"
+#include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_map.hpp"
 
 namespace lesson10 {
 
 using namespace fx;
+
+class DeferredShadingLesson final : public Lesson {
+public:
+    std::vector<std::string> steps() const override;
+    void declareParams(ParamSet& params) override;
+    Status init(const Scene& scene) override;
+    void buildFrame(FrameGraph& graph, const FrameInfo& frame) override;
+    void facts(Facts& out, const FrameInfo& frame) const override;
+    void drawPanel(const FrameInfo& frame) override;
+    int benchStep() const override { return Reflection; }
+    std::string benchTexture() const override { return "deferred.color"; }
+
+    enum Step { RenderToTexture, ThreeTargets, Sharpen, Deferred, Layout, ManyLights, Reflection };
+
+private:
+    // The G-buffer layout, light count and culling the step uses.
+    GBufferLayout layoutFor(int step) const;
+    bool culls(int step) const { return step >= ManyLights; }
+    glm::vec3 worldOffsetFor(int step) const;
+    int lightCountFor(int step) const;  // light_count, or the step's own when it is 0
+    void uploadLights(const FrameInfo& frame);
+    void declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
+                         std::optional<SplitView>& split);
+
+    // Parameters.
+    int rttDepth_ = 0;         // RttDepth
+    bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
+    Choice<GBufferLayout> layout_{GBufferLayout::compact};
+    int originOffset_ = 0;    // index into kOriginOffsets
+    int lightCount_ = 0;      // 0: the step's own (lightCountFor)
+    int culling_ = 1;         // 0 none, 1 tiled
+    int reflectionSize_ = 1;  // index into kReflectionFractions
+    float divider_ = 0.5f;
+
+    std::vector<Light> allLights_;
+    int pointLightsInScene_ = 0;
+    glm::vec3 uploadedOffset_{-1.0f};
+    int uploadedCount_ = -1;
+    Gpu<fx::RenderToTexture> rtt_;
+    Gpu<FullscreenPass> rttToScreen_{"common/copy.frag", "rtt to screen"};
+    Gpu<LectureMrt> mrt_;
+    MrtStats mrtStats_;
+    Gpu<GBufferPass> gbuffer_;
+    Gpu<ShadowMap> shadows_;
+    Gpu<PointLightBuffer> lights_;
+    Gpu<DeferredLighting> lighting_;
+    Gpu<TiledCulling> culling_pass_;
+    Gpu<PlanarReflection> reflection_;
+    Gpu<OutputTransformPass> present_;
+    std::string rttAttachments_[2];
+    PassGroup cullingGroup_;
+    PassGroup lightingGroup_;
+    PassGroup reflectionGroup_;
+};
 
 namespace {
 
@@ -67,10 +139,6 @@ std::vector<Light> spreadPointLights(const std::vector<Light>& lights, int count
 
 }  // namespace
 
-LessonInfo DeferredShadingLesson::info() const {
-    return {10, "deferred-shading", "Deferred shading", "scenes/10_deferred_shading.json"};
-}
-
 std::vector<std::string> DeferredShadingLesson::steps() const {
     return {
         "Render to texture: a colour texture and a depth buffer",
@@ -125,29 +193,17 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
 }
 
 Status DeferredShadingLesson::init(const Scene& scene) {
-    scene_ = &scene;
     allLights_ = allLights(scene);
     pointLightsInScene_ = int(std::count_if(allLights_.begin(), allLights_.end(),
                                             [](const Light& l) { return l.type == LightType::point; }));
-    meshes_ = SceneMeshes(scene);
-    rtt_ = fx::RenderToTexture::create();
-    rttToScreen_ = FullscreenPass("common/copy.frag", "rtt to screen");
-    mrt_ = LectureMrt::create();
-    gbuffer_ = GBufferPass::create();
-    shadows_ = ShadowMap::create();
-    lights_ = PointLightBuffer::create();
-    lighting_ = DeferredLighting::create();
-    culling_pass_ = TiledCulling::create();
-    reflection_ = PlanarReflection::create(scene);
-    present_ = OutputTransformPass::create();
-    rttAttachments_[0] = rtt_.attachmentsText(RttDepth::renderbuffer);
-    rttAttachments_[1] = rtt_.attachmentsText(RttDepth::texture);
+    rttAttachments_[0] = rtt_->attachmentsText(RttDepth::renderbuffer);
+    rttAttachments_[1] = rtt_->attachmentsText(RttDepth::texture);
     return Status::success();
 }
 
 GBufferLayout DeferredShadingLesson::layoutFor(int step) const {
     if (step < Layout) return GBufferLayout::compact;  // step 4: the compact layout the chapter's idea needs
-    return static_cast<GBufferLayout>(std::clamp(layout_, 0, 3));
+    return *layout_;
 }
 
 int DeferredShadingLesson::lightCountFor(int step) const {
@@ -166,7 +222,7 @@ void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
     glm::vec3 offset = worldOffsetFor(frame.step);
     int count = std::clamp(lightCountFor(frame.step), 1, kMaxGridLights);
     if (offset != uploadedOffset_ || count != uploadedCount_) {
-        lights_.upload(gpuPointLights(spreadPointLights(allLights_, count), count, offset));
+        lights_->upload(gpuPointLights(spreadPointLights(allLights_, count), count, offset));
         uploadedOffset_ = offset;
         uploadedCount_ = count;
     }
@@ -174,21 +230,21 @@ void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
 
 void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& frame, TextureHandle& shown,
                                             std::optional<SplitView>& split) {
-    const Scene& scene = *scene_;
+    const Scene& scene = frame.world.scene();
     const int step = frame.step;
     DeclaredShadowMap shadow;
     if (const Light* sun = shadowCastingLight(scene))
-        shadow = shadows_.declare(graph, scene, meshes_, frame.seconds, sun->shadow, ShadowPassOptions{});
+        shadow = shadows_->declare(graph, frame.world, sun->shadow, ShadowPassOptions{});
 
     GBufferOptions options{layoutFor(step), step == Layout && !frame.benchmark, worldOffsetFor(step)};
-    GBufferTargets g = gbuffer_.declare(graph, scene, meshes_, frame.seconds, options);
-    if (!frame.benchmark) lighting_.declareViews(graph, scene, g);
+    GBufferTargets g = gbuffer_->declare(graph, frame.world, options);
+    if (!frame.benchmark) lighting_->declareViews(graph, scene, g);
 
     std::optional<CulledTiles> tiles;
     if (culls(step)) {
         PassGroup::Scope in(graph, cullingGroup_);
-        CulledTiles culled = culling_pass_.declare(graph, scene, g, lights_);
-        if (culling_ == 0) culling_pass_.lastPass()->disable("culling: none (the parameter)");
+        CulledTiles culled = culling_pass_->declare(graph, scene, g, *lights_);
+        if (culling_ == 0) culling_pass_->lastPass()->disable("culling: none (the parameter)");
         // Without many lights the culling pass is not called for (the scene's reason is in the pass
         // table), and every light is evaluated: a handful costs less than a pass that sorts them.
         else if (!lacks(graph, SceneFeature::manyLights))
@@ -197,59 +253,58 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     TextureHandle lit;
     {
         PassGroup::Scope in(graph, lightingGroup_);
-        lit = lighting_.declare(graph, scene, g, lights_, shadow, tiles);
+        lit = lighting_->declare(graph, scene, g, *lights_, shadow, tiles);
     }
     shown = lit;
     if (step == Reflection) {
         PassGroup::Scope in(graph, reflectionGroup_);
-        reflection_.declare(graph, scene, meshes_, frame.seconds, lights_, g, lit,
-                            kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
+        reflection_->declare(graph, frame.world, *lights_, g, lit,
+                             kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
         return;
     }
     if (step == Layout && options.referencePosition)
-        split = SplitView{lighting_.declarePositionError(graph, scene, g), divider_};
+        split = SplitView{lighting_->declarePositionError(graph, scene, g), divider_};
     if (tiles && !frame.benchmark)
-        split =
-            SplitView{culling_pass_.declareHeatMap(graph, *tiles, lit, std::max(lightCountFor(step) / 32, 8)),
-                      divider_};
+        split = SplitView{
+            culling_pass_->declareHeatMap(graph, *tiles, lit, std::max(lightCountFor(step) / 32, 8)),
+            divider_};
 }
 
 void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
-    const Scene& scene = *scene_;
+    const Scene& scene = frame.world.scene();
     uploadLights(frame);
     TextureHandle shown;
     std::optional<SplitView> split;
     switch (frame.step) {
         case RenderToTexture: {
-            TextureHandle color =
-                rtt_.declare(graph, scene, meshes_, frame.seconds, static_cast<RttDepth>(rttDepth_ != 0));
+            TextureHandle color = rtt_->declare(graph, frame.world, static_cast<RttDepth>(rttDepth_ != 0));
             // The 512 x 512 texture, stretched over the window: sampled in [0, 1], whatever the sizes.
-            const FullscreenPass* copy = &rttToScreen_;
-            Pass& pass = graph.addPass("rtt to screen",
-                                       [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
-            pass.read(color).setState(FullscreenPass::state()).setTaps(1);
+            const FullscreenPass* copy = &*rttToScreen_;
+            Pass& pass = rttToScreen_->addPass(
+                graph, "rtt to screen", [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); });
+            pass.read(color).setTaps(1);
             shown = pass.create("rtt.shown", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                 TextureUsage::ColorAttachment);
             break;
         }
         case ThreeTargets: {
-            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds,
-                                        slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
-            shown = mrt_.declareComposite(graph, scene, t);
+            MrtTargets t = mrt_->declare(graph, frame.world,
+                                         slidesOrder_ ? MrtOrder::slides : MrtOrder::fixed, &mrtStats_);
+            shown = mrt_->declareComposite(graph, scene, t);
             break;
         }
         case Sharpen: {
-            MrtTargets t = mrt_.declare(graph, scene, meshes_, frame.seconds, MrtOrder::fixed, &mrtStats_);
-            SharpenTargets s = mrt_.declareSharpen(graph, scene, t);
+            MrtTargets t = mrt_->declare(graph, frame.world, MrtOrder::fixed, &mrtStats_);
+            SharpenTargets s = mrt_->declareSharpen(graph, scene, t);
             shown = s.clipped;
-            split = SplitView{mrt_.declareRangeView(graph, s), divider_};
+            split = SplitView{mrt_->declareRangeView(graph, s), divider_};
             break;
         }
         default:
             declareDeferred(graph, frame, shown, split);
             break;
     }
-    present_.declare(graph, shown, split);
+    present_->declare(graph, shown, split);
 }
 
 void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
@@ -276,15 +331,16 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("bytesPerPixel", std::to_string(gbufferBytesPerPixel(layout)), "G-buffer bytes per pixel");
     out.add("gbufferMiB", cat(double(pixels * gbufferBytesPerPixel(layout)) / (1024.0 * 1024.0)),
             "G-buffer at this size (MiB)");
-    out.add("pointLights", std::to_string(lights_.count()),
+    out.add("pointLights", std::to_string(lights_->count()),
             cat("point lights (of ", pointLightsInScene_, ")"));
     if (step == Layout) {
         float at = std::abs(worldOffsetFor(step).x) + 10.0f;
         out.add("halfFloatStep", cat(halfFloatSpacing(at)), cat("a half float's step at ", at, " m (m)"));
     }
     if (step == Reflection) {
-        auto mirror = findMirror(*scene_, frame.seconds);
-        out.add("mirror", mirror ? scene_->objects[mirror->object].name : std::string("none"), "mirror");
+        auto mirror = findMirror(frame.world.scene(), frame.seconds);
+        out.add("mirror", mirror ? frame.world.scene().objects[mirror->object].name : std::string("none"),
+                "mirror");
         int fraction = kReflectionFractions[std::clamp(reflectionSize_, 0, 2)];
         out.add("reflectionSize",
                 cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),
@@ -294,7 +350,7 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         Size2D tiles = tileCount(frame.size);
         out.add("tiles", cat(tiles.width, " x ", tiles.height),
                 cat("tiles of ", kTileSize, " x ", kTileSize));
-        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_.count())),
+        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_->count())),
                 "light evaluations without culling (W x H x N)");
     }
     if (frame.previousFrame) {
@@ -345,3 +401,5 @@ void DeferredShadingLesson::drawPanel(const FrameInfo& frame) {
 }
 
 }  // namespace lesson10
+
+FX_LESSON(lesson10::DeferredShadingLesson, "Deferred shading", "scenes/10_deferred_shading.json")

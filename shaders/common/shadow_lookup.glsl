@@ -1,5 +1,5 @@
-// Shadow-map lookup for lit shaders (effects/shadow_map.hpp sets these with ShadowMap::bindForLookup).
-// Locations 40 to 43 and texture unit 4 are the shadow's own: scene_uniforms.glsl uses 0 to 13 and 30.
+// Shadow-map lookup for lit shaders (effects/shadow/shadow_map.hpp sets these with ShadowMap::bindForLookup).
+// Locations 40 to 43 and texture unit 4 are the shadow's own (scene_bindings.glsl).
 //
 //   float shadowVisibility(vec3 worldPosition, vec3 worldNormal)   1: lit, 0: in shadow
 //
@@ -14,12 +14,14 @@
 //    averaged: a soft edge whose smoothness grows with the tap count while its width stays put.
 // Outside the map (or beyond its far plane) everything is lit: the fit covers the receivers, and a
 // hard black border would be worse than a missing shadow at the edge.
-layout(location = 40) uniform mat4 shadowLightViewProjection;
+#include "common/scene_bindings.glsl"
+
+layout(location = kShadowMatrixLocation) uniform mat4 shadowLightViewProjection;
 // x: normal offset (metres), y: depth bias, z: filter radius (texels), w: 1 = shadows on, 0 = off
-layout(location = 41) uniform vec4 shadowParams;
-layout(location = 42) uniform int shadowFilterTaps;
-layout(location = 43) uniform vec3 shadowDirectionToLight;
-layout(binding = 4) uniform sampler2D shadowMap;
+layout(location = kShadowParamsLocation) uniform vec4 shadowParams;
+layout(location = kShadowTapsLocation) uniform int shadowFilterTaps;
+layout(location = kShadowToLightLocation) uniform vec3 shadowDirectionToLight;
+layout(binding = kShadowMapBinding) uniform sampler2D shadowMap;
 
 const int kShadowMaxTaps = 64;
 const float kGoldenAngle = 2.39996323;

@@ -1,4 +1,5 @@
-// Skinning: the joint matrices of the object being drawn, in the shader storage buffer at binding 0
+// Skinning: the joint matrices of the object being drawn, in the shader storage buffer at binding
+// kJointMatricesBinding (0)
 // (std430, as in the chapter's JointDataBlock), and the blend of a vertex's four influences.
 // The blend matches fx::blendJoints (common/scene/skin.hpp), which the tests use as the reference:
 //  - a weight counts only if it is above 0 and its joint index is inside the buffer (an index past the
@@ -7,7 +8,9 @@
 //    add up to 1 (and w stays 1);
 //  - a vertex with no weight left keeps its bind pose (the identity) instead of collapsing to the
 //    origin with w = 0, which the zero matrix would give.
-layout(std430, binding = 0) readonly buffer JointDataBlock {
+#include "common/scene_bindings.glsl"
+
+layout(std430, binding = kJointMatricesBinding) readonly buffer JointDataBlock {
     mat4 jointMatrices[];
 };
 

@@ -15,7 +15,8 @@ fi
 if [ "$#" -gt 0 ]; then files=("$@"); else
 mapfile -t files < <(git ls-files -- 'common/*.cpp' 'common/*.hpp' 'lessons/*.cpp' 'lessons/*.hpp' \
                                      'tests/*.cpp' 'tests/*.hpp' 'tools/*.cpp' 'tools/*.hpp' \
-                     | grep -v '^tests/layering/fixture/' | grep -v '^tests/format/fixture/')
+                     | grep -v '^tests/layering/fixture/' | grep -v '^tests/format/fixture/' \
+                     | grep -v '^tests/lessons/fixture/' | grep -v '^tests/bindings/fixture/')
 fi
 [ "${#files[@]}" -gt 0 ] || { echo "check_format: no sources found under $root" >&2; exit 1; }
 # One run over every file answers the common case quickly; only a failure looks file by file.

@@ -17,7 +17,15 @@ void GlTest::SetUp() {
     errorsBefore_ = fx::gl::debugCounters().errors;
 }
 
+::testing::AssertionResult GlTest::programsBuilt() const {
+    if (auto error = programs_.firstUnusable()) return ::testing::AssertionFailure() << *error;
+    return ::testing::AssertionSuccess();
+}
+
 void GlTest::TearDown() {
+    if (!brokenProgramsExpected_) {
+        EXPECT_TRUE(programsBuilt());
+    }
     fx::gl::drainErrorFlags();
     EXPECT_EQ(fx::gl::debugCounters().errors, errorsBefore_)
         << "GL error during the test: " << fx::gl::debugCounters().lastError;

@@ -15,7 +15,6 @@ namespace {
 class GreyLesson final : public Lesson {
 public:
     explicit GreyLesson(std::string referenceName = {}) : referenceName_(std::move(referenceName)) {}
-    LessonInfo info() const override { return {0, "grey", "grey per knob value", ""}; }
     std::vector<std::string> steps() const override { return {"grey"}; }
     void declareParams(ParamSet& params) override {
         Param& level = params.addInt("level", &level_, 0, 3, "the grey is level / 4");
@@ -173,7 +172,6 @@ TEST_F(BenchSweep, SliceAtATimePutsTheParametersBackBetweenSlices) {
 TEST_F(BenchSweep, LessonWithoutKnobsHasNoRows) {
     class NoKnobs final : public Lesson {
     public:
-        LessonInfo info() const override { return {0, "plain", "no knobs", ""}; }
         std::vector<std::string> steps() const override { return {"plain"}; }
         Status init(const Scene&) override { return Status::success(); }
         void buildFrame(FrameGraph& graph, const FrameInfo&) override {

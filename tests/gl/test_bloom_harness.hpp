@@ -7,18 +7,15 @@
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/bloom/bloom_reference.hpp"
+#include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"
 
 namespace fx::test {
 
 struct BloomEffects {
-    BloomChain chain = BloomChain::create();
-    BloomComposite composite = BloomComposite::create();
-    BloomReference reference = BloomReference::create();
-    bool usable() const { return chain.usable() && composite.usable() && reference.usable(); }
-    std::string error() const {
-        return !chain.usable() ? chain.error() : !composite.usable() ? composite.error() : reference.error();
-    }
+    BloomChain chain;
+    BloomComposite composite;
+    BloomReference reference;
 };
 
 // What the texture `which` holds after the chain and composite ran: "result" is bloom.result, "glow"
@@ -57,13 +54,6 @@ inline FloatImage runReference(EffectRunner& runner, const BloomEffects& fx, con
         if (d.empty()) return in;
         return fx.composite.declare(g, in, d.glow, {std::nullopt, 0.0f, 1.0f}).output;
     });
-}
-
-inline bool allFinite(const FloatImage& image) {
-    for (float v : image.texels) {
-        if (!std::isfinite(v)) return false;
-    }
-    return true;
 }
 
 // A grey image of value v everywhere (alpha 1).

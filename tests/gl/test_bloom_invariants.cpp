@@ -15,7 +15,7 @@ class BloomOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        ASSERT_TRUE(effects.usable()) << effects.error();
+        ASSERT_TRUE(programsBuilt());
     }
     BloomEffects effects;
 };

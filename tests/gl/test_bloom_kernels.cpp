@@ -19,7 +19,7 @@ class BloomKernels : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        ASSERT_TRUE(effects.usable()) << effects.error();
+        ASSERT_TRUE(programsBuilt());
     }
     BloomEffects effects;
 };

@@ -76,8 +76,7 @@ class CloudShadowOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        pass = CloudShadowPass::create();
-        ASSERT_TRUE(pass.usable()) << pass.error();
+        ASSERT_TRUE(programsBuilt());
     }
 
     // The map over the floor (or the sky where `sky`), as floats.

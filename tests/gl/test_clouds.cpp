@@ -201,7 +201,7 @@ TEST_F(CloudsOnGl, SettingsThatDrawTheSamePictureShareOneProgram) {
     EXPECT_NE(m, &pass.programFor(premultiplied));
     EXPECT_EQ(m, &pass.programFor(rejectBehind));
     for (const CloudFrameSettings* s : {&screen, &plane, &march, &bayer, &shadows, &premultiplied})
-        EXPECT_TRUE(pass.programFor(*s).usable()) << pass.programFor(*s).error();
+        EXPECT_TRUE(pass.programFor(*s).reloadable().usable()) << pass.programFor(*s).reloadable().error();
 }
 
 }  // namespace

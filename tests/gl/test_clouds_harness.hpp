@@ -87,8 +87,7 @@ class CloudsOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        pass = CloudPass::create();
-        ASSERT_TRUE(pass.usable()) << pass.error();
+        ASSERT_TRUE(programsBuilt());
         constant = CloudDensityTexture::fromImage(constantDensity(188));
         a = 2.0f * srgbDecode(188.0f / 255.0f);
     }
@@ -140,8 +139,8 @@ protected:
         Scene scene = std::move(*loaded);
         scene.lights.at(0).direction = {0.0f, -1.0f, 0.0f};
         SceneMeshes meshes(scene);
-        ShadowMap shadows = ShadowMap::create();
-        EXPECT_TRUE(shadows.usable()) << shadows.error();
+        ShadowMap shadows;
+        EXPECT_TRUE(programsBuilt());
         gl::Texture color =
             gl::Texture::create2D(TextureFormat::RGBA16F, width, height, 1, "test.scene.color");
         gl::Texture depth =
@@ -155,7 +154,7 @@ protected:
         TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
         TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
         ShadowSettings shadowSettings = shadowCastingLight(scene)->shadow;
-        DeclaredShadowMap map = shadows.declare(graph, scene, meshes, 0.0, shadowSettings, {});
+        DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), shadowSettings, {});
         EXPECT_NE(map.pass, nullptr);
         EXPECT_FALSE(map.lookup.light.fallbackDirection);
         pass.declare(graph, {c, d, &map}, density, settings);
@@ -167,11 +166,6 @@ protected:
         glDisable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
         return gl::readTexture(color);
-    }
-
-    static bool allFinite(const FloatImage& image) {
-        return std::all_of(image.texels.begin(), image.texels.end(),
-                           [](float v) { return std::isfinite(v); });
     }
     static float alphaAt(const FloatImage& image, int x, int y) { return image.texel(x, y, 3); }
 

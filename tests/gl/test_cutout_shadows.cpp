@@ -60,12 +60,10 @@ protected:
         auto loaded = loadScene(resourceDir() / "scenes/02_skinned_shadows.json", options);
         ASSERT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error());
         scene = std::move(*loaded);
-        shadows = ShadowMap::create();
-        ASSERT_TRUE(shadows.usable()) << shadows.error();
+        ASSERT_TRUE(programsBuilt());
     }
     void TearDown() override {
         meshes.reset();
-        shadows = ShadowMap();
         GlTest::TearDown();
     }
 
@@ -95,7 +93,7 @@ protected:
         ShadowPassOptions options;
         options.cutoff = cutoff;
         meshes->update(kSeconds);
-        DeclaredShadowMap map = shadows.declare(graph, scene, *meshes, kSeconds, settings, options);
+        DeclaredShadowMap map = shadows.declare(graph, World(scene, *meshes, kSeconds), settings, options);
         EXPECT_NE(map.pass, nullptr);
         if (!map.pass) return {};
         graph.capture(map.map);

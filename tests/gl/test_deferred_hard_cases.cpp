@@ -72,7 +72,7 @@ TEST_F(DeferredHardCases, LightingMatchesTheFormulaForEveryKindOfNormal) {
     }
     FloatImage out = light(scene, codes, pointLights);
     ASSERT_FALSE(out.empty());
-    ASSERT_TRUE(finite(out));
+    ASSERT_TRUE(allFinite(out));
     for (int x = 0; x < kW; ++x) {
         // The normal the lighting pass sees: the code as RG16F stored it, decoded.
         glm::vec2 code = codes[std::size_t(x)];
@@ -109,10 +109,10 @@ TEST_F(DeferredHardCases, ShininessZeroAndHugeMatchTheirLimits) {
         pointLights.push_back({glm::vec4(worldAt(scene, x) + 0.4f * n, 1.0f), glm::vec4(2, 1, 0.5f, 0)});
     }
     for (float shininess : {0.0f, 1e30f}) {
-        lighting = DeferredLighting::create(shininess);
+        lighting = DeferredLighting(shininess);
         FloatImage out = light(scene, codes, pointLights);
         ASSERT_FALSE(out.empty());
-        ASSERT_TRUE(finite(out));
+        ASSERT_TRUE(allFinite(out));
         for (int x = 0; x < kW; ++x) {
             glm::vec2 code = codes[std::size_t(x)];
             glm::vec3 stored = octahedralDecode({glm::unpackHalf1x16(glm::packHalf1x16(code.x)),
@@ -144,7 +144,7 @@ TEST_F(DeferredHardCases, RadiusZeroAddsNothingAndALightInsideTheSurfaceIsBounde
     for (int x = 0; x < kW; ++x)  // now one light reaching 1 m, on the surface: d = 0
         pointLights[std::size_t(x)] = {glm::vec4(worldAt(scene, x), 1.0f), glm::vec4(1000, 1000, 1000, 0)};
     FloatImage inside = light(scene, codes, pointLights);
-    ASSERT_TRUE(finite(inside));
+    ASSERT_TRUE(allFinite(inside));
     for (int x = 0; x < kW; ++x) {
         glm::vec3 c = texel(inside, x);
         // At the light: attenuation 1, lambert 1 (no direction: the normal's), specular at most 0.3.
@@ -163,7 +163,7 @@ TEST_F(DeferredHardCases, AThousandLightsOnOnePixelStayFiniteAndClamped) {
              glm::vec4(60000, 60000, 60000, 0)});
     FloatImage out = light(scene, codes, pointLights);
     ASSERT_FALSE(out.empty());
-    ASSERT_TRUE(finite(out));
+    ASSERT_TRUE(allFinite(out));
     for (int x = 0; x < kW; ++x) EXPECT_EQ(texel(out, x), glm::vec3(kSceneHdrMax)) << x;
 }
 
@@ -173,16 +173,16 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
-    GBufferPass gbuffer = GBufferPass::create();
+    GBufferPass gbuffer;
     const Size2D size{96, 54};
     GraphRunner runner(size.width, size.height);
     auto measure = [&](GBufferLayout layout, float offset) {
         FloatImage error = runner.run(size, [&](FrameGraph& graph) {
             GBufferTargets g =
-                gbuffer.declare(graph, *scene, meshes, 0.0, {layout, true, glm::vec3(offset, 0, 0)});
+                gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, true, glm::vec3(offset, 0, 0)});
             return lighting.declarePositionError(graph, *scene, g);
         });
-        EXPECT_TRUE(finite(error));
+        EXPECT_TRUE(allFinite(error));
         double sum = 0;
         float worst = 0;
         int covered = 0;
@@ -225,15 +225,16 @@ TEST_F(DeferredHardCases, ManyLightsCostWidthTimesHeightTimesLightsUnlessCulled)
     auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
-    GBufferPass gbuffer = GBufferPass::create();
-    TiledCulling culling = TiledCulling::create();
-    ASSERT_TRUE(culling.usable());
+    GBufferPass gbuffer;
+    TiledCulling culling;
+    ASSERT_TRUE(programsBuilt());
     lights.upload(gpuPointLights(allLights(*scene), kMaxGridLights));
     ASSERT_EQ(lights.count(), 1024);
     const Size2D size{320, 180};
     GraphRunner runner(size.width, size.height);
     FloatImage heat = runner.run(size, [&](FrameGraph& graph) {
-        GBufferTargets g = gbuffer.declare(graph, *scene, meshes, 0.0, {GBufferLayout::compact, false, {}});
+        GBufferTargets g =
+            gbuffer.declare(graph, World(*scene, meshes, 0.0), {GBufferLayout::compact, false, {}});
         return culling.declare(graph, *scene, g, lights).heat;
     });
     ASSERT_FALSE(heat.empty());

@@ -38,10 +38,6 @@ inline constexpr int kW = 6, kH = 1;
 // Exact in RGBA8 (153, 102 and 51 over 255), so the stored albedo is the one the CPU side uses.
 inline const glm::vec3 kAlbedo(0.6f, 0.4f, 0.2f);
 
-inline bool finite(const FloatImage& image) {
-    return std::all_of(image.texels.begin(), image.texels.end(), [](float v) { return std::isfinite(v); });
-}
-
 // Runs frame-graph passes on the GL executor, as a lesson does.
 struct GraphRunner {
     GlTextureAllocator allocator;
@@ -113,11 +109,7 @@ inline glm::vec3 expectedLight(const Scene& scene, glm::vec3 p, glm::vec3 n, con
 
 class DeferredHardCases : public GlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        lighting = DeferredLighting::create();
-        lights = PointLightBuffer::create();
-    }
+    void SetUp() override { GlTest::SetUp(); }
 
     // The lesson's own scene, with its assets resolved from res/.
     static Result<Scene> loadShippedScene() {

@@ -29,7 +29,7 @@ TEST_F(DeferredHardCases, AFragmentOutputWithoutAnAttachmentIsANamedError) {
                                {},
                                "#define THREE_TARGETS 1",
                                "test mrt program"});
-    ASSERT_TRUE(mrt.usable()) << mrt.error();
+    ASSERT_TRUE(programsBuilt());
     gl::Texture a = gl::Texture::create2D(TextureFormat::RGBA8, 8, 8, 1, "test.a");
     gl::Texture b = gl::Texture::create2D(TextureFormat::RGBA8, 8, 8, 1, "test.b");
     gl::Framebuffer fbo("two targets");
@@ -67,7 +67,7 @@ TEST_F(DeferredHardCases, AnIncompleteMrtFramebufferIsANamedError) {
 }
 
 TEST_F(DeferredHardCases, TheRenderToTextureFramebuffersSayWhatIsAttached) {
-    RenderToTexture rtt = RenderToTexture::create();
+    RenderToTexture rtt;
     EXPECT_EQ(rtt.attachmentsText(RttDepth::renderbuffer),
               "colour 0: texture rtt.color RGBA8 512x512; depth: renderbuffer GL_DEPTH_COMPONENT24 512x512");
     EXPECT_EQ(rtt.attachmentsText(RttDepth::texture),
@@ -111,8 +111,8 @@ TEST_F(DeferredHardCases, SharpeningReachesItsRangeInFloatAndClipsInEightBits) {
     ImportedImage a = upload(ambient, TextureFormat::RGBA8, "test.ambient");
     Scene scene;
     scene.background = glm::vec3(0.2f, 0.4f, 0.6f);
-    LectureMrt mrt = LectureMrt::create();
-    ASSERT_TRUE(mrt.usable());
+    LectureMrt mrt;
+    ASSERT_TRUE(programsBuilt());
     GraphRunner runner(w, h);
     SharpenTargets targets;
     auto declare = [&](FrameGraph& graph) {
@@ -149,12 +149,12 @@ TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
     auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
-    GBufferPass gbuffer = GBufferPass::create();
+    GBufferPass gbuffer;
     const Size2D size{96, 54};
     GraphRunner runner(size.width, size.height);
     auto normals = [&](GBufferLayout layout) {
         return runner.run(size, [&](FrameGraph& graph) {
-            return gbuffer.declare(graph, *scene, meshes, 0.0, {layout, false, glm::vec3(0)}).normal;
+            return gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, false, glm::vec3(0)}).normal;
         });
     };
     FloatImage fat = normals(GBufferLayout::fat), raw = normals(GBufferLayout::rgba8Raw);
@@ -185,17 +185,17 @@ TEST_F(DeferredHardCases, ForwardAndDeferredAgreeToEightBitQuantisation) {
     auto scene = loadShippedScene();
     ASSERT_TRUE(scene.ok()) << scene.error();
     SceneMeshes meshes(*scene);
-    RenderToTexture rtt = RenderToTexture::create();
-    LectureMrt mrt = LectureMrt::create();
-    ASSERT_TRUE(mrt.usable());
+    RenderToTexture rtt;
+    LectureMrt mrt;
+    ASSERT_TRUE(programsBuilt());
     const Size2D size{512, 512};
     GraphRunner runner(size.width, size.height);
     FloatImage forward = runner.run(size, [&](FrameGraph& graph) {
-        return rtt.declare(graph, *scene, meshes, 0.0, RttDepth::renderbuffer);
+        return rtt.declare(graph, World(*scene, meshes, 0.0), RttDepth::renderbuffer);
     });
     MrtTargets targets;
     auto declareTerms = [&](FrameGraph& graph) {
-        targets = mrt.declare(graph, *scene, meshes, 0.0, MrtOrder::fixed, nullptr);
+        targets = mrt.declare(graph, World(*scene, meshes, 0.0), MrtOrder::fixed, nullptr);
     };
     FloatImage sum = runner.run(size, [&](FrameGraph& graph) {
         declareTerms(graph);

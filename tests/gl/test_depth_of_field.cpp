@@ -37,8 +37,7 @@ class DepthOfFieldOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        effect = DepthOfField::create();
-        ASSERT_TRUE(effect.usable()) << effect.error();
+        ASSERT_TRUE(programsBuilt());
     }
 
     // Runs `declare` on `colour` (RGBA32F) with a depth texture (R32F) filled by depth(x, y).
@@ -71,12 +70,6 @@ protected:
     DepthOfField effect;
     std::string lastErrors;
 };
-
-bool allFinite(const FloatImage& image) {
-    for (float v : image.texels)
-        if (!std::isfinite(v)) return false;
-    return true;
-}
 
 }  // namespace
 

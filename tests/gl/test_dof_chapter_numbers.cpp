@@ -48,8 +48,7 @@ class DofChapterNumbers : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        effect = DepthOfField::create();
-        ASSERT_TRUE(effect.usable()) << effect.error();
+        ASSERT_TRUE(programsBuilt());
     }
     // The pass `declare` makes on a ramp (r = x, g = y, in the units `unit` gives a pixel) with every
     // depth `depth`; returns the output at the centre pixel, where the input is 0: the taps' mean offset.

@@ -42,8 +42,8 @@ protected:
         PassTimer timer(TimingMode::Off, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
         GlPassExecutor executor(timer, {0, true});
         SceneMeshes meshes(*scene_);
-        ShadowMap shadows = ShadowMap::create();
-        EXPECT_TRUE(shadows.usable()) << shadows.error();
+        ShadowMap shadows;
+        EXPECT_TRUE(programsBuilt());
 
         ShadowSettings settings = shadowCastingLight(*scene_)->shadow;
         settings.mapSize = 256;  // small: the test reads every texel back
@@ -51,7 +51,7 @@ protected:
         options.setsItsOwnState = setsItsOwnState;
 
         FrameGraph graph(OutputTarget{{16, 16}, "output", TextureFormat::RGBA8, 0});
-        DeclaredShadowMap map = shadows.declare(graph, *scene_, meshes, 0.5, settings, options);
+        DeclaredShadowMap map = shadows.declare(graph, World(*scene_, meshes, 0.5), settings, options);
         EXPECT_NE(map.pass, nullptr);
         graph.inspect("shadow.map");  // nothing reads the map in this frame: keep the pass
         ShadowRun run;

@@ -22,8 +22,8 @@ TEST_F(FullscreenOnGl, OutputTransformEncodesTheChaptersTestVectorsWithTheSrgbCu
     // negative values to 0 (not NaN).
     const std::vector<std::pair<float, int>> vectors{{0.5f, 188}, {0.2126f, 127}, {0.7152f, 220}, {0.0f, 0},
                                                      {1.0f, 255}, {40.0f, 255},   {-3.0f, 0}};
-    OutputTransformPass present = OutputTransformPass::create();
-    ASSERT_TRUE(present.usable()) << present.error();
+    OutputTransformPass present;
+    ASSERT_TRUE(programsBuilt());
     EffectRunner runner(int(vectors.size()), 1);
     FloatImage input = makeImage(int(vectors.size()), 1, [&](int x, int) {
         float v = vectors[std::size_t(x)].first;
@@ -45,9 +45,9 @@ TEST_F(FullscreenOnGl, OutputTransformEncodesTheChaptersTestVectorsWithTheSrgbCu
 TEST_F(FullscreenOnGl, SepiaWhiteClipsInRed) {
     // White through the chapter's sepia is linear (1.175, 0.948, 0.670): on screen (255, 249, 214) with
     // the sRGB curve (the chapter's 1/2.2 power gives 213 for blue). Red is above 1 and clips.
-    ColourMatrixPass grading = ColourMatrixPass::create();
+    ColourMatrixPass grading;
     grading.setTransform(ColourTransform::sepia());
-    OutputTransformPass present = OutputTransformPass::create();
+    OutputTransformPass present;
     EffectRunner runner(1, 1);
     FloatImage white = makeImage(1, 1, [](int, int) { return std::array<float, 4>{1, 1, 1, 1}; });
     runner.run(white, TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle in) {
@@ -63,9 +63,9 @@ TEST_F(FullscreenOnGl, SepiaWhiteClipsInRed) {
 
 TEST_F(FullscreenOnGl, SplitViewShowsBeforeLeftOfTheDividerAndAfterRightOfIt) {
     const int width = 20;
-    ColourMatrixPass grading = ColourMatrixPass::create();
+    ColourMatrixPass grading;
     grading.setTransform(ColourTransform::invert());
-    OutputTransformPass present = OutputTransformPass::create();
+    OutputTransformPass present;
     EffectRunner runner(width, 2);
     FloatImage black = makeImage(width, 2, [](int, int) { return std::array<float, 4>{0, 0, 0, 1}; });
     for (float divider : {0.0f, 0.3f, 1.0f}) {
@@ -99,21 +99,26 @@ TEST_F(FullscreenOnGl, FullscreenStateSetsEverythingAPostPassDependsOn) {
 }
 
 TEST_F(FullscreenOnGl, AnEffectWhoseProgramFailedIsSwitchedOffWithTheReason) {
+    expectBrokenPrograms();
     FullscreenPass missing("effects/no_such_shader.frag", "missing");
-    EXPECT_FALSE(missing.usable());
-    EXPECT_FALSE(missing.error().empty());
-    // The effects built on it say so in the frame report instead of drawing with program 0.
-    OutputTransformPass present;  // never created: its program is empty
+    EXPECT_FALSE(missing.reloadable().usable());
+    EXPECT_FALSE(missing.reloadable().error().empty());
+    // A pass that draws with it says so in the frame report instead of drawing with program 0.
     EffectRunner runner(4, 4);
     FloatImage grey = makeImage(4, 4, [](int, int) { return std::array<float, 4>{0.5f, 0.5f, 0.5f, 1}; });
     runner.run(grey, TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle in) {
-        present.declare(g, in);
+        const FullscreenPass* pass = &missing;
+        missing
+            .addPass(g, "copy with a missing shader",
+                     [pass, in](PassContext& ctx) { pass->draw({ctx.native(in)}); })
+            .read(in)
+            .writeColor(g.output());
         return in;
     });
-    const PassRecord* record = runner.report.findPass("output transform");
+    const PassRecord* record = runner.report.findPass("copy with a missing shader");
     ASSERT_NE(record, nullptr);
     EXPECT_FALSE(record->executed);
-    EXPECT_NE(record->reason.find("did not build"), std::string::npos) << record->reason;
+    EXPECT_NE(record->reason.find("the missing program did not build"), std::string::npos) << record->reason;
 }
 
 TEST_F(FullscreenOnGl, TheHdrSceneIsWrittenFiniteAndWithinItsLimit) {
@@ -130,12 +135,12 @@ TEST_F(FullscreenOnGl, TheHdrSceneIsWrittenFiniteAndWithinItsLimit) {
     ball.material.emissiveStrength = 1e4f;
     scene.objects.push_back(ball);
     SceneMeshes meshes(scene);
-    HdrScenePass scenePass = HdrScenePass::create();
-    ASSERT_TRUE(scenePass.usable()) << scenePass.error();
+    HdrScenePass scenePass;
+    ASSERT_TRUE(programsBuilt());
     EffectRunner runner(16, 16);
     FloatImage unused = makeImage(16, 16, [](int, int) { return std::array<float, 4>{0, 0, 0, 1}; });
     FloatImage hdr = runner.run(unused, TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle) {
-        return scenePass.declare(g, scene, meshes, 0.0).color;
+        return scenePass.declare(g, World(scene, meshes, 0.0)).color;
     });
     ASSERT_FALSE(hdr.empty()) << runner.lastErrors;
     EXPECT_EQ(hdr.texel(8, 8, 0), kSceneHdrMax) << "the ball, clamped";

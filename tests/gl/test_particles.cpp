@@ -3,6 +3,7 @@
 // and at the near plane, additive light past a half float's range, the soft fade's distance 0 and its
 // linearised depth, every source with every fade and blend, and a sprite that is not on disk. The CPU
 // simulation's clock is in test_particle_clock.cpp.
+#include "effects/scene/scene_bindings.hpp"
 #include "test_particles_harness.hpp"
 
 using namespace fx;
@@ -24,8 +25,8 @@ TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
     ParticleSystem cpu(setups);
     ParticleSystem clocks(setups, false);
     renderer.setEmitters(clocks.emitters());
-    GpuParticles gpu = GpuParticles::create(clocks);
-    ASSERT_TRUE(gpu.usable());
+    GpuParticles gpu(clocks);
+    ASSERT_TRUE(programsBuilt());
     const double steps[] = {1.0 / 60, 1.0 / 60, 0.0, 0.5, 1.0 / 60, 1.0, 1.0 / 30, 1.0 / 60};
     for (double dt : steps) {
         cpu.update(dt);
@@ -76,7 +77,7 @@ TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
 
     // The same run again: the same bytes.
     ParticleSystem clocks2(setups, false);
-    GpuParticles gpu2 = GpuParticles::create(clocks2);
+    GpuParticles gpu2(clocks2);
     for (double dt : steps) {
         clocks2.update(dt);
         renderer.setEmitters(clocks2.emitters());
@@ -89,7 +90,7 @@ TEST_F(Particles, GpuSimulationMatchesTheCpuAndRepeats) {
 TEST_F(Particles, ZeroLiveParticlesDrawNothingWithoutError) {
     ParticleSystem clocks({setupOf(chapterFire(), false)}, false);
     renderer.setEmitters(clocks.emitters());
-    GpuParticles gpu = GpuParticles::create(clocks);
+    GpuParticles gpu(clocks);
     Target target(32, 32, TextureFormat::RGBA16F, {0.25f, 0.5f, 0.75f, 1.0f});
     target.bind(false);
     EXPECT_EQ(renderer.drawIndirect(gpu, camera(32, 32)), 1);  // before any simulation
@@ -109,7 +110,7 @@ TEST_F(Particles, FullGpuPoolReplacesTheOldestAndDrawsTheCapacity) {
     ParticleEmitter e = chapterFire();
     e.ratePerSecond = 200.0f;
     ParticleSystem clocks({setupOf(e, false, 10)}, false);
-    GpuParticles gpu = GpuParticles::create(clocks);
+    GpuParticles gpu(clocks);
     for (int i = 0; i < 20; ++i) {
         clocks.update(1.0 / 60.0);
         renderer.setEmitters(clocks.emitters());
@@ -199,9 +200,9 @@ TEST_F(Particles, AdditiveLightPastAHalfFloatStaysFinite) {
 
     Target scene(16, 16, TextureFormat::RGBA16F, {1, 1, 1, 1});
     FullscreenPass composite("effects/particles/particles_composite.frag", "test particles composite");
-    ASSERT_TRUE(composite.usable()) << composite.error();
+    ASSERT_TRUE(programsBuilt());
     scene.bind(true);
-    glProgramUniform1f(composite.program(), 0, 4096.0f);
+    glProgramUniform1f(composite.program(), glsl::kHdrMaxLocation, 4096.0f);
     composite.draw({offscreen.color.name()});
     scene.unbind();
     Extremes out = extremes(scene.read());
@@ -265,8 +266,8 @@ TEST_F(Particles, EverySourceDrawsTheSamePictureWithEveryFadeAndBlend) {
     e.spinDegreesPerSecond = 120.0f;
     std::vector<EmitterSetup> setups = {setupOf(e, false)};
     ParticleSystem clocks(setups, false);
-    GpuParticles gpu = GpuParticles::create(clocks);
-    ASSERT_TRUE(gpu.usable());
+    GpuParticles gpu(clocks);
+    ASSERT_TRUE(programsBuilt());
     for (int i = 0; i < 90; ++i) {  // 1.5 s: the oldest have died and the ring has wrapped
         clocks.update(1.0 / 60.0);
         renderer.setEmitters(clocks.emitters());
@@ -344,7 +345,7 @@ TEST_F(Particles, EverySourceDrawsTheSamePictureWithEveryFadeAndBlend) {
     EXPECT_EQ(labels.size(), 12u);
     EXPECT_EQ(labels.count("particles: sprites (live list, soft, premultiplied)"), 1u);
     EXPECT_EQ(labels.count("particles: sprites (one per draw, straight)"), 1u);
-    EXPECT_TRUE(renderer.usable()) << renderer.error();
+    EXPECT_TRUE(programsBuilt());
 }
 
 TEST_F(Particles, MissingSpriteNamesThePath) {

@@ -107,8 +107,7 @@ class Particles : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        renderer = ParticleRenderer::create();
-        ASSERT_TRUE(renderer.usable()) << renderer.error();
+        ASSERT_TRUE(programsBuilt());
     }
     ParticleRenderer renderer;
 };

@@ -6,6 +6,8 @@
 // unmirrored sun with its own normals (mirroring the camera, not the objects, leaves both as they are).
 // Hard case 14: the reflection lands where the mirror shows it at every reflection_size, also when the
 // output's size is not a multiple of the fraction (the reflection keeps the output's aspect).
+#include <optional>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "effects/deferred/planar_reflection.hpp"
@@ -50,14 +52,11 @@ protected:
         auto parsed = parseScene(mirrorSceneJson(redBoxX, redBoxSize), "mirror-test.json");
         ASSERT_TRUE(parsed.ok()) << parsed.error();
         scene = std::move(*parsed);
-        meshes = SceneMeshes(scene);
-        gbuffer = GBufferPass::create();
-        lighting = DeferredLighting::create();
-        reflection = PlanarReflection::create(scene);
-        lights = PointLightBuffer::create();
+        meshes.emplace(scene);
+        reflection.emplace(scene);
         // One light of radius 0: it adds nothing (the buffer is not empty).
         lights.upload({{glm::vec4(0, 100, 0, 0), glm::vec4(1, 1, 1, 0)}});
-        ASSERT_TRUE(reflection.usable());
+        ASSERT_TRUE(programsBuilt());
     }
 
     struct Frame {
@@ -69,11 +68,11 @@ protected:
         Frame f;
         for (bool wantReflection : {true, false}) {
             FloatImage image = runner.run(size, [&](FrameGraph& graph) {
-                GBufferTargets g =
-                    gbuffer.declare(graph, scene, meshes, 0.0, {GBufferLayout::compact, false, {}});
+                const World world(scene, *meshes, 0.0);
+                GBufferTargets g = gbuffer.declare(graph, world, {GBufferLayout::compact, false, {}});
                 TextureHandle lit =
                     lighting.declare(graph, scene, g, lights, DeclaredShadowMap{}, std::nullopt);
-                TextureHandle color = reflection.declare(graph, scene, meshes, 0.0, lights, g, lit, fraction);
+                TextureHandle color = reflection->declare(graph, world, lights, g, lit, fraction);
                 return wantReflection ? color : lit;
             });
             (wantReflection ? f.reflected : f.shown) = std::move(image);
@@ -112,10 +111,10 @@ protected:
     }
 
     Scene scene;
-    SceneMeshes meshes;
+    std::optional<SceneMeshes> meshes;  // made for the scene load() reads
     GBufferPass gbuffer;
     DeferredLighting lighting;
-    PlanarReflection reflection;
+    std::optional<PlanarReflection> reflection;  // made for the scene load() reads
     PointLightBuffer lights;
 };
 
@@ -137,7 +136,7 @@ TEST_F(PlanarReflectionOnGl, TheClipPlaneKeepsEverythingBelowTheMirrorOutOfTheRe
     const Size2D size{160, 90};
     Frame f = render(size, 1);
     ASSERT_FALSE(f.reflected.empty());
-    ASSERT_TRUE(finite(f.reflected));
+    ASSERT_TRUE(allFinite(f.reflected));
     glm::vec2 below = projected({1.5f, -1.0f, -1.0f}, size, true);
     ASSERT_GT(below.x, 0);
     ASSERT_LT(below.x, size.width);

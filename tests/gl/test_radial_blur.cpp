@@ -51,8 +51,7 @@ class RadialBlurOnGl : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        effect = RadialBlur::create();
-        ASSERT_TRUE(effect.usable()) << effect.error();
+        ASSERT_TRUE(programsBuilt());
     }
     RadialBlur effect;
 };

@@ -63,7 +63,8 @@ TEST_F(ShaderDumpOnGl, WritesTheTextTheDriverCompiledWithAnIndexLine) {
     EXPECT_EQ(index.rfind("file\tstage\tdriver\tprogram\tsources\n", 0), 0u) << index;
     EXPECT_NE(
         index.find("\ntest_downsample_BLOOM_FILTERS_1.frag\tfrag\tcompiled\ttest downsample (BLOOM_FILTERS "
-                   "1)\teffects/bloom/downsample.frag,effects/bloom/bloom_common.glsl\n"),
+                   "1)\teffects/bloom/downsample.frag,effects/bloom/bloom_common.glsl,"
+                   "effects/bloom/bloom_bindings.glsl\n"),
         std::string::npos)
         << index;
 

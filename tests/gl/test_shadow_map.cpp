@@ -49,10 +49,6 @@ std::size_t characterIndex(const Scene& scene) {
     return scene.objects.size();
 }
 
-bool allFinite(const FloatImage& image) {
-    return std::all_of(image.texels.begin(), image.texels.end(), [](float v) { return std::isfinite(v); });
-}
-
 int texelsBelow(const FloatImage& depth, float limit) {
     return int(std::count_if(depth.texels.begin(), depth.texels.end(), [&](float v) { return v < limit; }));
 }
@@ -78,15 +74,10 @@ protected:
         GlTest::SetUp();
         scene = loadLessonScene();
         meshes.emplace(scene);
-        shadows = ShadowMap::create();
-        ASSERT_TRUE(shadows.usable()) << shadows.error();
-        lit = ShadowLitPass::create();
-        ASSERT_TRUE(lit.usable()) << lit.error();
+        ASSERT_TRUE(programsBuilt());
     }
     void TearDown() override {
         meshes.reset();
-        shadows = ShadowMap();
-        lit = ShadowLitPass();
         GlTest::TearDown();
     }
 
@@ -107,15 +98,15 @@ protected:
         options.stats = &result.stats;
         meshes->update(seconds);
         DeclaredShadowMap map =
-            light ? shadows.declare(graph, scene, *meshes, seconds, settings, *light, options)
-                  : shadows.declare(graph, scene, *meshes, seconds, settings, options);
+            light ? shadows.declare(graph, World(scene, *meshes, seconds), settings, *light, options)
+                  : shadows.declare(graph, World(scene, *meshes, seconds), settings, options);
         result.light = map.lookup.light;
         result.mapPassExists = map.pass != nullptr;
         if (!map.pass) return result;
         graph.capture(map.map);
         HdrSceneTargets hdr;
         if (withColor) {
-            hdr = lit.declare(graph, scene, *meshes, seconds, map, options.skinnedPlacements);
+            hdr = lit.declare(graph, World(scene, *meshes, seconds), map, options.skinnedPlacements);
             graph.capture(hdr.color);
         }
         if (before) before();
@@ -244,7 +235,7 @@ TEST_F(ShadowMapTest, OwnStateWritesDepthWhateverWasLeftAndInheritedStateDoesNot
     FrameGraph graph(OutputTarget{kOutput, "output", TextureFormat::RGBA8, 0});
     ShadowSettings settings;
     settings.casts = true;
-    DeclaredShadowMap map = shadows.declare(graph, scene, *meshes, 0.0, settings, inherits);
+    DeclaredShadowMap map = shadows.declare(graph, World(scene, *meshes, 0.0), settings, inherits);
     ASSERT_NE(map.pass, nullptr);
     EXPECT_FALSE(map.pass->state().depthTest.has_value());
     EXPECT_FALSE(map.pass->state().blend.has_value());
@@ -281,7 +272,7 @@ TEST_F(ShadowMapTest, LightParallelToUpGivesFiniteShadows) {
 TEST_F(ShadowMapTest, CastersOutsideTheLightFrustumStayFiniteAndPancake) {
     // A frustum that starts inside the casters: without depth clamping, everything nearer the light
     // than the near plane would be clipped away and cast nothing.
-    ShadowBounds bounds = sceneBounds(scene, *meshes, 0.5);
+    ShadowBounds bounds = sceneBounds(World(scene, *meshes, 0.5));
     LightView fitted =
         fitLightFrustum(bounds.casters, bounds.everything, scene.lights[0].direction, 15.0f, kMapSize);
     LightView cut = fitted;
@@ -352,8 +343,9 @@ TEST_F(ShadowMapTest, JointWeightsSummingToZeroOrNotToOneStayFiniteAndRenormalis
         LightView light = fitLightFrustum(Bounds{{-1, -4, -1}, {1, 6, 1}}, {0, -1, 0}, 0.0f, 16);
         GLuint program = shadows.skinnedProgram(SkinningProduct::parenthesised).name();
         glm::mat4 identity(1.0f);
-        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(identity));
-        glProgramUniformMatrix4fv(program, 2, 1, GL_FALSE, glm::value_ptr(light.viewProjection));
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(identity));
+        glProgramUniformMatrix4fv(program, glsl::kViewProjectionLocation, 1, GL_FALSE,
+                                  glm::value_ptr(light.viewProjection));
         glUseProgram(program);
         mesh.drawSource();
         glFinish();

@@ -51,8 +51,7 @@ protected:
     GpuSkinning skinning;
     void SetUp() override {
         GlTest::SetUp();
-        skinning = GpuSkinning::create();
-        ASSERT_TRUE(skinning.usable()) << skinning.error();
+        ASSERT_TRUE(programsBuilt());
     }
 };
 
@@ -223,7 +222,7 @@ TEST_F(Skinning, PosedAndInShaderSkinningDrawTheSamePicture) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glm::mat4 vp = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 20.0f) *
                        glm::lookAt(glm::vec3(2.0f, 1.2f, 3.0f), glm::vec3(0, 0.9f, 0), glm::vec3(0, 1, 0));
-        glProgramUniformMatrix4fv(program.name(), uniform_location::viewProjection, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(program.name(), glsl::kViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(vp));
         ModelDrawStyle style;
         style.setMaterial = false;  // the normals program has no material uniforms

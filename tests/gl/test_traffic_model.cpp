@@ -27,9 +27,9 @@ std::uint64_t trafficOf(const FrameReport& report, const std::string& name) {
 class TrafficModelOnGl : public GlTest {};
 
 TEST_F(TrafficModelOnGl, TheBloomChainMovesFortyMegabytesAtTenEightyP) {
-    BloomChain chain = BloomChain::create();
-    BloomComposite composite = BloomComposite::create();
-    ASSERT_TRUE(chain.usable()) << chain.error();
+    BloomChain chain;
+    BloomComposite composite;
+    ASSERT_TRUE(programsBuilt());
     FrameGraph graph({.size = {1920, 1080}});
     Pass& scene = graph.addPass("scene").setTaps(2);
     TextureHandle hdr = scene.create("scene.color", {TextureSize::output(), TextureFormat::RGBA16F},
@@ -56,8 +56,8 @@ TEST_F(TrafficModelOnGl, TheBloomChainMovesFortyMegabytesAtTenEightyP) {
 }
 
 TEST_F(TrafficModelOnGl, TheDepthOfFieldGatherAtHalfResolution) {
-    DepthOfField dof = DepthOfField::create();
-    ASSERT_TRUE(dof.usable()) << dof.error();
+    DepthOfField dof;
+    ASSERT_TRUE(programsBuilt());
     FrameGraph graph({.size = {1920, 1080}});
     Pass& scene = graph.addPass("scene").setTaps(2);
     TextureHandle color = scene.create("scene.color", {TextureSize::output(), TextureFormat::RGBA16F},
@@ -91,13 +91,13 @@ TEST_F(TrafficModelOnGl, TheDepthOfFieldGatherAtHalfResolution) {
 }
 
 TEST_F(TrafficModelOnGl, TheGBufferLayoutsWriteTwelveTwentyFourAndFortyBytesAPixel) {
-    GBufferPass gbuffer = GBufferPass::create();
+    GBufferPass gbuffer;
     Scene scene;
     SceneMeshes meshes(scene);
     for (auto [layout, bytes] :
          {std::pair{GBufferLayout::compact, 12u}, {GBufferLayout::fat, 24u}, {GBufferLayout::fat32, 40u}}) {
         FrameGraph graph({.size = {1920, 1080}});
-        GBufferTargets g = gbuffer.declare(graph, scene, meshes, 0.0, {layout});
+        GBufferTargets g = gbuffer.declare(graph, World(scene, meshes, 0.0), {layout});
         Pass& read = graph.addPass("read").read(g.albedo).read(g.normal).read(g.depth).setTaps(3);
         if (g.position) read.read(*g.position);
         read.writeColor(graph.output());

@@ -25,7 +25,6 @@ std::vector<Size2D> sizes;
 
 class ClockProbe final : public Lesson {
 public:
-    LessonInfo info() const override { return {0, "clock-probe", "Clock probe", ""}; }
     std::vector<std::string> steps() const override { return {"one", "two"}; }
     Status init(const Scene&) override { return Status::success(); }
     void update(const FrameInfo& frame) override {
@@ -50,7 +49,7 @@ int run(const std::vector<std::string>& flags) {
     for (const std::string& f : flags) args.push_back(f);
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
-    return runLesson<ClockProbe>(int(argv.size()), argv.data());
+    return runLesson<ClockProbe>({0, "clock-probe", "Clock probe", ""}, int(argv.size()), argv.data());
 }
 
 TEST(ClassControls, SpaceHoldsTheClockAndAPeriodMovesItOneStep) {

@@ -35,7 +35,6 @@ public:
         seen.destroyed = true;
         seen.contextAliveAtDestruction = gl::contextAlive();
     }
-    LessonInfo info() const override { return {0, "probe", "Probe", ""}; }
     std::vector<std::string> steps() const override { return {"one"}; }
     void declareParams(ParamSet& params) override {
         params.addInt("samples", &samples_, 1, 8, "a knob, so that --bench has something").knob =
@@ -77,7 +76,7 @@ protected:
         args.insert(args.begin(), "probe");
         std::vector<char*> argv;
         for (auto& a : args) argv.push_back(a.data());
-        return runLesson<L>(int(argv.size()), argv.data());
+        return runLesson<L>({0, "probe", "Probe", ""}, int(argv.size()), argv.data());
     }
 };
 

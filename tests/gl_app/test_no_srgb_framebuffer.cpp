@@ -24,7 +24,6 @@ Seen seen;
 
 class SrgbProbeLesson final : public Lesson {
 public:
-    LessonInfo info() const override { return {0, "srgb-probe", "sRGB probe", ""}; }
     std::vector<std::string> steps() const override { return {"one"}; }
     Status init(const Scene&) override { return Status::success(); }
     void buildFrame(FrameGraph& graph, const FrameInfo&) override {
@@ -51,7 +50,8 @@ TEST(NoSrgbFramebuffer, TheOutputIsNeverEncodedByGl) {
     std::vector<std::string> args = {"probe", "--headless", "--overlay", "--frames", "3", "--size", "32x32"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
-    ASSERT_EQ(runLesson<SrgbProbeLesson>(int(argv.size()), argv.data()), 0);
+    ASSERT_EQ(runLesson<SrgbProbeLesson>({0, "srgb-probe", "sRGB probe", ""}, int(argv.size()), argv.data()),
+              0);
     EXPECT_EQ(seen.frames, 3);
     EXPECT_EQ(seen.srgbEnabledFrames, 0) << "GL_FRAMEBUFFER_SRGB was on: GL would encode a second time";
     EXPECT_EQ(seen.srgbEncodedFrames, 0) << "the presented framebuffer is sRGB-encoded";

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Lesson 09. Scenes decide: on a scene without postEffects.depthOfField (lesson 04's) every step runs
 # no depth-of-field pass, and the report gives the scene's reason for each; on its own scene the same
-# passes run. Slider extremes the scene loader refuses (focus at the focal length and behind the
-# camera, f-number 0, focal length 0): no GL error, no NaN or infinity in any texture with statistics.
+# passes run. Slider extremes the scene loader refuses (focus at the focal length, f-number 0, focal
+# length 0) and focus at infinity: no GL error, no NaN or infinity in any texture with statistics.
 #   run_dof_scene_checks.sh <lesson 09 exe> <scene without depth of field> <work dir>
 set -uo pipefail
 exe="$1" scene="$2" work="$3"
@@ -34,7 +34,16 @@ done
 # The control: with its own scene, step 6's gather runs.
 "$exe" --headless --size 64x36 --frames 2 --step 6 --report "$work/own.json" >"$work/log" 2>&1 || { echo "FAIL: own scene"; status=1; }
 grep -q '"dof gather"' "$work/own.json" || { echo "FAIL: no dof gather in the own scene's report"; status=1; }
-for run in "4 focus_distance=0.0311769" "6 focus_distance=0.0311769" "6 focus_distance=-1" "4 f_number=0" \
+# A valid scene focused at a far mountain starts focus_distance where it is: the parameter has the
+# setting's range (scene/scene_settings.cpp), up to infinity, written as the word.
+shipped="$(dirname "$scene")/09_depth_of_field.json"
+source "$(dirname "$0")/scene_copy.sh"  # fail, edit
+for far in 100000 '"infinity"'; do
+  edit "$work/far.json" "d['camera']['lens']['focusDistance'] = $far; d['objects'] = []"  # no paths to resolve
+  "$exe" --scene "$work/far.json" --list-params >"$work/far.txt" 2>&1 || { fail "focus at $far refused:"; cat "$work/far.txt"; }
+  grep -q "^focus_distance = ${far//\"/}  \[scene\]" "$work/far.txt" || { fail "focus at $far is not the parameter's start:"; cat "$work/far.txt"; }
+done
+for run in "4 focus_distance=0.0311769" "6 focus_distance=0.0311769" "6 focus_distance=infinity" "4 f_number=0" \
            "6 f_number=0" "7 focal_length=0"; do
   set -- $run
   report="$work/extreme-$1-$2.json"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Scenes steer the lessons: lesson 06's parameters start from its scene's postEffects, a preset and
-# --param override them, each value says where it came from, a scene value outside a parameter's
-# range is refused with the file, the setting and the range, and editing the scene changes the
-# picture.
+# --param override them, each value says where it came from, a parameter takes every value the scene
+# format allows (one declaration of the range, scene/scene_settings.cpp) and a scene value outside it is
+# refused with the file, the setting and the range, and editing the scene changes the picture.
 #   run_scene_steers_check.sh <fxlab-06-bloom> <shipped scene 06_bloom.json> <work dir>
 set -uo pipefail
 exe="$1" shipped="$2" work="$3"
@@ -12,7 +12,8 @@ source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 
 # A copy of the shipped scene with other post-effect settings (no asset paths in it to resolve).
 edit "$work/steered.json" 'd["postEffects"]["bloom"]["intensity"] = 3; d["postEffects"]["toneMap"] = {"operator": "reinhard", "exposure": 0.5}'
-edit "$work/too_bright.json" 'd["postEffects"]["bloom"]["intensity"] = 50'
+edit "$work/bright.json" 'd["postEffects"]["bloom"]["intensity"] = 50'
+edit "$work/too_bright.json" 'd["postEffects"]["bloom"]["intensity"] = 500'
 edit "$work/no_bloom.json" 'd["postEffects"].pop("bloom"); d["postEffects"].pop("toneMap")'
 
 expect_line() {  # expect_line <listing file> <pattern>
@@ -38,12 +39,14 @@ expect_line "$work/overridden.txt" '^exposure = 2  \[preset\]'
 expect_line "$work/overridden.txt" '^tone_map = reinhard  \[scene\]'
 
 "$exe" --scene "$work/no_bloom.json" --list-params >"$work/no_bloom.txt" 2>&1 || fail "--list-params without bloom"
-expect_line "$work/no_bloom.txt" '^intensity = 2  \[default\]'
+expect_line "$work/no_bloom.txt" '^intensity = 1  \[default\]'  # the setting's default, as a scene without it gets
 
+"$exe" --scene "$work/bright.json" --list-params >"$work/bright.txt" 2>&1 || fail "a scene intensity of 50 was refused"
+expect_line "$work/bright.txt" '^intensity = 50  \[scene\]'
 if "$exe" --scene "$work/too_bright.json" --list-params >"$work/too_bright.txt" 2>&1; then
-  fail "a scene intensity of 50 was accepted"
+  fail "a scene intensity of 500 was accepted"
 fi
-expect_line "$work/too_bright.txt" 'too_bright\.json: postEffects\.bloom\.intensity: parameter intensity: 50 is out of range; expected a number from 0 to 4'
+expect_line "$work/too_bright.txt" 'too_bright\.json: postEffects\.bloom\.intensity: 500 is out of range \[0, 100\]'
 
 # The picture: step 5 (tone curve and exposure) with the shipped scene and with the edited one.
 for scene in "$shipped" "$work/steered.json"; do

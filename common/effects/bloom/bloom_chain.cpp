@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base/log.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 
@@ -16,12 +17,6 @@ int bloomUpsampleTaps(int filters) {
     return filters == 2 ? 1 : filters == 0 ? 9 : 8;
 }
 
-BloomSampler BloomSampler::create() {
-    BloomSampler s;
-    s.sampler_ = gl::createLinearClampSampler("bloom (linear, clamp to edge)");
-    return s;
-}
-
 void BloomSampler::bind() const {
     glBindSampler(0, sampler_.name());
     glBindSampler(1, sampler_.name());
@@ -31,16 +26,6 @@ void BloomSampler::unbind() {
     // Units 0 and 1 go back to their textures' own parameters: the next pass did not ask for ours.
     glBindSampler(0, 0);
     glBindSampler(1, 0);
-}
-
-BloomChain BloomChain::create() {
-    BloomChain c;
-    std::string defines = bloomShaderDefines();
-    c.extract_ = FullscreenVariants("effects/bloom/extract.frag", "bloom bright pass", defines);
-    c.down_ = FullscreenVariants("effects/bloom/downsample.frag", "bloom downsample", defines);
-    c.up_ = FullscreenVariants("effects/bloom/upsample.frag", "bloom upsample", defines);
-    c.sampler_ = BloomSampler::create();
-    return c;
 }
 
 namespace {
@@ -61,15 +46,6 @@ const FullscreenPass& upProgram(const FullscreenVariants& v, int filters, bool w
 
 }  // namespace
 
-std::string BloomChain::error() const {
-    for (const FullscreenPass* p :
-         {&extractProgram(extract_, kBloomChapterFilters, true), &downProgram(down_, kBloomChapterFilters),
-          &upProgram(up_, kBloomChapterFilters, false)}) {
-        if (!p->usable()) return p->error();
-    }
-    return {};
-}
-
 BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
                                          const BloomChainSettings& settings) const {
     Declared d;
@@ -82,41 +58,36 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         return graph.declareTexture(cat("bloom.", chain, "[", l.index, "]"),
                                     {TextureSize::outputFraction(1, l.divisor), settings.format, 1});
     };
-    std::string broken;
-    auto program = [&broken](const FullscreenPass& pass) {
-        if (!pass.usable() && broken.empty()) broken = "a bloom program did not build: " + pass.error();
-        return &pass;
-    };
 
     // The bright pass: the scene's bright part, shrunk into level 0.
-    const FullscreenPass* extract = program(extractProgram(extract_, filters, settings.karisAverage));
+    const FullscreenPass* extract = &extractProgram(extract_, filters, settings.karisAverage);
     d.down.push_back(level("down", d.levels[0]));
-    Pass& bright = graph.addPass("bloom bright pass", [=](PassContext& ctx) {
+    Pass& bright = extract->addPass(graph, "bloom bright pass", [=](PassContext& ctx) {
         GLuint p = extract->program();
-        glProgramUniform1f(p, bloom_uniform::threshold, settings.threshold);
-        glProgramUniform1f(p, bloom_uniform::knee, settings.knee);
-        glProgramUniform1f(p, bloom_uniform::scale, settings.extractScale);
-        glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+        glProgramUniform1f(p, glsl::kBloomThresholdLocation, settings.threshold);
+        glProgramUniform1f(p, glsl::kBloomKneeLocation, settings.knee);
+        glProgramUniform1f(p, glsl::kBloomScaleLocation, settings.extractScale);
+        glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.downOffset);
         sampler->bind();
         extract->draw({ctx.native(input)});
         BloomSampler::unbind();
     });
-    bright.read(input).writeColor(d.down[0]).setState(FullscreenPass::state()).setTaps(4);
+    bright.read(input).writeColor(d.down[0]).setTaps(4);
     d.passes.push_back(&bright);
 
     // Down the chain: each level from the one above it, with blending off, so the level is overwritten.
-    const FullscreenPass* down = program(downProgram(down_, filters));
+    const FullscreenPass* down = &downProgram(down_, filters);
     for (std::size_t k = 1; k < d.levels.size(); ++k) {
         TextureHandle from = d.down[k - 1];
         d.down.push_back(level("down", d.levels[k]));
-        Pass& pass = graph.addPass(cat("bloom down ", k), [=](PassContext& ctx) {
+        Pass& pass = down->addPass(graph, cat("bloom down ", k), [=](PassContext& ctx) {
             GLuint p = down->program();
-            glProgramUniform1f(p, bloom_uniform::offset, settings.downOffset);
+            glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.downOffset);
             sampler->bind();
             down->draw({ctx.native(from)});
             BloomSampler::unbind();
         });
-        pass.read(from).writeColor(d.down[k]).setState(FullscreenPass::state()).setTaps(filters == 0 ? 5 : 4);
+        pass.read(from).writeColor(d.down[k]).setTaps(filters == 0 ? 5 : 4);
         d.passes.push_back(&pass);
     }
 
@@ -128,22 +99,22 @@ BloomChain::Declared BloomChain::declare(FrameGraph& graph, TextureHandle input,
         TextureHandle base = d.down[k];
         d.up[k] = level("up", d.levels[k]);
         const bool wide = k == 0 && settings.wideTop;
-        const FullscreenPass* up = program(upProgram(up_, filters, wide));
-        Pass& pass = graph.addPass(cat("bloom up ", k), [=](PassContext& ctx) {
+        const FullscreenPass* up = &upProgram(up_, filters, wide);
+        Pass& pass = up->addPass(graph, cat("bloom up ", k), [=](PassContext& ctx) {
             GLuint p = up->program();
-            glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
-            glProgramUniform1f(p, bloom_uniform::upScale, 1.0f);  // the chapters add every level at weight 1
+            glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.upOffset);
+            glProgramUniform1f(p, glsl::kBloomUpScaleLocation,
+                               1.0f);  // the chapters add every level at weight 1
             sampler->bind();
             up->draw({ctx.native(base), ctx.native(below)});
             BloomSampler::unbind();
         });
-        pass.read(base).read(below).writeColor(d.up[k]).setState(FullscreenPass::state());
+        pass.read(base).read(below).writeColor(d.up[k]);
         pass.setTaps(bloomUpsampleTaps(filters) + (wide ? 4 : 1));  // the level below, then its own level
         d.passes.push_back(&pass);
     }
-    if (!broken.empty()) {
-        for (Pass* p : d.passes) p->disable(broken);
-    }
+    // A level that is not made leaves the rest of the chain without its input.
+    runTogether(d.passes);
     return d;
 }
 

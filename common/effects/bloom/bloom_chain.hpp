@@ -15,12 +15,13 @@
 // Sizes follow the output every frame (render/bloom_levels.hpp); a level below one texel is not made,
 // and an output too small for even the first level declares nothing.
 //
-//   BloomChain chain = BloomChain::create();
+//   BloomChain chain;
 //   BloomChain::Declared d = chain.declare(graph, hdr.color, chapter001Bloom());
 //   composite.declare(graph, hdr.color, d, ...);
 #include <string>
 #include <vector>
 
+#include "effects/bloom/bloom_bindings.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/post/fullscreen_variants.hpp"
@@ -28,13 +29,6 @@
 #include "render/frame_graph.hpp"
 
 namespace fx {
-
-// Uniform locations shared by shaders/effects/bloom/*.frag. Which filter, the Karis average, the wide
-// top level and the tone curve are not uniforms: they are built into each program (BLOOM_FILTERS,
-// BLOOM_KARIS, BLOOM_WIDE, TONE_CURVE; effects/post/fullscreen_variants.hpp says why).
-namespace bloom_uniform {
-inline constexpr GLint threshold = 1, knee = 2, scale = 3, offset = 4, upScale = 6, exposure = 9;
-}
 
 // What the GLSL of the bloom passes gets as defines: the limits of effects/bloom/bloom_settings.hpp.
 std::string bloomShaderDefines();
@@ -48,25 +42,15 @@ int bloomUpsampleTaps(int filters);
 // Whatever a texture's own parameters say, the bloom passes filter the same way.
 class BloomSampler {
 public:
-    BloomSampler() = default;
-    static BloomSampler create();
     void bind() const;
     static void unbind();
 
 private:
-    gl::SamplerName sampler_;
+    gl::SamplerName sampler_ = gl::createLinearClampSampler("bloom (linear, clamp to edge)");
 };
 
 class BloomChain {
 public:
-    BloomChain() = default;  // empty: no GL yet
-    static BloomChain create();
-
-    // Whether the programs for the chapters' default settings built (the others build when a frame
-    // first asks for them, and a pass whose program did not build is switched off with its error).
-    bool usable() const { return error().empty(); }
-    std::string error() const;
-
     struct Declared {
         BloomChainSettings settings;
         std::vector<BloomLevel> levels;   // those that exist at this output size
@@ -77,13 +61,15 @@ public:
         // The top of the accumulated chain (bloom.up[0], or bloom.down[0] for a one-level chain).
         TextureHandle glow() const { return up.empty() ? down.front() : up.front(); }
     };
-    // Declares nothing when no level fits the output.
+    // Declares nothing when no level fits the output. The programs for `settings` build when a frame
+    // first asks for them; when one of them did not build, the whole chain is switched off with its
+    // error.
     Declared declare(FrameGraph& graph, TextureHandle input, const BloomChainSettings& settings) const;
 
 private:
-    FullscreenVariants extract_;
-    FullscreenVariants down_;
-    FullscreenVariants up_;
+    FullscreenVariants extract_{"effects/bloom/extract.frag", "bloom bright pass", bloomShaderDefines()};
+    FullscreenVariants down_{"effects/bloom/downsample.frag", "bloom downsample", bloomShaderDefines()};
+    FullscreenVariants up_{"effects/bloom/upsample.frag", "bloom upsample", bloomShaderDefines()};
     BloomSampler sampler_;
 };
 

@@ -13,15 +13,6 @@ float normalisedCompositeScale(float intensity, int levels) {
     return intensity / float(std::max(levels, 1));
 }
 
-BloomComposite BloomComposite::create() {
-    BloomComposite c;
-    c.pass_ = FullscreenVariants("effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines());
-    c.presented_ = FullscreenVariants("effects/bloom/composite_present.frag",
-                                      "bloom composite + output transform", bloomShaderDefines());
-    c.sampler_ = BloomSampler::create();
-    return c;
-}
-
 namespace {
 
 // The glow's filter as the shaders number it: filter 2 in shaders/effects/bloom/bloom_common.glsl is one
@@ -37,8 +28,8 @@ Pass::Body compositeBody(const FullscreenPass* pass, const BloomSampler* sampler
                          std::function<void(GLuint)> more) {
     return [=](PassContext& ctx) {
         GLuint p = pass->program();
-        glProgramUniform1f(p, bloom_uniform::offset, settings.upOffset);
-        glProgramUniform1f(p, bloom_uniform::upScale, settings.scale);
+        glProgramUniform1f(p, glsl::kBloomOffsetLocation, settings.upOffset);
+        glProgramUniform1f(p, glsl::kBloomUpScaleLocation, settings.scale);
         more(p);
         sampler->bind();
         pass->draw({ctx.native(scene), ctx.native(glow)});
@@ -52,13 +43,11 @@ DeclaredPass BloomComposite::declare(FrameGraph& graph, TextureHandle scene, Tex
                                      const BloomCompositeSettings& settings) const {
     const FullscreenPass& program =
         pass_.get({{"BLOOM_FILTERS", compositeFilters(settings)}, {"BLOOM_WIDE", 0}});
-    Pass& composite = graph.addPass("bloom composite",
-                                    compositeBody(&program, &sampler_, scene, glow, settings, [](GLuint) {}));
+    Pass& composite = program.addPass(
+        graph, "bloom composite", compositeBody(&program, &sampler_, scene, glow, settings, [](GLuint) {}));
     TextureHandle result = composite.create(
         "bloom.result", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
-    composite.read(scene).read(glow).setState(FullscreenPass::state());
-    composite.setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
-    if (!program.usable()) composite.disable("the bloom composite program did not build: " + program.error());
+    composite.read(scene).read(glow).setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
     return {composite, result};
 }
 
@@ -67,14 +56,12 @@ Pass& BloomComposite::declarePresented(FrameGraph& graph, TextureHandle scene, T
                                        float exposure) const {
     const FullscreenPass& program = presented_.get(
         {{"BLOOM_FILTERS", compositeFilters(settings)}, {"TONE_CURVE", static_cast<int>(curve)}});
-    Pass& declared = graph.addPass("bloom composite + output transform",
-                                   compositeBody(&program, &sampler_, scene, glow, settings, [=](GLuint p) {
-                                       glProgramUniform1f(p, bloom_uniform::exposure, exposure);
-                                   }));
-    declared.read(scene).read(glow).writeColor(graph.output()).setState(FullscreenPass::state());
+    Pass& declared = program.addPass(graph, "bloom composite + output transform",
+                                     compositeBody(&program, &sampler_, scene, glow, settings, [=](GLuint p) {
+                                         glProgramUniform1f(p, glsl::kBloomExposureLocation, exposure);
+                                     }));
+    declared.read(scene).read(glow).writeColor(graph.output());
     declared.setTaps(1 + bloomUpsampleTaps(compositeFilters(settings)));
-    if (!program.usable())
-        declared.disable("the fused bloom composite program did not build: " + program.error());
     return declared;
 }
 

@@ -7,7 +7,7 @@
 //   Bloom chapter: scale bloomScale (2; the exercise asks for 1)
 //   beyond:   scale intensity/N, so the glow's energy does not grow with the level count
 //
-//   BloomComposite composite = BloomComposite::create();
+//   BloomComposite composite;
 //   DeclaredPass result = composite.declare(graph, hdr.color, chain.glow(), {BloomFilters::chapter001,
 //   0.5f, 2.0f});
 #include <optional>
@@ -34,13 +34,7 @@ float normalisedCompositeScale(float intensity, int levels);  // intensity/N
 
 class BloomComposite {
 public:
-    BloomComposite() = default;  // empty: no GL yet
-    static BloomComposite create();
-
-    // Whether the Bloom chapter's composite built (other filters build when a frame first asks).
-    bool usable() const { return chapterComposite().usable(); }
-    const std::string& error() const { return chapterComposite().error(); }
-
+    // Each filter's program builds when a frame first asks for it.
     // "bloom composite": scene + scale * Up(glow) -> bloom.result.
     DeclaredPass declare(FrameGraph& graph, TextureHandle scene, TextureHandle glow,
                          const BloomCompositeSettings& settings) const;
@@ -53,11 +47,9 @@ public:
                            const BloomCompositeSettings& settings, ToneCurve curve, float exposure) const;
 
 private:
-    const FullscreenPass& chapterComposite() const {
-        return pass_.get({{"BLOOM_FILTERS", static_cast<int>(BloomFilters::chapter001)}, {"BLOOM_WIDE", 0}});
-    }
-    FullscreenVariants pass_;
-    FullscreenVariants presented_;
+    FullscreenVariants pass_{"effects/bloom/upsample.frag", "bloom composite", bloomShaderDefines()};
+    FullscreenVariants presented_{"effects/bloom/composite_present.frag",
+                                  "bloom composite + output transform", bloomShaderDefines()};
     BloomSampler sampler_;
 };
 

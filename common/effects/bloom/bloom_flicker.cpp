@@ -3,20 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/bloom/bloom_bindings.hpp"
 #include "render/texture_desc.hpp"
 
 namespace fx {
-
-namespace {
-// Uniform location in shaders/effects/bloom/flicker.frag.
-constexpr GLint kHasPrevious = 0;
-}  // namespace
-
-BloomFlicker BloomFlicker::create() {
-    BloomFlicker f;
-    f.pass_ = FullscreenPass("effects/bloom/flicker.frag", "bloom flicker");
-    return f;
-}
 
 DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D size, bool restart) {
     const int mips = fullMipChainLength(size.width, size.height);
@@ -53,8 +43,8 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
 
     const bool hasPrevious = valid_;
     const FullscreenPass* program = &pass_;
-    Pass& pass = graph.addPass("bloom flicker", [=, this](PassContext& ctx) {
-        glProgramUniform1i(program->program(), kHasPrevious, hasPrevious ? 1 : 0);
+    Pass& pass = pass_.addPass(graph, "bloom flicker", [=, this](PassContext& ctx) {
+        glProgramUniform1i(program->program(), glsl::kFlickerHasPreviousLocation, hasPrevious ? 1 : 0);
         program->draw({ctx.native(glow), ctx.native(prev)});
         // The glow's energy: the mean of this frame's copy, from its 1x1 mip (one texel read back).
         glGenerateTextureMipmap(written);
@@ -64,8 +54,7 @@ DeclaredPass BloomFlicker::declare(FrameGraph& graph, TextureHandle glow, Size2D
         valid_ = true;
         ranLastFrame_ = true;
     });
-    pass.read(glow).read(prev).writeColor(out).writeColor(next).setState(FullscreenPass::state()).setTaps(2);
-    if (!usable()) pass.disable("the flicker program did not build: " + error());
+    pass.read(glow).read(prev).writeColor(out).writeColor(next).setTaps(2);
     return {pass, out};
 }
 

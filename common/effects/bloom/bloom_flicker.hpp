@@ -8,7 +8,7 @@
 // draw. After it, the history's mips are generated and its 1x1 level (the glow's mean) is read back:
 // one texel per frame, the glow's energy, from which the frame-to-frame change in per cent follows.
 //
-//   BloomFlicker flicker = BloomFlicker::create();
+//   BloomFlicker flicker;
 //   flicker.declare(graph, chain.glow(), chain.levels[0].size, stepChanged);
 //   ImGui::Text("%.2f %%", flicker.stats().changePercent);
 #include <array>
@@ -22,12 +22,6 @@ namespace fx {
 
 class BloomFlicker {
 public:
-    BloomFlicker() = default;  // empty: no GL yet
-    static BloomFlicker create();
-
-    bool usable() const { return pass_.usable(); }
-    const std::string& error() const { return pass_.error(); }
-
     // `glow` is this frame's glow, `size` its size. `restart`: last frame's glow is no measure for this
     // one (another step, another chain), so this frame counts as a first frame.
     DeclaredPass declare(FrameGraph& graph, TextureHandle glow, Size2D size, bool restart);
@@ -45,7 +39,7 @@ public:
 private:
     void record(double energy, bool hasPrevious);
 
-    FullscreenPass pass_;
+    FullscreenPass pass_{"effects/bloom/flicker.frag", "bloom flicker"};
     std::array<gl::Texture, 2> history_;
     Size2D size_{};
     int current_ = 0;     // history_[current_] holds the last glow written

@@ -15,6 +15,7 @@
 
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/fullscreen_variants.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -28,12 +29,6 @@ struct BloomReferenceSettings {
 
 class BloomReference {
 public:
-    BloomReference() = default;  // empty: no GL yet
-    static BloomReference create();
-
-    bool usable() const { return extract_.usable() && gaussian_.usable(); }
-    std::string error() const { return extract_.usable() ? gaussian_.error() : extract_.error(); }
-
     struct Declared {
         TextureHandle bright;
         TextureHandle glow;  // bloom.reference: the summed glow, full size (invalid without levels)
@@ -43,8 +38,10 @@ public:
     Declared declare(FrameGraph& graph, TextureHandle input, const BloomReferenceSettings& settings) const;
 
 private:
-    FullscreenPass extract_;
-    FullscreenPass gaussian_;
+    // One texel of the same size (filter 2), no Karis average: the bright part exactly, per pixel.
+    FullscreenPass extract_{"effects/bloom/extract.frag", "bloom reference bright pass",
+                            bloomShaderDefines() + shaderDefines({{"BLOOM_FILTERS", 2}, {"BLOOM_KARIS", 0}})};
+    FullscreenPass gaussian_{"effects/bloom/gaussian.frag", "bloom reference Gaussian"};
 };
 
 }  // namespace fx

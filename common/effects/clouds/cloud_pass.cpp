@@ -7,25 +7,11 @@
 #include <glm/matrix.hpp>
 
 #include "base/log.hpp"
+#include "effects/clouds/clouds_bindings.hpp"
 #include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
-
-// clouds.frag
-constexpr GLint kInverseProjection = 0;
-constexpr GLint kViewToWorldRotation = 1;
-constexpr GLint kCameraPosition = 2;
-constexpr GLint kOffsets = 3;
-constexpr GLint kRangeCountStep = 4;
-constexpr GLint kThresholdPair = 5;
-constexpr GLint kCloudColour = 6;
-constexpr GLint kScales = 7;
-constexpr GLint kShadowOffset = 10;
-constexpr GLint kFrameIndex = 12;
-constexpr GLint kPlaneHeight = 13;
-constexpr GLint kTargetSize = 14;
-constexpr GLint kDepthStride = 16;
 
 // The feature bits each stage's code reads (clouds.frag): the others are left out of the program's
 // choices, so settings that draw the same picture share one program.
@@ -77,11 +63,13 @@ void setCloudCameraUniforms(GLuint prog, const CloudFrameSettings& s) {
     glm::mat4 inverseProjection = glm::inverse(s.projection);
     if (!finite(inverseProjection)) inverseProjection = glm::mat4(1.0f);
     glm::mat3 rotation = glm::transpose(glm::mat3(s.view));  // the inverse of a rotation
-    glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE, glm::value_ptr(inverseProjection));
-    glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(rotation));
-    glProgramUniform3fv(prog, kCameraPosition, 1, glm::value_ptr(s.cameraPosition));
+    glProgramUniformMatrix4fv(prog, glsl::kCloudsInverseProjectionLocation, 1, GL_FALSE,
+                              glm::value_ptr(inverseProjection));
+    glProgramUniformMatrix3fv(prog, glsl::kCloudsViewToWorldRotationLocation, 1, GL_FALSE,
+                              glm::value_ptr(rotation));
+    glProgramUniform3fv(prog, glsl::kCloudsCameraPositionLocation, 1, glm::value_ptr(s.cameraPosition));
     glm::vec4 offsets = cloudShaderOffsets(s);
-    glProgramUniform4fv(prog, kOffsets, 1, glm::value_ptr(offsets));
+    glProgramUniform4fv(prog, glsl::kCloudsOffsetsLocation, 1, glm::value_ptr(offsets));
 }
 
 ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
@@ -116,12 +104,6 @@ std::uint64_t CloudDensityTexture::bytes() const {
     return texture_ ? textureBytes(texture_.spec()) : 0;
 }
 
-CloudPass CloudPass::create() {
-    CloudPass p;
-    p.programs_ = FullscreenVariants("effects/clouds/clouds.frag", "clouds");
-    return p;
-}
-
 const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
     const int stage = int(s.stage);
     int features = 0;
@@ -133,15 +115,6 @@ const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
                           {"CLOUD_FEATURES", features},
                           {"CLOUD_DITHER", dither},
                           {"CLOUD_PREMULTIPLY", s.premultiplied ? 1 : 0}});
-}
-
-const FullscreenPass& CloudPass::fullest() const {
-    CloudFrameSettings s;
-    s.stage = CloudStage::march;
-    s.features = kMarchFeatures;
-    s.dither = CloudDither::ign;
-    s.premultiplied = true;
-    return programFor(s);
 }
 
 PassState CloudPass::state() {
@@ -182,17 +155,17 @@ void setMarchUniforms(GLuint prog, const CloudFrameSettings& s, Size2D target, c
     setCloudCameraUniforms(prog, s);
     glm::vec4 rcs = s.march.rangeCountStep();
     if (!s.march.drawn) rcs = glm::vec4(s.march.bottom, s.march.bottom, 0.0f, 0.0f);
-    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(rcs));
+    glProgramUniform4fv(prog, glsl::kCloudsRangeCountStepLocation, 1, glm::value_ptr(rcs));
     glm::vec2 th = s.march.thresholdPair();
-    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
+    glProgramUniform2fv(prog, glsl::kCloudsThresholdPairLocation, 1, glm::value_ptr(th));
     glm::vec3 colour = glm::clamp(s.color, glm::vec3(0.0f), glm::vec3(4096.0f));
-    glProgramUniform3fv(prog, kCloudColour, 1, glm::value_ptr(colour));
-    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
-    glProgramUniform1f(prog, kShadowOffset, shadow ? cloudShadowOffset(*shadow) : 0.0f);
-    glProgramUniform1i(prog, kFrameIndex, std::max(s.frameIndex, 0));
-    glProgramUniform1f(prog, kPlaneHeight, s.planeHeight);
-    glProgramUniform1i(prog, kDepthStride, std::max(s.depthStride, 1));
-    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
+    glProgramUniform3fv(prog, glsl::kCloudsColourLocation, 1, glm::value_ptr(colour));
+    glProgramUniform2fv(prog, glsl::kCloudsScalesLocation, 1, glm::value_ptr(s.scales));
+    glProgramUniform1f(prog, glsl::kCloudsShadowOffsetLocation, shadow ? cloudShadowOffset(*shadow) : 0.0f);
+    glProgramUniform1i(prog, glsl::kCloudsFrameIndexLocation, std::max(s.frameIndex, 0));
+    glProgramUniform1f(prog, glsl::kCloudsPlaneHeightLocation, s.planeHeight);
+    glProgramUniform1i(prog, glsl::kCloudsDepthStrideLocation, std::max(s.depthStride, 1));
+    glProgramUniform2f(prog, glsl::kCloudsTargetSizeLocation, float(std::max(target.width, 1)),
                        float(std::max(target.height, 1)));
 }
 
@@ -230,7 +203,8 @@ Pass& CloudPass::declare(FrameGraph& graph, const CloudInputs& inputs, const Clo
     s.premultiplied = false;
     s.depthStride = 1;
     MarchInputs m = marchInputs(inputs, s);
-    Pass& pass = graph.addPass("clouds", marchBody(&programFor(s), s, m, &density));
+    const FullscreenPass& program = programFor(s);
+    Pass& pass = program.addPass(graph, "clouds", marchBody(&program, s, m, &density));
     pass.modify(inputs.color, TextureUsage::ColorAttachment).setState(state()).setTaps(marchTaps(s, m));
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
@@ -244,11 +218,12 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
     s.premultiplied = true;
     s.depthStride = divisor;
     MarchInputs m = marchInputs(inputs, s);
-    Pass& pass = graph.addPass("clouds march", marchBody(&programFor(s), s, m, &density));
+    const FullscreenPass& program = programFor(s);
+    Pass& pass = program.addPass(graph, "clouds march", marchBody(&program, s, m, &density));
     TextureHandle layer =
         pass.create(textureName, {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
                     TextureUsage::ColorAttachment);
-    pass.setState(FullscreenPass::state()).setTaps(marchTaps(s, m));
+    pass.setTaps(marchTaps(s, m));
     if (m.depth) pass.read(inputs.depth);
     if (m.shadows) pass.read(m.shadowMap);
     return layer;

@@ -2,7 +2,7 @@
 // Ray-marched clouds (the Clouds chapter): one full-screen pass "clouds" that blends a cloud layer
 // over the scene's colour (src alpha, one minus src alpha), shaders/effects/clouds/clouds.frag.
 //
-//   CloudPass clouds = CloudPass::create();                   // Lesson::init, context current
+//   CloudPass clouds;  // its programs build when a frame first asks for them
 //   CloudDensityTexture density = CloudDensityTexture::load(layer.densityTexture.resolved);
 //   Pass& pass = clouds.declare(graph, {hdr.color, hdr.depth, &shadowMap}, frameSettings);
 //
@@ -108,14 +108,6 @@ struct CloudInputs {
 
 class CloudPass {
 public:
-    CloudPass() = default;  // empty: no GL yet
-    static CloudPass create();
-
-    // Whether the program that holds the most code builds (the march with every feature, jitter and
-    // premultiplied output); the others differ from it only by #defines.
-    bool usable() const { return fullest().usable(); }
-    const std::string& error() const { return fullest().error(); }
-
     // The program for these settings: the stage, the features that stage reads, the dither and the
     // premultiplied output are #defines (clouds.frag), one program per combination, built on first use.
     const FullscreenPass& programFor(const CloudFrameSettings& settings) const;
@@ -137,9 +129,7 @@ public:
     static PassState state();
 
 private:
-    const FullscreenPass& fullest() const;
-
-    FullscreenVariants programs_;
+    FullscreenVariants programs_{"effects/clouds/clouds.frag", "clouds"};
 };
 
 }  // namespace fx

@@ -6,19 +6,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "effects/clouds/clouds_bindings.hpp"
+
 namespace fx {
 namespace {
-
-// cloud_shadow.frag (0 to 3: the camera, set by setCloudCameraUniforms as for clouds.frag)
-constexpr GLint kRangeCountStep = 4;
-constexpr GLint kThresholdPair = 5;
-constexpr GLint kScales = 7;
-constexpr GLint kToLight = 8;
-constexpr GLint kSamples = 9;
-constexpr GLint kSigmaPerDensity = 10;
-constexpr GLint kTargetSize = 14;
-// cloud_shadow_apply.frag
-constexpr GLint kSunShare = 0;
 
 // The clouds' Beer-Lambert extinction (clouds.frag): a vertical path through 1/8 of the slab takes the
 // chapter's 0.3 per unit of density, so the shadow is as dense as the cloud looks.
@@ -33,13 +24,6 @@ glm::vec3 cloudShadowToLight(const glm::vec3& lightDirection) {
     return toLight / length;
 }
 
-CloudShadowPass CloudShadowPass::create() {
-    CloudShadowPass p;
-    p.map_ = FullscreenPass("effects/clouds/cloud_shadow.frag", "cloud shadow map");
-    p.apply_ = FullscreenPass("effects/clouds/cloud_shadow_apply.frag", "cloud shadow apply");
-    return p;
-}
-
 void CloudShadowPass::setMapUniforms(const CloudFrameSettings& s, const CloudShadowSettings& shadow,
                                      Size2D target) const {
     GLuint prog = map_.program();
@@ -47,19 +31,20 @@ void CloudShadowPass::setMapUniforms(const CloudFrameSettings& s, const CloudSha
     // No slab (cloud_march.hpp's guards): bottom == top, and the shader returns 1.
     glm::vec4 range =
         s.march.drawn ? s.march.rangeCountStep() : glm::vec4(s.march.bottom, s.march.bottom, 0, 0);
-    glProgramUniform4fv(prog, kRangeCountStep, 1, glm::value_ptr(range));
+    glProgramUniform4fv(prog, glsl::kCloudsRangeCountStepLocation, 1, glm::value_ptr(range));
     glm::vec2 th = s.march.thresholdPair();
     if (s.march.thresholdClears) th.y = 0.0f;
-    glProgramUniform2fv(prog, kThresholdPair, 1, glm::value_ptr(th));
-    glProgramUniform2fv(prog, kScales, 1, glm::value_ptr(s.scales));
+    glProgramUniform2fv(prog, glsl::kCloudsThresholdPairLocation, 1, glm::value_ptr(th));
+    glProgramUniform2fv(prog, glsl::kCloudsScalesLocation, 1, glm::value_ptr(s.scales));
     // cloudShadowToLight turns a travel direction around: hand it the direction the light travels.
     glm::vec3 toLight = cloudShadowToLight(-shadow.toLight);
-    glProgramUniform3fv(prog, kToLight, 1, glm::value_ptr(toLight));
-    glProgramUniform1i(prog, kSamples, std::clamp(shadow.samples, 0, kCloudMaxSteps));
+    glProgramUniform3fv(prog, glsl::kCloudShadowToLightLocation, 1, glm::value_ptr(toLight));
+    glProgramUniform1i(prog, glsl::kCloudShadowSamplesLocation,
+                       std::clamp(shadow.samples, 0, kCloudMaxSteps));
     float thickness = s.march.top - s.march.bottom;
     float sigma = thickness > 0.0f && std::isfinite(thickness) ? kDensityScale * 8.0f / thickness : 0.0f;
-    glProgramUniform1f(prog, kSigmaPerDensity, sigma);
-    glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
+    glProgramUniform1f(prog, glsl::kCloudShadowSigmaPerDensityLocation, sigma);
+    glProgramUniform2f(prog, glsl::kCloudsTargetSizeLocation, float(std::max(target.width, 1)),
                        float(std::max(target.height, 1)));
 }
 
@@ -69,17 +54,15 @@ TextureHandle CloudShadowPass::declareMap(FrameGraph& graph, TextureHandle depth
                                           const CloudShadowSettings& shadow) const {
     const CloudShadowPass* self = this;
     const CloudDensityTexture* densityTexture = &density;
-    Pass& pass =
-        graph.addPass("cloud shadow map", [self, clouds, shadow, depth, densityTexture](PassContext& ctx) {
-            self->setMapUniforms(clouds, shadow, ctx.targetSize());
-            self->map_.draw({densityTexture->name(), ctx.native(depth)});
-        });
+    Pass& pass = map_.addPass(graph, "cloud shadow map",
+                              [self, clouds, shadow, depth, densityTexture](PassContext& ctx) {
+                                  self->setMapUniforms(clouds, shadow, ctx.targetSize());
+                                  self->map_.draw({densityTexture->name(), ctx.native(depth)});
+                              });
     TextureHandle map = pass.create("clouds.shadow", {TextureSize::output(), TextureFormat::R16F},
                                     TextureUsage::ColorAttachment);
     // The depth, then two density taps (two scales) per sample along the sun's ray.
-    pass.read(depth)
-        .setState(FullscreenPass::state())
-        .setTaps(1 + 2 * std::clamp(shadow.samples, 0, kCloudMaxSteps));
+    pass.read(depth).setTaps(1 + 2 * std::clamp(shadow.samples, 0, kCloudMaxSteps));
     return map;
 }
 
@@ -98,10 +81,10 @@ TextureHandle CloudShadowPass::declare(FrameGraph& graph, const CloudShadowInput
     times.srcAlpha = BlendFactor::Zero;
     times.dstAlpha = BlendFactor::One;
     multiply.blendFunction = times;
-    graph
-        .addPass("cloud shadow apply",
+    apply_
+        .addPass(graph, "cloud shadow apply",
                  [apply, map, sunShare](PassContext& ctx) {
-                     glProgramUniform1f(apply->program(), kSunShare, sunShare);
+                     glProgramUniform1f(apply->program(), glsl::kCloudShadowSunShareLocation, sunShare);
                      apply->draw({ctx.native(map)});
                  })
         .read(map)

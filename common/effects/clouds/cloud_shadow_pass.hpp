@@ -7,7 +7,7 @@
 //                        the sun through the slab; the transmittance exp(-optical depth), 1 = no cloud.
 //   "cloud shadow apply" modifies scene.color with the blend dst x src: colour x (1 - sunShare x (1 - T)).
 //
-//   CloudShadowPass cloudShadow = CloudShadowPass::create();      // Lesson::init, context current
+//   CloudShadowPass cloudShadow;  // builds its programs: the context is current
 //   cloudShadow.declare(graph, {hdr.color, hdr.depth}, density, cloudSettings, {toLight, 0.7f});
 //
 // The map pass samples the depth texture without attaching it (it writes only clouds.shadow), and the
@@ -42,12 +42,6 @@ struct CloudShadowInputs {
 
 class CloudShadowPass {
 public:
-    CloudShadowPass() = default;  // empty: no GL yet
-    static CloudShadowPass create();
-
-    bool usable() const { return map_.usable() && apply_.usable(); }
-    const std::string& error() const { return map_.usable() ? apply_.error() : map_.error(); }
-
     // Declares "cloud shadow map" alone and returns "clouds.shadow" (for tests and the inspector).
     TextureHandle declareMap(FrameGraph& graph, TextureHandle depth, const CloudDensityTexture& density,
                              const CloudFrameSettings& clouds, const CloudShadowSettings& shadow) const;
@@ -60,8 +54,8 @@ private:
     void setMapUniforms(const CloudFrameSettings& clouds, const CloudShadowSettings& shadow,
                         Size2D target) const;
 
-    FullscreenPass map_;
-    FullscreenPass apply_;
+    FullscreenPass map_{"effects/clouds/cloud_shadow.frag", "cloud shadow map"};
+    FullscreenPass apply_{"effects/clouds/cloud_shadow_apply.frag", "cloud shadow apply"};
 };
 
 }  // namespace fx

@@ -7,17 +7,10 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include "effects/clouds/clouds_bindings.hpp"
+
 namespace fx {
 namespace {
-
-// cloud_accumulate.frag
-constexpr GLint kInverseProjection = 0;
-constexpr GLint kViewToWorldRotation = 1;
-constexpr GLint kPreviousFromCamera = 2;
-constexpr GLint kSlabMiddleAndEyeY = 3;
-constexpr GLint kCurrentWeight = 4;
-constexpr GLint kTargetSize = 5;
-constexpr GLint kDepthStride = 6;
 
 struct AccumulateUniforms {
     glm::mat4 inverseProjection{1.0f};
@@ -29,13 +22,6 @@ struct AccumulateUniforms {
 };
 
 }  // namespace
-
-CloudTemporal CloudTemporal::create() {
-    CloudTemporal t;
-    t.accumulate_ = FullscreenPass("effects/clouds/cloud_accumulate.frag", "clouds accumulate");
-    t.composite_ = FullscreenPass("common/copy.frag", "clouds composite");
-    return t;
-}
 
 std::uint64_t CloudTemporal::historyBytes() const {
     std::uint64_t total = 0;
@@ -97,26 +83,28 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
         const bool depth = (settings.features & cloudDepthAware) != 0;
         TextureHandle depthTexture = inputs.depth;
         const FullscreenPass* program = &accumulate_;
-        Pass& pass = graph.addPass("clouds accumulate", [program, u, layer, before, depth,
-                                                         depthTexture](PassContext& ctx) {
-            GLuint prog = program->program();
-            glProgramUniformMatrix4fv(prog, kInverseProjection, 1, GL_FALSE,
-                                      glm::value_ptr(u.inverseProjection));
-            glProgramUniformMatrix3fv(prog, kViewToWorldRotation, 1, GL_FALSE, glm::value_ptr(u.rotation));
-            glProgramUniformMatrix4fv(prog, kPreviousFromCamera, 1, GL_FALSE,
-                                      glm::value_ptr(u.previousFromCamera));
-            glProgramUniform2fv(prog, kSlabMiddleAndEyeY, 1, glm::value_ptr(u.slabMiddleAndEyeY));
-            glProgramUniform1f(prog, kCurrentWeight, u.weight);
-            Size2D target = ctx.targetSize();
-            glProgramUniform2f(prog, kTargetSize, float(std::max(target.width, 1)),
-                               float(std::max(target.height, 1)));
-            glProgramUniform1i(prog, kDepthStride, u.depthStride);
-            program->draw({ctx.native(layer), ctx.native(before), depth ? ctx.native(depthTexture) : 0});
-        });
+        Pass& pass = accumulate_.addPass(
+            graph, "clouds accumulate", [program, u, layer, before, depth, depthTexture](PassContext& ctx) {
+                GLuint prog = program->program();
+                glProgramUniformMatrix4fv(prog, glsl::kAccumulateInverseProjectionLocation, 1, GL_FALSE,
+                                          glm::value_ptr(u.inverseProjection));
+                glProgramUniformMatrix3fv(prog, glsl::kAccumulateViewToWorldRotationLocation, 1, GL_FALSE,
+                                          glm::value_ptr(u.rotation));
+                glProgramUniformMatrix4fv(prog, glsl::kAccumulatePreviousFromCameraLocation, 1, GL_FALSE,
+                                          glm::value_ptr(u.previousFromCamera));
+                glProgramUniform2fv(prog, glsl::kAccumulateSlabMiddleAndEyeYLocation, 1,
+                                    glm::value_ptr(u.slabMiddleAndEyeY));
+                glProgramUniform1f(prog, glsl::kAccumulateCurrentWeightLocation, u.weight);
+                Size2D target = ctx.targetSize();
+                glProgramUniform2f(prog, glsl::kAccumulateTargetSizeLocation,
+                                   float(std::max(target.width, 1)), float(std::max(target.height, 1)));
+                glProgramUniform1i(prog, glsl::kAccumulateDepthStrideLocation, u.depthStride);
+                program->draw({ctx.native(layer), ctx.native(before), depth ? ctx.native(depthTexture) : 0});
+            });
         result =
             pass.create("clouds.result", {TextureSize::outputFraction(1, divisor), TextureFormat::RGBA16F},
-                        TextureUsage::ColorAttachment);                                     // attachment 0
-        pass.read(layer).read(before).writeColor(after).setState(FullscreenPass::state());  // attachment 1
+                        TextureUsage::ColorAttachment);   // attachment 0
+        pass.read(layer).read(before).writeColor(after);  // attachment 1
         // This frame's texel and its 3x3 neighbourhood (the clamp), the history where it was, the depth.
         pass.setTaps(depth ? 12 : 11);
         if (depth) pass.read(inputs.depth);
@@ -130,8 +118,8 @@ void CloudTemporal::declare(FrameGraph& graph, const CloudPass& march, const Clo
     PassState over = FullscreenPass::state();
     over.blend = true;
     over.blendFunction = BlendFunction::premultipliedAlpha();
-    graph
-        .addPass("clouds composite",
+    composite_
+        .addPass(graph, "clouds composite",
                  [composite, result](PassContext& ctx) { composite->draw({ctx.native(result)}); })
         .read(result)
         .modify(inputs.color, TextureUsage::ColorAttachment)

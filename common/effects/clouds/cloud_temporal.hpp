@@ -31,11 +31,6 @@ struct CloudTemporalOptions {
 
 class CloudTemporal {
 public:
-    CloudTemporal() = default;  // empty: no GL yet
-    static CloudTemporal create();
-
-    bool usable() const { return accumulate_.usable() && composite_.usable(); }
-
     // Declares the march, the accumulation (when asked for) and the composite over inputs.color.
     // `settingsKey` changes whenever anything but the jitter changes (the average restarts).
     // `scene`, the density texture and `march` must outlive the frame's execution.
@@ -48,8 +43,8 @@ public:
     std::uint64_t historyBytes() const;
 
 private:
-    FullscreenPass accumulate_;
-    FullscreenPass composite_;
+    FullscreenPass accumulate_{"effects/clouds/cloud_accumulate.frag", "clouds accumulate"};
+    FullscreenPass composite_{"common/copy.frag", "clouds composite"};
     gl::Texture history_[2];
     int newest_ = 0;  // history_[newest_] holds last frame's result
     int frames_ = 0;

@@ -6,18 +6,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 
 namespace fx {
 namespace {
-
-// shaders/effects/deferred/deferred_lighting.frag and point_lights.glsl
-constexpr GLint kLightCountLocation = 20;
-constexpr GLint kInverseViewProjectionLocation = 21;
-constexpr GLint kHdrMaxLocation = 22;
-constexpr GLint kSkyLocation = 23;
-constexpr GLint kTilesXLocation = 24;
-constexpr GLint kWorldOffsetLocation = 25;
 
 // Texture lookups of gbuffer_read.glsl for one pixel: albedo, depth, normal, and the stored position
 // where the layout has one (compact rebuilds it from depth).
@@ -26,12 +19,6 @@ int gbufferTaps(const GBufferTargets& g) {
 }
 
 }  // namespace
-
-DeferredLighting DeferredLighting::create(float shininess) {
-    DeferredLighting lighting;
-    lighting.shininess_ = shininess;
-    return lighting;
-}
 
 const FullscreenPass& DeferredLighting::pass(GBufferLayout layout, bool tiled) const {
     const int n = static_cast<int>(layout);
@@ -54,36 +41,35 @@ TextureHandle DeferredLighting::declare(FrameGraph& graph, const Scene& scene, c
     const FullscreenPass* fullscreen = &pass(g.layout, tiles.has_value());
     const PointLightBuffer* buffer = &lights;
     const std::optional<CulledTiles> culled = tiles;
-    Pass& pass =
-        graph.addPass("deferred lighting", [fullscreen, buffer, &scene, g, shadow, culled](PassContext& ctx) {
+    Pass& pass = fullscreen->addPass(
+        graph, "deferred lighting", [fullscreen, buffer, &scene, g, shadow, culled](PassContext& ctx) {
             GLuint program = fullscreen->program();
             CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
             SceneMeshes::setFrameUniforms(program, scene, camera);
             glm::mat4 inverse = glm::inverse(camera.viewProjection);
-            glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+            glProgramUniformMatrix4fv(program, glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                       glm::value_ptr(inverse));
-            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+            glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
             auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-            glProgramUniform3f(program, kSkyLocation, sky(scene.background.r), sky(scene.background.g),
+            glProgramUniform3f(program, glsl::kSkyLocation, sky(scene.background.r), sky(scene.background.g),
                                sky(scene.background.b));
-            glProgramUniform3fv(program, kWorldOffsetLocation, 1, glm::value_ptr(g.worldOffset));
-            glProgramUniform1i(program, kLightCountLocation, buffer->count());
+            glProgramUniform3fv(program, glsl::kWorldOffsetLocation, 1, glm::value_ptr(g.worldOffset));
+            glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
             buffer->bind();
             if (culled) {
-                glProgramUniform1i(program, kTilesXLocation, culled->tilesX);
-                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::tileLights, culled->listBuffer);
+                glProgramUniform1i(program, glsl::kTilesXLocation, culled->tilesX);
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kTileLightsBinding, culled->listBuffer);
             }
             GLuint shadowTexture = shadow.pass && shadow.lookup.enabled ? ctx.native(shadow.map) : 0;
             ShadowMap::bindForLookup(program, shadowTexture, shadow.lookup);
             GLuint position = g.position ? ctx.native(*g.position) : 0;
             fullscreen->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
         });
-    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth);
     if (g.position) pass.read(*g.position);
     if (shadow.pass) pass.read(shadow.map);
     if (tiles) pass.read(tiles->heat);
     pass.setTaps(gbufferTaps(g) + (shadow.pass ? shadowLookupTaps(shadow.lookup) : 0));
-    if (!fullscreen->usable()) pass.disable("the lighting program did not build: " + fullscreen->error());
     return pass.create("deferred.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -97,19 +83,18 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
                                 cat("#define LAYOUT ", n, "\n"));
     const FullscreenPass* error = &*errorPasses_[n];
     const TextureHandle reference = *g.referencePosition;
-    Pass& pass = graph.addPass("position error", [error, &scene, g, reference](PassContext& ctx) {
+    Pass& pass = error->addPass(graph, "position error", [error, &scene, g, reference](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
-        glProgramUniformMatrix4fv(error->program(), kInverseViewProjectionLocation, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(error->program(), glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverse));
         GLuint position = g.position ? ctx.native(*g.position) : 0;
         error->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth),
                      ctx.native(reference)});
     });
-    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference);
     pass.setTaps(gbufferTaps(g));  // the normal is not read; the reference position is
     if (g.position) pass.read(*g.position);
-    if (!error->usable()) pass.disable("the position-error program did not build: " + error->error());
     return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
@@ -122,21 +107,20 @@ void DeferredLighting::declareViews(FrameGraph& graph, const Scene& scene, const
                                cat("gbuffer views (", toString(g.layout), ")"),
                                cat("#define LAYOUT ", n, "\n"));
     const FullscreenPass* views = &*viewPasses_[n];
-    Pass& pass = graph.addPass("gbuffer views", [views, &scene, g, viewRange](PassContext& ctx) {
+    Pass& pass = views->addPass(graph, "gbuffer views", [views, &scene, g, viewRange](PassContext& ctx) {
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, ctx.targetSize());
         glm::mat4 inverse = glm::inverse(camera.viewProjection);
         GLuint program = views->program();
-        glProgramUniformMatrix4fv(program, kInverseViewProjectionLocation, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(program, glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverse));
-        glProgramUniform3fv(program, 0, 1, glm::value_ptr(camera.position));
-        glProgramUniform1f(program, 1, viewRange);
+        glProgramUniform3fv(program, glsl::kViewsEyeLocation, 1, glm::value_ptr(camera.position));
+        glProgramUniform1f(program, glsl::kViewsRangeLocation, viewRange);
         GLuint position = g.position ? ctx.native(*g.position) : 0;
         views->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth)});
     });
-    pass.read(g.albedo).read(g.normal).read(g.depth).setState(FullscreenPass::state());
+    pass.read(g.albedo).read(g.normal).read(g.depth);
     if (g.position) pass.read(*g.position);
     pass.setTaps(gbufferTaps(g));
-    if (!views->usable()) pass.disable("the G-buffer view program did not build: " + views->error());
     const TextureDesc rgba8{TextureSize::output(), TextureFormat::RGBA8, 1};
     pass.create("gbuffer.view_normal", rgba8, TextureUsage::ColorAttachment);
     pass.create("gbuffer.view_depth", rgba8, TextureUsage::ColorAttachment);

@@ -5,7 +5,7 @@
 // ambient light and every point light (or, after tiled culling, only the ones listed for the pixel's
 // tile), into "deferred.color" (RGBA16F, clamped to [0, kSceneHdrMax], NaN to 0).
 //
-//   DeferredLighting lighting = DeferredLighting::create();                  // Lesson::init
+//   DeferredLighting lighting;  // its programs build when a frame first asks for them
 //   TextureHandle lit = lighting.declare(graph, scene, g, lights, shadow, nullptr);
 #include <optional>
 
@@ -29,10 +29,9 @@ inline constexpr float kDefaultShininess = 40.0f;
 
 class DeferredLighting {
 public:
-    DeferredLighting() = default;  // empty: no GL yet
     // `shininess`: the point lights' specular exponent (40, the lecture's; the hard cases test 0 and
     // huge ones: pow(0, 0) is undefined in GLSL, so the shader takes an exponent of 0 as a flat 1).
-    static DeferredLighting create(float shininess = kDefaultShininess);
+    explicit DeferredLighting(float shininess = kDefaultShininess) : shininess_(shininess) {}
 
     // Declares "deferred lighting". `scene`, `lights` must outlive the frame's execution; `shadow` may
     // have no pass (no shadow-casting light): the sun then lights without shadow.

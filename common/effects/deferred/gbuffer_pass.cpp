@@ -5,6 +5,7 @@
 #include "base/log.hpp"
 #include "effects/deferred/output_check.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 
@@ -13,10 +14,6 @@ CameraMatrices offsetCameraMatrices(const Camera& camera, glm::vec3 offset, Size
     moved.position += offset;
     moved.target += offset;
     return cameraMatrices(moved, size.width, size.height);
-}
-
-GBufferPass GBufferPass::create() {
-    return GBufferPass();
 }
 
 const gl::ReloadableProgram& GBufferPass::program(GBufferLayout layout, bool referencePosition) const {
@@ -39,17 +36,17 @@ const gl::ReloadableProgram& GBufferPass::program(GBufferLayout layout, bool ref
     return *slot;
 }
 
-GBufferTargets GBufferPass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                    double seconds, const GBufferOptions& options) const {
+GBufferTargets GBufferPass::declare(FrameGraph& graph, const World& world,
+                                    const GBufferOptions& options) const {
     const gl::ReloadableProgram* prog = &program(options.layout, options.referencePosition);
     const glm::vec3 offset = options.worldOffset;
-    Pass& pass = graph.addPass("gbuffer", [prog, &scene, &meshes, seconds, offset](PassContext& ctx) {
-        CameraMatrices camera = offsetCameraMatrices(scene.camera, offset, ctx.targetSize());
-        SceneMeshes::setFrameUniforms(prog->name(), scene, camera);
+    Pass& pass = graph.addPass("gbuffer", [prog, world, offset](PassContext& ctx) {
+        CameraMatrices camera = offsetCameraMatrices(world.scene().camera, offset, ctx.targetSize());
+        SceneMeshes::setFrameUniforms(prog->name(), world.scene(), camera);
         checkOutputsOnce(prog->name(), "gbuffer");
         MeshDrawOptions draw;
         draw.placement = glm::translate(glm::mat4(1.0f), offset);
-        meshes.draw(prog->name(), scene, seconds, draw);
+        world.draw(prog->name(), draw);
     });
     GBufferFormats f = gbufferFormats(options.layout);
     GBufferTargets t;
@@ -69,10 +66,9 @@ GBufferTargets GBufferPass::declare(FrameGraph& graph, const Scene& scene, const
                         TextureUsage::ColorAttachment);
     t.depth =
         pass.create("gbuffer.depth", {TextureSize::output(), f.depth, 1}, TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
-    state.clearColor = ClearColor{0, 0, 0, 0};  // alpha 0 in albedo: no surface
-    pass.setState(state).setTaps(1);            // the base colour
-    if (!prog->usable()) pass.disable("the G-buffer program did not build: " + prog->error());
+    PassState state = hdrSceneState(world.scene());
+    state.clearColor = ClearColor{0, 0, 0, 0};         // alpha 0 in albedo: no surface
+    runsWith(pass.setState(state).setTaps(1), *prog);  // the base colour
     return t;
 }
 

@@ -2,8 +2,8 @@
 // The G-buffer pass of deferred shading: the scene's geometry once, no light, into several targets at
 // once (gbuffer_layout.hpp says which). The lighting pass then reads them under each pixel.
 //
-//   GBufferPass gbuffer = GBufferPass::create();                     // Lesson::init
-//   GBufferTargets g = gbuffer.declare(graph, scene, meshes, t, {GBufferLayout::compact});
+//   GBufferPass gbuffer;  // its programs build when a frame first asks for a layout
+//   GBufferTargets g = gbuffer.declare(graph, frame.world, {GBufferLayout::compact});
 //
 // A world offset moves the whole scene and its camera away from the origin by that many metres, so
 // a lesson can show what storing world positions in half floats costs at 1,000 and 10,000 m.
@@ -11,7 +11,7 @@
 
 #include "effects/deferred/gbuffer_layout.hpp"
 #include "effects/scene/camera_matrices.hpp"
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 
@@ -40,12 +40,8 @@ CameraMatrices offsetCameraMatrices(const Camera& camera, glm::vec3 offset, Size
 
 class GBufferPass {
 public:
-    GBufferPass() = default;  // empty: no GL yet
-    static GBufferPass create();
-
-    // Declares "gbuffer". `scene` and `meshes` must outlive the frame's execution.
-    GBufferTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                           const GBufferOptions& options) const;
+    // Declares "gbuffer": `world` at its time.
+    GBufferTargets declare(FrameGraph& graph, const World& world, const GBufferOptions& options) const;
 
     // The program for a layout (built the first time it is asked for).
     const gl::ReloadableProgram& program(GBufferLayout layout, bool referencePosition) const;

@@ -2,52 +2,38 @@
 
 #include <algorithm>
 
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/deferred/output_check.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "gl/debug_output.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
 
-constexpr GLint kSkyLocation = 0;  // mrt_composite.frag
-
 void setSky(GLuint program, const Scene& scene) {
     auto sky = [](float c) { return std::clamp(c, 0.0f, kSceneHdrMax); };
-    glProgramUniform3f(program, kSkyLocation, sky(scene.background.r), sky(scene.background.g),
+    glProgramUniform3f(program, glsl::kMrtSkyLocation, sky(scene.background.r), sky(scene.background.g),
                        sky(scene.background.b));
 }
 
 }  // namespace
 
 void setLectureLight(GLuint program) {
-    glProgramUniform3f(program, uniform_location::lightColor, 1.0f, 1.0f, 1.0f);
-    glProgramUniform3f(program, uniform_location::ambient, 0.2f, 0.2f, 0.2f);
+    glProgramUniform3f(program, glsl::kLightColorLocation, 1.0f, 1.0f, 1.0f);
+    glProgramUniform3f(program, glsl::kAmbientLocation, 0.2f, 0.2f, 0.2f);
 }
 
-LectureMrt LectureMrt::create() {
-    LectureMrt m;
-    m.phong_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
-                                      "effects/deferred/phong.frag",
-                                      {},
-                                      "#define THREE_TARGETS 1",
-                                      "mrt (diffuse, specular, ambient)"});
-    m.composite_ = FullscreenPass("effects/deferred/mrt_composite.frag", "mrt composite");
-    m.sharpen_ = FullscreenPass("effects/deferred/mrt_composite.frag", "mrt sharpen", "#define SHARPEN 1");
-    m.range_ = FullscreenPass("effects/deferred/sharpen_range.frag", "sharpen range");
-    return m;
-}
-
-MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                               double seconds, MrtOrder order, MrtStats* stats) const {
+MrtTargets LectureMrt::declare(FrameGraph& graph, const World& world, MrtOrder order, MrtStats* stats) const {
     const gl::ReloadableProgram* program = &phong_;
-    Pass& pass = graph.addPass("mrt", [program, &scene, &meshes, seconds, order, stats](PassContext& ctx) {
+    Pass& pass = graph.addPass("mrt", [program, world, order, stats](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        SceneMeshes::setFrameUniforms(program->name(), scene, camera);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
+        SceneMeshes::setFrameUniforms(program->name(), world.scene(), camera);
         setLectureLight(program->name());
         checkOutputsOnce(program->name(), "mrt");
-        meshes.draw(program->name(), scene, seconds);
+        world.draw(program->name());
         if (order == MrtOrder::slides) {
             // The slides' step 6, while their framebuffer object is still bound.
             gl::ExpectedErrorScope expected("the slides restore GL_BACK with the FBO still bound");
@@ -69,32 +55,31 @@ MrtTargets LectureMrt::declare(FrameGraph& graph, const Scene& scene, const Scen
     t.ambient = pass.create("mrt.ambient", rgba8, TextureUsage::ColorAttachment);
     t.depth = pass.create("mrt.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                           TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
-    state.clearColor = ClearColor{0, 0, 0, 0};  // every target; the composite adds the sky once
-    pass.setState(state).setTaps(2);            // base colour and emissive textures
-    if (!phong_.usable()) pass.disable("the MRT program did not build: " + phong_.error());
+    PassState state = hdrSceneState(world.scene());
+    state.clearColor = ClearColor{0, 0, 0, 0};          // every target; the composite adds the sky once
+    runsWith(pass.setState(state).setTaps(2), phong_);  // base colour and emissive textures
     return t;
 }
 
 TextureHandle LectureMrt::declareComposite(FrameGraph& graph, const Scene& scene, const MrtTargets& t) const {
     const FullscreenPass* composite = &composite_;
-    Pass& pass = graph.addPass("mrt composite", [composite, &scene, t](PassContext& ctx) {
+    Pass& pass = composite_.addPass(graph, "mrt composite", [composite, &scene, t](PassContext& ctx) {
         setSky(composite->program(), scene);
         composite->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state()).setTaps(3);
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setTaps(3);
     return pass.create("mrt.sum", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }
 
 SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene, const MrtTargets& t) const {
     const FullscreenPass* sharpen = &sharpen_;
-    Pass& pass = graph.addPass("mrt sharpen", [sharpen, &scene, t](PassContext& ctx) {
+    Pass& pass = sharpen_.addPass(graph, "mrt sharpen", [sharpen, &scene, t](PassContext& ctx) {
         setSky(sharpen->program(), scene);
         sharpen->draw({ctx.native(t.diffuse), ctx.native(t.specular), ctx.native(t.ambient)});
     });
     // The diffuse term and its four neighbours (identity minus the Laplacian), then specular and ambient.
-    pass.read(t.diffuse).read(t.specular).read(t.ambient).setState(FullscreenPass::state()).setTaps(7);
+    pass.read(t.diffuse).read(t.specular).read(t.ambient).setTaps(7);
     SharpenTargets s;
     s.clipped = pass.create("sharpen.rgba8", {TextureSize::output(), TextureFormat::RGBA8, 1},
                             TextureUsage::ColorAttachment);
@@ -105,10 +90,10 @@ SharpenTargets LectureMrt::declareSharpen(FrameGraph& graph, const Scene& scene,
 
 TextureHandle LectureMrt::declareRangeView(FrameGraph& graph, const SharpenTargets& s) const {
     const FullscreenPass* range = &range_;
-    Pass& pass = graph.addPass("sharpen range", [range, s](PassContext& ctx) {
+    Pass& pass = range_.addPass(graph, "sharpen range", [range, s](PassContext& ctx) {
         range->draw({ctx.native(s.clipped), ctx.native(s.kept)});
     });
-    pass.read(s.clipped).read(s.kept).setState(FullscreenPass::state()).setTaps(2);
+    pass.read(s.clipped).read(s.kept).setTaps(2);
     return pass.create("sharpen.range", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

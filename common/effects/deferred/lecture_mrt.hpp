@@ -13,7 +13,7 @@
 #include <cstdint>
 
 #include "effects/post/fullscreen_pass.hpp"
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 
@@ -46,15 +46,9 @@ struct MrtStats {
 
 class LectureMrt {
 public:
-    LectureMrt() = default;  // empty: no GL yet
-    static LectureMrt create();
-
-    bool usable() const { return phong_.usable() && composite_.usable() && sharpen_.usable(); }
-
     // "mrt": the scene's Phong terms into three targets (cleared to 0) plus depth. `stats` must outlive
     // the frame's execution (it may be null).
-    MrtTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                       MrtOrder order, MrtStats* stats) const;
+    MrtTargets declare(FrameGraph& graph, const World& world, MrtOrder order, MrtStats* stats) const;
     // "mrt composite": D + S + A, and the sky where no surface is, into "mrt.sum" (RGBA16F).
     TextureHandle declareComposite(FrameGraph& graph, const Scene& scene, const MrtTargets& targets) const;
     // "mrt sharpen": the slides' variant, into both sharpen targets at once (two colour attachments).
@@ -64,10 +58,14 @@ public:
     TextureHandle declareRangeView(FrameGraph& graph, const SharpenTargets& sharpened) const;
 
 private:
-    gl::ReloadableProgram phong_;
-    FullscreenPass composite_;
-    FullscreenPass sharpen_;
-    FullscreenPass range_;
+    gl::ReloadableProgram phong_{{"effects/deferred/lit_scene.vert",
+                                  "effects/deferred/phong.frag",
+                                  {},
+                                  "#define THREE_TARGETS 1",
+                                  "mrt (diffuse, specular, ambient)"}};
+    FullscreenPass composite_{"effects/deferred/mrt_composite.frag", "mrt composite"};
+    FullscreenPass sharpen_{"effects/deferred/mrt_composite.frag", "mrt sharpen", "#define SHARPEN 1"};
+    FullscreenPass range_{"effects/deferred/sharpen_range.frag", "sharpen range"};
 };
 
 }  // namespace fx

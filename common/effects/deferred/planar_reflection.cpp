@@ -5,19 +5,15 @@
 #include <glm/matrix.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/deferred_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "geometry/mesh_data.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
 
-// shaders/effects/deferred/mirrored_scene.vert, reflection.frag and mirror_surface.frag
-constexpr GLint kClipPlaneLocation = 26;
-constexpr GLint kHdrMaxLocation = 22;
-constexpr GLint kLightCountLocation = 20;
-constexpr GLint kStrengthLocation = 27;
-constexpr GLint kOutputSizeLocation = 28;
 // Clip a millimetre above the plane: the mirror itself (and a floor in its plane) stay out of it.
 constexpr float kClipAbove = 0.001f;
 
@@ -48,81 +44,68 @@ glm::mat4 reflectionMatrix(glm::vec4 plane) {
     return r;
 }
 
-PlanarReflection PlanarReflection::create(const Scene& scene) {
-    PlanarReflection p;
-    p.reflect_ = gl::ReloadableProgram({"effects/deferred/mirrored_scene.vert",
-                                        "effects/deferred/reflection.frag",
-                                        {},
-                                        {},
-                                        "planar reflection (mirrored camera)"});
-    p.surface_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
-                                        "effects/deferred/mirror_surface.frag",
-                                        {},
-                                        {},
-                                        "mirror surface"});
+PlanarReflection::PlanarReflection(const Scene& scene) {
     if (auto mirror = findMirror(scene, 0.0)) {
         const Primitive& plane = *scene.objects[mirror->object].primitive;
-        p.mirrorMesh_ = GpuMesh(makePlane(plane.planeSize.x, plane.planeSize.y), "mirror surface mesh");
+        mirrorMesh_ = GpuMesh(makePlane(plane.planeSize.x, plane.planeSize.y), "mirror surface mesh");
     }
-    return p;
 }
 
-TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                        double seconds, const PointLightBuffer& lights,
+TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
                                         const GBufferTargets& g, TextureHandle lit, int fraction) const {
-    std::optional<MirrorPlane> mirror = findMirror(scene, seconds);
+    std::optional<MirrorPlane> mirror = findMirror(world.scene(), world.seconds());
     const gl::ReloadableProgram* reflect = &reflect_;
     const PointLightBuffer* buffer = &lights;
     const MirrorPlane m = mirror.value_or(MirrorPlane{});
-    Pass& pass =
-        graph.addPass("planar reflection", [reflect, buffer, &scene, &meshes, seconds, m](PassContext& ctx) {
-            // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
-            // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
-            // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
-            Size2D size = ctx.outputSize();
-            CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-            glm::mat4 r = reflectionMatrix(m.plane);
-            camera.view = camera.view * r;
-            camera.viewProjection = camera.projection * camera.view;
-            camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
-            GLuint program = reflect->name();
-            SceneMeshes::setFrameUniforms(program, scene, camera);
-            glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
-            glProgramUniform4fv(program, kClipPlaneLocation, 1, glm::value_ptr(clip));
-            glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
-            glProgramUniform1i(program, kLightCountLocation, buffer->count());
-            buffer->bind();
-            glEnable(GL_CLIP_DISTANCE0);
-            meshes.draw(program, scene, seconds);
-            glDisable(GL_CLIP_DISTANCE0);
-        });
+    Pass& pass = graph.addPass("planar reflection", [reflect, buffer, world, m](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
+        // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
+        // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
+        Size2D size = ctx.outputSize();
+        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        glm::mat4 r = reflectionMatrix(m.plane);
+        camera.view = camera.view * r;
+        camera.viewProjection = camera.projection * camera.view;
+        camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
+        GLuint program = reflect->name();
+        SceneMeshes::setFrameUniforms(program, scene, camera);
+        glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
+        glProgramUniform4fv(program, glsl::kClipPlaneLocation, 1, glm::value_ptr(clip));
+        glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
+        glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
+        buffer->bind();
+        glEnable(GL_CLIP_DISTANCE0);
+        world.draw(program);
+        glDisable(GL_CLIP_DISTANCE0);
+    });
     const TextureSize at = TextureSize::outputFraction(1, std::clamp(fraction, 1, 8));
     TextureHandle color =
         pass.create("reflection.color", {at, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
     pass.setState(state).setTaps(1);   // the base colour; the lights come from a buffer
     needs(pass, SceneFeature::mirror);
-    if (!reflect_.usable()) pass.disable("the reflection program did not build: " + reflect_.error());
+    runsWith(pass, reflect_);
 
     const gl::ReloadableProgram* surface = &surface_;
     const GpuMesh* mesh = &mirrorMesh_;
-    Pass& over =
-        graph.addPass("mirror surface", [surface, mesh, &scene, seconds, m, color, g](PassContext& ctx) {
-            Size2D size = ctx.targetSize();
-            CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
-            GLuint program = surface->name();
-            SceneMeshes::setFrameUniforms(program, scene, camera);
-            glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], seconds);
-            glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
-            glProgramUniform1f(program, kStrengthLocation, m.strength);
-            glProgramUniform2f(program, kOutputSizeLocation, float(size.width), float(size.height));
-            glBindTextureUnit(0, ctx.native(color));
-            glBindTextureUnit(1, ctx.native(g.depth));
-            glUseProgram(program);
-            mesh->draw();
-        });
+    Pass& over = graph.addPass("mirror surface", [surface, mesh, world, m, color, g](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        Size2D size = ctx.targetSize();
+        CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
+        GLuint program = surface->name();
+        SceneMeshes::setFrameUniforms(program, scene, camera);
+        glm::mat4 model = SceneMeshes::modelAt(scene.objects[m.object], world.seconds());
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniform1f(program, glsl::kMirrorStrengthLocation, m.strength);
+        glProgramUniform2f(program, glsl::kMirrorOutputSizeLocation, float(size.width), float(size.height));
+        glBindTextureUnit(glsl::kMirrorReflectionBinding, ctx.native(color));
+        glBindTextureUnit(glsl::kMirrorSceneDepthBinding, ctx.native(g.depth));
+        glUseProgram(program);
+        mesh->draw();
+    });
     // The depth test is done in the shader against the G-buffer's depth, which the lighting pass also
     // samples: as a depth attachment here it would be modified after the lighting pass read it.
     over.read(color)
@@ -138,7 +121,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const Scene& scene, c
     over.setTaps(2);  // the G-buffer's depth, then the reflection
     needs(over, SceneFeature::mirror);
     if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
-    if (!surface_.usable()) over.disable("the mirror-surface program did not build: " + surface_.error());
+    runsWith(over, surface_);
     return color;
 }
 

@@ -17,6 +17,7 @@
 #include "effects/deferred/gbuffer_pass.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/scene/gpu_mesh.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 
 namespace fx {
@@ -34,20 +35,25 @@ glm::mat4 reflectionMatrix(glm::vec4 plane);
 
 class PlanarReflection {
 public:
-    PlanarReflection() = default;  // empty: no GL yet
-    static PlanarReflection create(const Scene& scene);
-
-    bool usable() const { return reflect_.usable() && surface_.usable(); }
+    // Builds the programs, and the mirror's mesh when `scene` has a mirror.
+    explicit PlanarReflection(const Scene& scene);
 
     // "planar reflection" at `fraction` of the output (1, 2 or 4: full, half, quarter size), then
     // "mirror surface" over `lit` (modified in place). Returns reflection.color.
-    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                          const PointLightBuffer& lights, const GBufferTargets& g, TextureHandle lit,
-                          int fraction) const;
+    TextureHandle declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
+                          const GBufferTargets& g, TextureHandle lit, int fraction) const;
 
 private:
-    gl::ReloadableProgram reflect_;
-    gl::ReloadableProgram surface_;
+    gl::ReloadableProgram reflect_{{"effects/deferred/mirrored_scene.vert",
+                                    "effects/deferred/reflection.frag",
+                                    {},
+                                    {},
+                                    "planar reflection (mirrored camera)"}};
+    gl::ReloadableProgram surface_{{"effects/deferred/lit_scene.vert",
+                                    "effects/deferred/mirror_surface.frag",
+                                    {},
+                                    {},
+                                    "mirror surface"}};
     GpuMesh mirrorMesh_;
 };
 

@@ -24,12 +24,6 @@ std::vector<GpuPointLight> gpuPointLights(const std::vector<Light>& lights, int 
     return out;
 }
 
-PointLightBuffer PointLightBuffer::create() {
-    PointLightBuffer b;
-    b.buffer_ = gl::createBuffer("deferred.point_lights");
-    return b;
-}
-
 void PointLightBuffer::upload(const std::vector<GpuPointLight>& lights) {
     count_ = int(lights.size());
     // A buffer of size 0 cannot be bound: keep room for one light even when there is none.
@@ -42,7 +36,7 @@ void PointLightBuffer::upload(const std::vector<GpuPointLight>& lights) {
 }
 
 void PointLightBuffer::bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::pointLights, buffer_.name());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kPointLightsBinding, buffer_.name());
 }
 
 }  // namespace fx

@@ -1,5 +1,5 @@
 #pragma once
-// The point lights the deferred passes read, in a storage buffer at binding 5
+// The point lights the deferred passes read, in a storage buffer at binding glsl::kPointLightsBinding
 // (shaders/effects/deferred/point_lights.glsl): per light its world position and radius, and its
 // colour times intensity. Directional and spot lights are not in it (the sun is lit with its shadow
 // separately; spot lights are not part of this lesson).
@@ -7,15 +7,11 @@
 
 #include <glm/vec4.hpp>
 
+#include "effects/deferred/deferred_bindings.hpp"
 #include "gl/object.hpp"
 #include "scene/scene_light.hpp"
 
 namespace fx {
-
-namespace buffer_binding {
-inline constexpr GLuint pointLights = 5;
-inline constexpr GLuint tileLights = 6;
-}  // namespace buffer_binding
 
 struct GpuPointLight {
     glm::vec4 positionRadius;
@@ -30,9 +26,6 @@ std::vector<GpuPointLight> gpuPointLights(const std::vector<Light>& lights, int 
 
 class PointLightBuffer {
 public:
-    PointLightBuffer() = default;  // empty: no GL yet
-    static PointLightBuffer create();
-
     // Replaces the buffer's content (it grows when needed).
     void upload(const std::vector<GpuPointLight>& lights);
     void bind() const;  // to binding 5
@@ -40,7 +33,7 @@ public:
     GLuint name() const { return buffer_.name(); }
 
 private:
-    gl::BufferName buffer_;
+    gl::BufferName buffer_ = gl::createBuffer("deferred.point_lights");
     int count_ = 0;
     std::size_t capacity_ = 0;
 };

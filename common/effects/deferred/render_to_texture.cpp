@@ -6,6 +6,7 @@
 #include "effects/deferred/lecture_mrt.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
@@ -64,32 +65,20 @@ std::string describeAttachments(GLuint fbo) {
     return text;
 }
 
-RenderToTexture RenderToTexture::create() {
-    RenderToTexture r;
-    r.program_ = gl::ReloadableProgram({"effects/deferred/lit_scene.vert",
-                                        "effects/deferred/phong.frag",
-                                        {},
-                                        {},
-                                        "render to texture (Phong, summed)"});
-    r.color_ = gl::Texture::create2D(TextureFormat::RGBA8, kRttSize, kRttSize, 1, "rtt.color");
-    r.depthTexture_ = gl::Texture::create2D(TextureFormat::Depth32F, kRttSize, kRttSize, 1, "rtt.depth");
-    r.depthRenderbuffer_ = gl::createRenderbuffer("rtt.depth (renderbuffer)");
-    glNamedRenderbufferStorage(r.depthRenderbuffer_.name(), GL_DEPTH_COMPONENT24, kRttSize, kRttSize);
+RenderToTexture::RenderToTexture() {
+    glNamedRenderbufferStorage(depthRenderbuffer_.name(), GL_DEPTH_COMPONENT24, kRttSize, kRttSize);
 
-    r.withRenderbuffer_ = gl::Framebuffer("rtt: colour texture + depth renderbuffer");
-    r.withRenderbuffer_.attachColor(0, r.color_);
-    glNamedFramebufferRenderbuffer(r.withRenderbuffer_.name(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                   r.depthRenderbuffer_.name());
-    r.withRenderbuffer_.setDrawBuffers(1);
+    withRenderbuffer_.attachColor(0, color_);
+    glNamedFramebufferRenderbuffer(withRenderbuffer_.name(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                   depthRenderbuffer_.name());
+    withRenderbuffer_.setDrawBuffers(1);
 
-    r.withTexture_ = gl::Framebuffer("rtt: colour texture + depth texture");
-    r.withTexture_.attachColor(0, r.color_);
-    r.withTexture_.attachDepth(r.depthTexture_);
-    r.withTexture_.setDrawBuffers(1);
-    for (const gl::Framebuffer* fbo : {&r.withRenderbuffer_, &r.withTexture_}) {
+    withTexture_.attachColor(0, color_);
+    withTexture_.attachDepth(depthTexture_);
+    withTexture_.setDrawBuffers(1);
+    for (const gl::Framebuffer* fbo : {&withRenderbuffer_, &withTexture_}) {
         if (Status s = fbo->checkComplete(); !s) log::error(s.error());
     }
-    return r;
 }
 
 GLuint RenderToTexture::framebuffer(RttDepth depth) const {
@@ -100,12 +89,12 @@ std::string RenderToTexture::attachmentsText(RttDepth depth) const {
     return describeAttachments(framebuffer(depth));
 }
 
-TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                       double seconds, RttDepth depth) const {
+TextureHandle RenderToTexture::declare(FrameGraph& graph, const World& world, RttDepth depth) const {
     TextureHandle color = graph.importTexture("rtt.color", color_.spec(), color_.name());
     const gl::ReloadableProgram* program = &program_;
     const GLuint fbo = framebuffer(depth);
-    Pass& pass = graph.addPass("render to texture", [program, fbo, &scene, &meshes, seconds](PassContext&) {
+    Pass& pass = graph.addPass("render to texture", [program, fbo, world](PassContext&) {
+        const Scene& scene = world.scene();
         // The graph bound a framebuffer for rtt.color; the recipe's own one (with its depth) replaces it.
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, kRttSize, kRttSize);  // at most the FBO's size, whatever the window's
@@ -119,7 +108,7 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
         CameraMatrices camera = cameraMatrices(scene.camera, kRttSize, kRttSize);
         SceneMeshes::setFrameUniforms(program->name(), scene, camera);
         setLectureLight(program->name());
-        meshes.draw(program->name(), scene, seconds);
+        world.draw(program->name());
     });
     pass.writeColor(color);
     if (depth == RttDepth::texture) {
@@ -127,11 +116,10 @@ TextureHandle RenderToTexture::declare(FrameGraph& graph, const Scene& scene, co
         TextureHandle d = graph.importTexture("rtt.depth", depthTexture_.spec(), depthTexture_.name());
         pass.writeDepth(d);
     }
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.clearColor.reset();  // cleared in the body, on the recipe's framebuffer
     state.clearDepth.reset();
-    pass.setState(state).setTaps(2);  // base colour and emissive textures (phong.frag)
-    if (!program_.usable()) pass.disable("the render-to-texture program did not build: " + program_.error());
+    runsWith(pass.setState(state).setTaps(2), program_);  // base colour and emissive textures (phong.frag)
     return color;
 }
 

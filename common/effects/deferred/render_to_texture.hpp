@@ -7,11 +7,11 @@
 // recipe, so its colour (and depth) textures enter the graph as imported textures that the pass
 // "render to texture" writes. attachmentsText() is what GL says is attached, asked back from GL.
 //
-//   RenderToTexture rtt = RenderToTexture::create();             // Lesson::init
-//   TextureHandle color = rtt.declare(graph, scene, meshes, t, RttDepth::renderbuffer);
+//   RenderToTexture rtt;  // builds the textures, the renderbuffer and both framebuffers
+//   TextureHandle color = rtt.declare(graph, frame.world, RttDepth::renderbuffer);
 #include <string>
 
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
 #include "gl/texture.hpp"
@@ -25,16 +25,12 @@ inline constexpr int kRttSize = 512;  // the slides' compile-time width and heig
 
 class RenderToTexture {
 public:
-    RenderToTexture() = default;  // empty: no GL yet
-    static RenderToTexture create();
-
-    bool usable() const { return program_.usable(); }
+    RenderToTexture();
 
     // Declares "render to texture", which draws the scene lit (the lecture's Phong terms, summed) into
     // "rtt.color" (RGBA8, 512 x 512, imported) with the chosen depth attachment. With a depth texture,
     // "rtt.depth" (Depth32F) is imported too, so the inspector can show it. Returns rtt.color.
-    TextureHandle declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                          RttDepth depth) const;
+    TextureHandle declare(FrameGraph& graph, const World& world, RttDepth depth) const;
 
     // "colour 0: texture rtt.color RGBA8 512x512; depth: renderbuffer GL_DEPTH_COMPONENT24", read
     // back from GL with glGetNamedFramebufferAttachmentParameteriv.
@@ -42,12 +38,17 @@ public:
     GLuint framebuffer(RttDepth depth) const;
 
 private:
-    gl::ReloadableProgram program_;
-    gl::Texture color_;
-    gl::Texture depthTexture_;
-    gl::RenderbufferName depthRenderbuffer_;
-    gl::Framebuffer withRenderbuffer_;
-    gl::Framebuffer withTexture_;
+    gl::ReloadableProgram program_{{"effects/deferred/lit_scene.vert",
+                                    "effects/deferred/phong.frag",
+                                    {},
+                                    {},
+                                    "render to texture (Phong, summed)"}};
+    gl::Texture color_ = gl::Texture::create2D(TextureFormat::RGBA8, kRttSize, kRttSize, 1, "rtt.color");
+    gl::Texture depthTexture_ =
+        gl::Texture::create2D(TextureFormat::Depth32F, kRttSize, kRttSize, 1, "rtt.depth");
+    gl::RenderbufferName depthRenderbuffer_ = gl::createRenderbuffer("rtt.depth (renderbuffer)");
+    gl::Framebuffer withRenderbuffer_{"rtt: colour texture + depth renderbuffer"};
+    gl::Framebuffer withTexture_{"rtt: colour texture + depth texture"};
 };
 
 // What framebuffer `fbo` has attached, asked back from GL: one entry per colour attachment 0..7 that

@@ -3,33 +3,14 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "effects/deferred/deferred_bindings.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
-namespace {
-
-// tiled_culling.comp and heat_map.frag
-constexpr GLint kLightCountLocation = 20;
-constexpr GLint kViewLocation = 30;
-constexpr GLint kInverseProjectionLocation = 31;
-
-}  // namespace
 
 Size2D tileCount(Size2D size) {
     return {std::max(1, (size.width + kTileSize - 1) / kTileSize),
             std::max(1, (size.height + kTileSize - 1) / kTileSize)};
-}
-
-TiledCulling TiledCulling::create() {
-    TiledCulling c;
-    c.program_ = gl::ReloadableProgram(
-        {{},
-         {},
-         "effects/deferred/tiled_culling.comp",
-         cat("#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ", kMaxTileLights, "\n"),
-         "light culling (tiles)"});
-    c.heatMap_ = FullscreenPass("effects/deferred/heat_map.frag", "cull heat map");
-    c.list_ = gl::createBuffer("cull.tile_lights");
-    return c;
 }
 
 CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
@@ -52,15 +33,16 @@ CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const G
         }
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
         GLuint program = self->program_.name();
-        glProgramUniformMatrix4fv(program, kViewLocation, 1, GL_FALSE, glm::value_ptr(camera.view));
+        glProgramUniformMatrix4fv(program, glsl::kCullViewLocation, 1, GL_FALSE, glm::value_ptr(camera.view));
         glm::mat4 inverseProjection = glm::inverse(camera.projection);
-        glProgramUniformMatrix4fv(program, kInverseProjectionLocation, 1, GL_FALSE,
+        glProgramUniformMatrix4fv(program, glsl::kCullInverseProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverseProjection));
-        glProgramUniform1i(program, kLightCountLocation, buffer->count());
+        glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
         buffer->bind();
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, buffer_binding::tileLights, self->list_.name());
-        glBindTextureUnit(3, ctx.native(g.depth));
-        glBindImageTexture(0, ctx.native(out.heat), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kTileLightsBinding, self->list_.name());
+        glBindTextureUnit(glsl::kCullDepthBinding, ctx.native(g.depth));
+        glBindImageTexture(glsl::kCullHeatBinding, ctx.native(out.heat), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                           GL_R32F);
         glUseProgram(program);
         glDispatchCompute(GLuint(n.width), GLuint(n.height), 1);
         // The lighting pass reads the list as a storage buffer and the heat map as a texture.
@@ -70,20 +52,20 @@ CulledTiles TiledCulling::declare(FrameGraph& graph, const Scene& scene, const G
                                                       kTileSize);  // a tile's depths per heat texel
     needs(pass, SceneFeature::manyLights);
     lastPass_ = &pass;
-    if (!program_.usable()) pass.disable("the culling program did not build: " + program_.error());
+    runsWith(pass, program_);
     return out;
 }
 
 TextureHandle TiledCulling::declareHeatMap(FrameGraph& graph, const CulledTiles& tiles, TextureHandle lit,
                                            int maxLights) const {
     const FullscreenPass* heat = &heatMap_;
-    Pass& pass = graph.addPass("cull heat map", [heat, tiles, lit, maxLights](PassContext& ctx) {
-        glProgramUniform1f(heat->program(), 0, float(std::max(maxLights, 1)));
-        glProgramUniform1i(heat->program(), 1, kTileSize);
-        glProgramUniform1f(heat->program(), 2, float(kMaxTileLights));
+    Pass& pass = heatMap_.addPass(graph, "cull heat map", [heat, tiles, lit, maxLights](PassContext& ctx) {
+        glProgramUniform1f(heat->program(), glsl::kHeatMaxLightsLocation, float(std::max(maxLights, 1)));
+        glProgramUniform1i(heat->program(), glsl::kHeatTileSizeLocation, kTileSize);
+        glProgramUniform1f(heat->program(), glsl::kHeatCapacityLocation, float(kMaxTileLights));
         heat->draw({ctx.native(tiles.heat), ctx.native(lit)});
     });
-    pass.read(tiles.heat).read(lit).setState(FullscreenPass::state()).setTaps(2);
+    pass.read(tiles.heat).read(lit).setTaps(2);
     return pass.create("cull.heatmap", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                        TextureUsage::ColorAttachment);
 }

@@ -8,6 +8,7 @@
 // Culling costs a pass of its own: with a handful of lights it is slower than evaluating them all, so
 // it needs the scene feature manyLights (more than kManyLightsAbove lights) and is not called for
 // otherwise; the pass table says why.
+#include "base/log.hpp"
 #include "effects/deferred/deferred_lighting.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "gl/program.hpp"
@@ -19,11 +20,6 @@ Size2D tileCount(Size2D size);
 
 class TiledCulling {
 public:
-    TiledCulling() = default;  // empty: no GL yet
-    static TiledCulling create();
-
-    bool usable() const { return program_.usable(); }
-
     // Declares "light culling": reads `g.depth`, writes "cull.heat" and the tile list buffer. It needs
     // SceneFeature::manyLights; lastPass() is it, for the lesson to ask whether it will run.
     CulledTiles declare(FrameGraph& graph, const Scene& scene, const GBufferTargets& g,
@@ -35,9 +31,14 @@ public:
                                  int maxLights) const;
 
 private:
-    gl::ReloadableProgram program_;
-    FullscreenPass heatMap_;
-    gl::BufferName list_;
+    gl::ReloadableProgram program_{
+        {{},
+         {},
+         "effects/deferred/tiled_culling.comp",
+         cat("#define TILE_SIZE ", kTileSize, "\n#define MAX_TILE_LIGHTS ", kMaxTileLights, "\n"),
+         "light culling (tiles)"}};
+    FullscreenPass heatMap_{"effects/deferred/heat_map.frag", "cull heat map"};
+    gl::BufferName list_ = gl::createBuffer("cull.tile_lights");
     mutable std::size_t listBytes_ = 0;
     mutable Pass* lastPass_ = nullptr;
 };

@@ -5,33 +5,23 @@
 #include <utility>
 
 #include "base/log.hpp"
+#include "effects/dof/dof_bindings.hpp"
 
 namespace fx {
 namespace {
 
-// shaders/effects/dof/coc.glsl (only in the programs that include it and use it: setting a location
-// a program lacks is a GL error).
-constexpr GLint kDepthRangeLocation = 10;
-constexpr GLint kLensLocation = 11;
-
+// coc.glsl's uniforms, set only in the programs that have them (dof_bindings.glsl).
 void setLens(GLuint program, const DofLensUniforms& l) {
-    glProgramUniform2f(program, kDepthRangeLocation, l.nearM, l.farM);
-    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+    glProgramUniform2f(program, glsl::kDofDepthRangeLocation, l.nearM, l.farM);
+    glProgramUniform4f(program, glsl::kDofLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
                        l.radiusPerDiameter);
 }
 
 // The radius part of coc.glsl only: heat map, chapter, prefilter and composite use blurRadiusPixels
 // and the clamp, not the depth range.
 void setRadius(GLuint program, const DofLensUniforms& l) {
-    glProgramUniform4f(program, kLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
+    glProgramUniform4f(program, glsl::kDofLensLocation, l.inverseFocusM, l.scalePixelsM, l.maxCocPixels,
                        l.radiusPerDiameter);
-}
-
-Pass& fullscreen(FrameGraph& graph, const char* name, const FullscreenPass& program, Pass::Body body) {
-    Pass& pass = graph.addPass(name, std::move(body));
-    pass.setState(FullscreenPass::state());
-    if (!program.usable()) pass.disable(cat("the ", name, " program did not build: ", program.error()));
-    return pass;
 }
 
 }  // namespace
@@ -48,31 +38,6 @@ DofKernel dofKernelForTaps(int taps) {
     return {16, 2, 5};
 }
 
-DepthOfField DepthOfField::create() {
-    DepthOfField d;
-    d.coc_ = FullscreenPass("effects/dof/coc.frag", "dof coc");
-    d.heat_ = FullscreenPass("effects/dof/heat_map.frag", "dof heat map");
-    d.naive_ = FullscreenPass("effects/dof/naive.frag", "dof naive");
-    d.chapter_ = FullscreenPass("effects/dof/chapter.frag", "dof chapter");
-    d.prefilter_ = FullscreenPass("effects/dof/prefilter.frag", "dof prefilter");
-    d.tileMax_ = FullscreenPass("effects/dof/tile_max.frag", "dof tile max");
-    d.gather_ = FullscreenVariants("effects/dof/gather.frag", "dof gather");
-    d.composite_ = FullscreenPass("effects/dof/composite.frag", "dof composite");
-    return d;
-}
-
-bool DepthOfField::usable() const {
-    return error().empty();
-}
-
-std::string DepthOfField::error() const {
-    // The default gather (near/far) stands for both: the two differ only by a #define.
-    for (const FullscreenPass* p :
-         {&coc_, &heat_, &naive_, &chapter_, &prefilter_, &tileMax_, &gatherProgram(true), &composite_})
-        if (!p->usable()) return p->error();
-    return {};
-}
-
 const FullscreenPass& DepthOfField::gatherProgram(bool separateFields) const {
     return gather_.get({{"DOF_SEPARATE", separateFields ? 1 : 0}});
 }
@@ -80,7 +45,7 @@ const FullscreenPass& DepthOfField::gatherProgram(bool separateFields) const {
 DeclaredPass DepthOfField::declareCoc(FrameGraph& graph, TextureHandle depth,
                                       const DofLensUniforms& lens) const {
     const FullscreenPass* program = &coc_;
-    Pass& pass = fullscreen(graph, "dof coc", coc_, [program, depth, lens](PassContext& ctx) {
+    Pass& pass = coc_.addPass(graph, "dof coc", [program, depth, lens](PassContext& ctx) {
         setLens(program->program(), lens);
         program->draw({ctx.native(depth)});
     });
@@ -95,7 +60,7 @@ static DeclaredPass declareFromCoc(FrameGraph& graph, const char* name, const ch
                                    const FullscreenPass& program, TextureHandle color, TextureHandle coc,
                                    const DofLensUniforms& lens, double taps) {
     const FullscreenPass* p = &program;
-    Pass& pass = fullscreen(graph, name, program, [p, color, coc, lens](PassContext& ctx) {
+    Pass& pass = program.addPass(graph, name, [p, color, coc, lens](PassContext& ctx) {
         setRadius(p->program(), lens);
         p->draw({ctx.native(color), ctx.native(coc)});
     });
@@ -113,8 +78,8 @@ DeclaredPass DepthOfField::declareHeatMap(FrameGraph& graph, TextureHandle color
 DeclaredPass DepthOfField::declareNaive(FrameGraph& graph, TextureHandle color, TextureHandle depth,
                                         const NaiveDofSettings& s) const {
     const FullscreenPass* program = &naive_;
-    Pass& pass = fullscreen(graph, "dof naive", naive_, [program, color, depth, s](PassContext& ctx) {
-        glProgramUniform2f(program->program(), 0, s.sharpDepth, s.scale);
+    Pass& pass = naive_.addPass(graph, "dof naive", [program, color, depth, s](PassContext& ctx) {
+        glProgramUniform2f(program->program(), glsl::kDofNaiveLocation, s.sharpDepth, s.scale);
         program->draw({ctx.native(color), ctx.native(depth)});
     });
     TextureHandle out = pass.create("dof.naive", {TextureSize::output(), TextureFormat::RGBA16F, 1},
@@ -138,20 +103,20 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     const TextureSize gatherSize = TextureSize::outputFraction(1, scale);
 
     const FullscreenPass* prefilter = &prefilter_;
-    Pass& pre = fullscreen(graph, "dof prefilter", prefilter_,
-                           [prefilter, color, coc, lens, scale](PassContext& ctx) {
-                               setRadius(prefilter->program(), lens);
-                               glProgramUniform1i(prefilter->program(), 0, scale);
-                               prefilter->draw({ctx.native(color), ctx.native(coc)});
-                           });
+    Pass& pre =
+        prefilter_.addPass(graph, "dof prefilter", [prefilter, color, coc, lens, scale](PassContext& ctx) {
+            setRadius(prefilter->program(), lens);
+            glProgramUniform1i(prefilter->program(), glsl::kDofPrefilterScaleLocation, scale);
+            prefilter->draw({ctx.native(color), ctx.native(coc)});
+        });
     g.prefiltered =
         pre.create("dof.prefiltered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     pre.read(color).read(coc).setTaps(2 * scale * scale);  // colour and CoC of every full-size texel under it
 
     const FullscreenPass* tileMax = &tileMax_;
     TextureHandle prefiltered = g.prefiltered;
-    Pass& tiles = fullscreen(graph, "dof tile max", tileMax_, [tileMax, prefiltered, tile](PassContext& ctx) {
-        glProgramUniform1i(tileMax->program(), 0, tile);
+    Pass& tiles = tileMax_.addPass(graph, "dof tile max", [tileMax, prefiltered, tile](PassContext& ctx) {
+        glProgramUniform1i(tileMax->program(), glsl::kDofTilePixelsLocation, tile);
         tileMax->draw({ctx.native(prefiltered)});
     });
     g.tiles = tiles.create("dof.tiles",
@@ -166,18 +131,18 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
     // The clamp as a radius in gather texels bounds the kernel and how many tiles it looks across.
     const float maxRadius = lens.maxCocPixels * lens.radiusPerDiameter / float(scale);
     TextureHandle tileTexture = g.tiles;
-    Pass& gath =
-        fullscreen(graph, "dof gather", gatherPass,
-                   [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
-                       GLuint p = gather->program();
-                       glProgramUniform1i(p, 0, kernel.rings);
-                       glProgramUniform1i(p, 1, kernel.tapsPerRing);
-                       glProgramUniform1i(p, 3, tile);
-                       glProgramUniform1f(p, 4, std::max(maxRadius, 0.0f));
-                       glProgramUniform1f(p, 5, std::max(s.highlight, 0.0f));
-                       glProgramUniform1i(p, 6, scale);
-                       gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
-                   });
+    Pass& gath = gatherPass.addPass(
+        graph, "dof gather",
+        [gather, prefiltered, tileTexture, kernel, s, tile, maxRadius, scale](PassContext& ctx) {
+            GLuint p = gather->program();
+            glProgramUniform1i(p, glsl::kDofRingsLocation, kernel.rings);
+            glProgramUniform1i(p, glsl::kDofTapsPerRingLocation, kernel.tapsPerRing);
+            glProgramUniform1i(p, glsl::kDofGatherTilePixelsLocation, tile);
+            glProgramUniform1f(p, glsl::kDofMaxRadiusLocation, std::max(maxRadius, 0.0f));
+            glProgramUniform1f(p, glsl::kDofHighlightLocation, std::max(s.highlight, 0.0f));
+            glProgramUniform1i(p, glsl::kDofGatherScaleLocation, scale);
+            gather->draw({ctx.native(prefiltered), ctx.native(tileTexture)});
+        });
     g.gathered =
         gath.create("dof.gathered", {gatherSize, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     // The centre, the tiles within the clamp's reach (their largest CoC), then the kernel's rings.
@@ -186,11 +151,11 @@ DepthOfField::Gather DepthOfField::declareGather(FrameGraph& graph, TextureHandl
 
     const FullscreenPass* composite = &composite_;
     TextureHandle gathered = g.gathered;
-    Pass& comp = fullscreen(graph, "dof composite", composite_,
-                            [composite, color, coc, gathered, lens](PassContext& ctx) {
-                                setRadius(composite->program(), lens);
-                                composite->draw({ctx.native(color), ctx.native(coc), ctx.native(gathered)});
-                            });
+    Pass& comp =
+        composite_.addPass(graph, "dof composite", [composite, color, coc, gathered, lens](PassContext& ctx) {
+            setRadius(composite->program(), lens);
+            composite->draw({ctx.native(color), ctx.native(coc), ctx.native(gathered)});
+        });
     g.result = comp.create("dof.result", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                            TextureUsage::ColorAttachment);
     comp.read(color).read(coc).read(g.gathered).setTaps(3);

@@ -56,12 +56,6 @@ inline constexpr int kDofTileFullPixels = 16;
 
 class DepthOfField {
 public:
-    DepthOfField() = default;  // empty: no GL yet
-    static DepthOfField create();
-
-    bool usable() const;
-    std::string error() const;
-
     // "dof coc": depth -> dof.coc, the signed CoC diameter in pixels.
     DeclaredPass declareCoc(FrameGraph& graph, TextureHandle depth, const DofLensUniforms& lens) const;
     // "dof heat map": the CoC as a picture over the scene in grey.
@@ -85,8 +79,14 @@ private:
     // The gather with near/far separation on or off (DOF_SEPARATE), built into the program.
     const FullscreenPass& gatherProgram(bool separateFields) const;
 
-    FullscreenPass coc_, heat_, naive_, chapter_, prefilter_, tileMax_, composite_;
-    FullscreenVariants gather_;
+    FullscreenPass coc_{"effects/dof/coc.frag", "dof coc"};
+    FullscreenPass heat_{"effects/dof/heat_map.frag", "dof heat map"};
+    FullscreenPass naive_{"effects/dof/naive.frag", "dof naive"};
+    FullscreenPass chapter_{"effects/dof/chapter.frag", "dof chapter"};
+    FullscreenPass prefilter_{"effects/dof/prefilter.frag", "dof prefilter"};
+    FullscreenPass tileMax_{"effects/dof/tile_max.frag", "dof tile max"};
+    FullscreenVariants gather_{"effects/dof/gather.frag", "dof gather"};
+    FullscreenPass composite_{"effects/dof/composite.frag", "dof composite"};
 };
 
 }  // namespace fx

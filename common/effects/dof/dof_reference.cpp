@@ -5,16 +5,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "effects/dof/dof_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/texture.hpp"
 #include "render_gl/gl_state.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
-
-namespace {
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene/scene_hdr.frag
-}
 
 // The scene's colour and depth for one aperture sample, at the target's size.
 struct DofReference::Scratch {
@@ -65,54 +63,46 @@ float referenceApertureRadiusM(float scalePixelsM, float radiusPerDiameter, floa
     return scalePixelsM * radiusPerDiameter / focalPixels;
 }
 
-DofReference DofReference::create() {
-    DofReference r;
-    r.scene_ = gl::ReloadableProgram(
-        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "dof reference scene"});
-    r.accumulate_ = FullscreenPass("effects/dof/accumulate.frag", "dof reference accumulate");
-    r.scratch_ = std::make_shared<Scratch>();
-    return r;
-}
+DofReference::DofReference() : scratch_(std::make_shared<Scratch>()) {}
 
-DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                   double seconds, const DofReferenceSettings& s,
+DeclaredPass DofReference::declare(FrameGraph& graph, const World& world, const DofReferenceSettings& s,
                                    std::optional<TextureHandle> into) const {
     const gl::ReloadableProgram* program = &scene_;
     const FullscreenPass* accumulate = &accumulate_;
     std::shared_ptr<Scratch> scratch = scratch_;
-    Pass& pass = graph.addPass(
-        "dof reference", [program, accumulate, scratch, &scene, &meshes, seconds, s](PassContext& ctx) {
-            GLint target = 0;
-            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-            const Size2D size = ctx.targetSize();
-            scratch->ensure(size);
-            const CameraMatrices base = cameraMatrices(s.camera, size.width, size.height);
-            const int n = std::max(s.samples, 1);
-            PassState accumulateState = FullscreenPass::state();
-            accumulateState.blend = true;
-            accumulateState.blendFunction = BlendFunction::additive();
-            const ClearColor sky = *hdrSceneState(scene).clearColor;
-            const float one = 1.0f;
-            const int first = std::clamp(s.firstSample, 0, n);
-            const int last = s.sampleCount > 0 ? std::min(first + s.sampleCount, n) : n;
-            for (int i = first; i < last; ++i) {
-                glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
-                CameraMatrices camera =
-                    jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
-                glBindFramebuffer(GL_FRAMEBUFFER, scratch->framebuffer.name());
-                applyGlState(hdrSceneState(scene), size);
-                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
-                glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
-                SceneMeshes::setFrameUniforms(program->name(), scene, camera);
-                glProgramUniform1f(program->name(), kHdrMaxLocation, kSceneHdrMax);
-                meshes.draw(program->name(), scene, seconds);
+    Pass& pass = graph.addPass("dof reference", [program, accumulate, scratch, world, s](PassContext& ctx) {
+        const Scene& scene = world.scene();
+        GLint target = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+        const Size2D size = ctx.targetSize();
+        scratch->ensure(size);
+        const CameraMatrices base = cameraMatrices(s.camera, size.width, size.height);
+        const int n = std::max(s.samples, 1);
+        PassState accumulateState = FullscreenPass::state();
+        accumulateState.blend = true;
+        accumulateState.blendFunction = BlendFunction::additive();
+        const ClearColor sky = *hdrSceneState(scene).clearColor;
+        const float one = 1.0f;
+        const int first = std::clamp(s.firstSample, 0, n);
+        const int last = s.sampleCount > 0 ? std::min(first + s.sampleCount, n) : n;
+        for (int i = first; i < last; ++i) {
+            glm::vec2 offset = apertureSample(i, n) * s.apertureRadiusM;
+            CameraMatrices camera =
+                jitteredCamera(base, s.camera.fovYDegrees, s.camera.near, s.camera.far, offset, s.focusM);
+            glBindFramebuffer(GL_FRAMEBUFFER, scratch->framebuffer.name());
+            applyGlState(hdrSceneState(scene), size);
+            glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_COLOR, 0, sky.data());
+            glClearNamedFramebufferfv(scratch->framebuffer.name(), GL_DEPTH, 0, &one);
+            SceneMeshes::setFrameUniforms(program->name(), scene, camera);
+            glProgramUniform1f(program->name(), glsl::kHdrMaxLocation, kSceneHdrMax);
+            world.draw(program->name());
 
-                glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
-                applyGlState(accumulateState, size);
-                glProgramUniform1f(accumulate->program(), 0, 1.0f / float(n));
-                accumulate->draw({scratch->color.name()});
-            }
-        });
+            glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+            applyGlState(accumulateState, size);
+            glProgramUniform1f(accumulate->program(), glsl::kDofAccumulateWeightLocation, 1.0f / float(n));
+            accumulate->draw({scratch->color.name()});
+        }
+    });
     TextureHandle out = into
                             ? *into
                             : pass.create("dof.reference", {TextureSize::output(), TextureFormat::RGBA32F, 1},
@@ -128,8 +118,8 @@ DeclaredPass DofReference::declare(FrameGraph& graph, const Scene& scene, const 
     const int drawn = s.sampleCount > 0
                           ? std::min(s.sampleCount, samples - std::clamp(s.firstSample, 0, samples))
                           : samples;
-    pass.setState(state).setTaps(3.0 * std::max(drawn, 1));
-    if (!usable()) pass.disable("the dof reference programs did not build: " + error());
+    runsWith(pass.setState(state).setTaps(3.0 * std::max(drawn, 1)), scene_);
+    runsWith(pass, accumulate_.reloadable());
     return {pass, out};
 }
 

@@ -15,7 +15,7 @@
 
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/scene/world.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -47,22 +47,18 @@ struct DofReferenceSettings {
 
 class DofReference {
 public:
-    DofReference() = default;  // empty: no GL yet
-    static DofReference create();
-
-    bool usable() const { return scene_.usable() && accumulate_.usable(); }
-    std::string error() const { return scene_.usable() ? accumulate_.error() : scene_.error(); }
-
-    // `scene` and `meshes` must outlive the frame's execution. `into`: add the samples into this texture
-    // (kept from frame to frame, RGBA32F; cleared first when firstSample is 0) instead of a new
-    // dof.reference, so that a reference spread over frames sums its samples in the same order.
-    DeclaredPass declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                         const DofReferenceSettings& settings, std::optional<TextureHandle> into = {}) const;
+    DofReference();  // in the .cpp, where Scratch is complete
+    // `world` must outlive the frame's execution. `into`: add the samples into this texture (kept from
+    // frame to frame, RGBA32F; cleared first when firstSample is 0) instead of a new dof.reference, so
+    // that a reference spread over frames sums its samples in the same order.
+    DeclaredPass declare(FrameGraph& graph, const World& world, const DofReferenceSettings& settings,
+                         std::optional<TextureHandle> into = {}) const;
 
 private:
     struct Scratch;
-    gl::ReloadableProgram scene_;
-    FullscreenPass accumulate_;
+    gl::ReloadableProgram scene_{
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "dof reference scene"}};
+    FullscreenPass accumulate_{"effects/dof/accumulate.frag", "dof reference accumulate"};
     std::shared_ptr<Scratch> scratch_;
 };
 

@@ -23,11 +23,10 @@ struct GpuParticleStats {
 
 class GpuParticles {
 public:
-    GpuParticles() = default;  // empty: no GL
-    // Buffers for `system`'s pool (every slot free), and the two compute programs.
-    static GpuParticles create(const ParticleSystem& system);
+    // Buffers for `system`'s pool (every slot free), and the compute programs. simulate() does nothing
+    // while a program has never built (the runner shows its error).
+    explicit GpuParticles(const ParticleSystem& system);
 
-    bool usable() const { return simulate_.usable() && compact_.usable() && static_cast<bool>(pool_); }
     std::uint32_t capacity() const { return capacity_; }
     std::uint64_t bytes() const;
 
@@ -49,9 +48,11 @@ public:
     std::array<std::uint32_t, 4> readDrawCommand() const;
 
 private:
-    gl::ReloadableProgram simulate_;
-    gl::ReloadableProgram compact_;
-    gl::ReloadableProgram poolView_;
+    bool runnable() const { return simulate_.usable() && compact_.usable(); }
+
+    gl::ReloadableProgram simulate_{{{}, {}, "effects/particles/simulate.comp", {}, "particles: simulate"}};
+    gl::ReloadableProgram compact_{{{}, {}, "effects/particles/compact.comp", {}, "particles: compact"}};
+    gl::ReloadableProgram poolView_{{{}, {}, "effects/particles/pool_view.comp", {}, "particles: pool view"}};
     gl::BufferName pool_, live_, command_, stats_;
     std::uint32_t capacity_ = 0;
 };

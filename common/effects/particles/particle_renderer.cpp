@@ -5,17 +5,14 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "base/log.hpp"
+#include "effects/particles/particles_bindings.hpp"
+#include "effects/scene/scene_bindings.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/texture_image.hpp"
 
 namespace fx {
 namespace {
 
-// Locations in particle.vert and particle.frag. The one-particle uniforms exist only in the program
-// that draws from uniforms, the fade's only in the programs that fade: GL refuses a location the
-// program does not have, so bind() sets each only where the program has it.
-constexpr GLint kView = 0, kProjection = 1, kOneOriginAge = 3, kOneVelocityLife = 4, kOneExtra = 5,
-                kHdrMax = 11, kSoftDistance = 12, kNearFar = 13, kDepthTexelsPerPixel = 14;
 constexpr const char* kSourceNames[] = {"instanced", "live list", "one per draw"};
 
 bool softFade(const ParticleDrawSettings& s) {
@@ -33,19 +30,15 @@ void ensureBuffer(gl::BufferName& buffer, std::uint64_t& capacity, std::uint64_t
 
 }  // namespace
 
-ParticleRenderer ParticleRenderer::create() {
-    ParticleRenderer r;
-    r.noVertices_ = gl::createVertexArray("particles.no_vertices");
-    r.dot_ = gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite");
+ParticleRenderer::ParticleRenderer()
+    : noVertices_(gl::createVertexArray("particles.no_vertices")),
+      dot_(gl::Texture::create2D(TextureFormat::RGBA8, 1, 1, 1, "particles.no_sprite")) {
     const unsigned char white[4] = {255, 255, 255, 255};
-    glTextureSubImage2D(r.dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
-    (void)r.program(Source::uniforms, ParticleDrawSettings{});  // the chapter's: shows a broken shader now
-    return r;
+    glTextureSubImage2D(dot_.name(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    (void)program(Source::uniforms, ParticleDrawSettings{});  // the chapter's: shows a broken shader now
 }
 
 const gl::ReloadableProgram& ParticleRenderer::program(Source source, const ParticleDrawSettings& s) const {
-    static const gl::ReloadableProgram kNone;
-    if (!noVertices_) return kNone;  // before create(): no GL
     const int sourceNumber = static_cast<int>(source);
     const bool soft = softFade(s);
     std::optional<gl::ReloadableProgram>& slot =
@@ -67,20 +60,6 @@ int ParticleRenderer::programsBuilt() const {
     int built = 0;
     for (const auto& slot : programs_) built += slot ? 1 : 0;
     return built;
-}
-
-bool ParticleRenderer::usable() const {
-    if (!noVertices_) return false;
-    for (const auto& slot : programs_)
-        if (slot && !slot->usable()) return false;
-    return true;
-}
-
-const std::string& ParticleRenderer::error() const {
-    static const std::string kNoError;
-    for (const auto& slot : programs_)
-        if (slot && !slot->error().empty()) return slot->error();
-    return kNoError;
 }
 
 Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
@@ -111,23 +90,28 @@ void ParticleRenderer::setEmitters(const std::vector<GpuEmitter>& emitters) {
                              emitters.data());
 }
 
+// The locations are particles_bindings.glsl's. The one-particle uniforms exist only in the program that
+// draws from uniforms, the fade's only in the programs that fade: GL refuses a location the program does
+// not have, so each is set only where the program has it.
 bool ParticleRenderer::bind(const gl::ReloadableProgram& program, const ParticleDrawSettings& s) const {
     if (!program.usable() || !emitters_) return false;
     const GLuint p = program.name();
-    glProgramUniformMatrix4fv(p, kView, 1, GL_FALSE, glm::value_ptr(s.view));
-    glProgramUniformMatrix4fv(p, kProjection, 1, GL_FALSE, glm::value_ptr(s.projection));
-    glProgramUniform1f(p, kHdrMax, s.hdrMax);
+    glProgramUniformMatrix4fv(p, glsl::kParticleViewLocation, 1, GL_FALSE, glm::value_ptr(s.view));
+    glProgramUniformMatrix4fv(p, glsl::kParticleProjectionLocation, 1, GL_FALSE,
+                              glm::value_ptr(s.projection));
+    glProgramUniform1f(p, glsl::kHdrMaxLocation, s.hdrMax);
     const bool soft = softFade(s);
     if (soft) {
-        glProgramUniform1f(p, kSoftDistance, s.softDistance);
-        glProgramUniform2f(p, kNearFar, s.nearPlane, s.farPlane);
-        glProgramUniform2f(p, kDepthTexelsPerPixel, s.depthTexelsPerPixel.x, s.depthTexelsPerPixel.y);
+        glProgramUniform1f(p, glsl::kParticleSoftDistanceLocation, s.softDistance);
+        glProgramUniform2f(p, glsl::kParticleNearFarLocation, s.nearPlane, s.farPlane);
+        glProgramUniform2f(p, glsl::kParticleDepthTexelsPerPixelLocation, s.depthTexelsPerPixel.x,
+                           s.depthTexelsPerPixel.y);
     }
     glUseProgram(p);
     glBindVertexArray(noVertices_.name());
-    const GLuint textures[2] = {sprite_ ? sprite_.name() : dot_.name(), soft ? s.sceneDepth : dot_.name()};
-    glBindTextures(0, 2, textures);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, emitters_.name());
+    glBindTextureUnit(glsl::kParticleSpriteBinding, sprite_ ? sprite_.name() : dot_.name());
+    glBindTextureUnit(glsl::kParticleSceneDepthBinding, soft ? s.sceneDepth : dot_.name());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kParticleEmittersBinding, emitters_.name());
     return true;
 }
 
@@ -139,9 +123,10 @@ int ParticleRenderer::drawObjects(const std::vector<GpuParticle>& particles,
     const GLuint p = program.name();
     // The chapter's way: every particle is an object with its own uniforms and its own draw call.
     for (const GpuParticle& particle : particles) {
-        glProgramUniform4fv(p, kOneOriginAge, 1, glm::value_ptr(particle.originAge));
-        glProgramUniform4fv(p, kOneVelocityLife, 1, glm::value_ptr(particle.velocityLife));
-        glProgramUniform4fv(p, kOneExtra, 1, glm::value_ptr(particle.extra));
+        glProgramUniform4fv(p, glsl::kParticleOneOriginAgeLocation, 1, glm::value_ptr(particle.originAge));
+        glProgramUniform4fv(p, glsl::kParticleOneVelocityLifeLocation, 1,
+                            glm::value_ptr(particle.velocityLife));
+        glProgramUniform4fv(p, glsl::kParticleOneExtraLocation, 1, glm::value_ptr(particle.extra));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     }
     glBindVertexArray(0);
@@ -155,14 +140,14 @@ int ParticleRenderer::drawInstanced(const std::vector<GpuParticle>& particles,
     const std::uint64_t bytes = particles.size() * sizeof(GpuParticle);
     ensureBuffer(instances_, instanceBytes_, bytes, "particles.instances");
     glNamedBufferSubData(instances_.name(), 0, GLsizeiptr(bytes), particles.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, instances_.name());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kParticlePoolBinding, instances_.name());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(particles.size()));
     glBindVertexArray(0);
     return 1;
 }
 
 int ParticleRenderer::drawIndirect(const GpuParticles& pool, const ParticleDrawSettings& s) const {
-    if (!pool.usable()) return 0;
+    // A pool whose programs never built has an instance count of 0: the draw draws nothing.
     if (!bind(program(Source::liveList, s), s)) return 0;
     pool.bindForDraw();
     // The instance count is whatever compact.comp wrote: 0 draws nothing, and is no error.

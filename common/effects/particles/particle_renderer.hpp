@@ -44,15 +44,10 @@ struct ParticleDrawSettings {
 
 class ParticleRenderer {
 public:
-    ParticleRenderer() = default;  // empty: no GL
-    static ParticleRenderer create();
-
-    // create() builds the chapter's program (one draw per particle, straight alpha, no fade), so a
-    // shader that does not build shows at once; the others are built when a draw first needs them.
-    // usable(): every program built so far builds; error(): the first one's error that does not.
-    // A draw whose program does not build draws nothing (the runner lists the error).
-    bool usable() const;
-    const std::string& error() const;
+    // Builds the chapter's program (one draw per particle, straight alpha, no fade), so a shader that
+    // does not build shows at once; the others are built when a draw first needs them. A draw whose
+    // program does not build draws nothing (the runner lists the error).
+    ParticleRenderer();
 
     // The sprite from a PNG file: an error that names the path when it cannot be read.
     Status loadSprite(const std::filesystem::path& path);
@@ -72,7 +67,7 @@ public:
     // Where a draw's particles come from (PARTICLE_SOURCE in particle.vert).
     enum class Source { buffer = 0, liveList = 1, uniforms = 2 };
     // The program for a draw from `source` with `s`'s fade and blend, built the first time it is asked
-    // for (an empty program before create()).
+    // for.
     const gl::ReloadableProgram& program(Source source, const ParticleDrawSettings& s) const;
     // Programs built so far (tests: a draw builds only the one it needs).
     int programsBuilt() const;

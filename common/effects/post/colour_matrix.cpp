@@ -4,17 +4,10 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "effects/post/post_bindings.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 
 namespace fx {
-namespace {
-
-// shaders/effects/colour_matrix.frag (200 is the chapter's location for the matrix).
-constexpr GLint kMatrixLocation = 200;
-constexpr GLint kOffsetLocation = 201;
-constexpr GLint kMaxLocation = 202;
-
-}  // namespace
 
 glm::vec3 ColourTransform::row(int channel) const {
     return {matrix[0][channel], matrix[1][channel], matrix[2][channel]};
@@ -104,28 +97,22 @@ ColourTransform blendFromIdentity(const ColourTransform& t, float amount) {
     return out;
 }
 
-ColourMatrixPass ColourMatrixPass::create() {
-    ColourMatrixPass p;
-    p.pass_ = FullscreenPass("effects/post/colour_matrix.frag", "colour matrix");
-    return p;
-}
-
 DeclaredPass ColourMatrixPass::declare(FrameGraph& graph, TextureHandle input, TextureFormat format) const {
     const FullscreenPass* pass = &pass_;
     ColourTransform t = transform_;  // the transform as it is now, not when the pass runs
-    Pass& declared = graph.addPass("colour matrix", [pass, input, t](PassContext& ctx) {
+    Pass& declared = pass_.addPass(graph, "colour matrix", [pass, input, t](PassContext& ctx) {
         GLuint program = pass->program();
         // Column-major data, no transpose: uploading rows is Shader effects' hard case 7 (a
         // grayscale that comes out tinted).
-        glProgramUniformMatrix3fv(program, kMatrixLocation, 1, GL_FALSE, glm::value_ptr(t.matrix));
-        glProgramUniform3fv(program, kOffsetLocation, 1, glm::value_ptr(t.offset));
-        glProgramUniform1f(program, kMaxLocation, kSceneHdrMax);
+        glProgramUniformMatrix3fv(program, glsl::kColourMatrixLocation, 1, GL_FALSE,
+                                  glm::value_ptr(t.matrix));
+        glProgramUniform3fv(program, glsl::kColourOffsetLocation, 1, glm::value_ptr(t.offset));
+        glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
         pass->draw({ctx.native(input)});
     });
     TextureHandle graded =
         declared.create("colour.graded", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    declared.read(input).setState(FullscreenPass::state()).setTaps(1);
-    if (!pass_.usable()) declared.disable("the colour matrix program did not build: " + pass_.error());
+    declared.read(input).setTaps(1);
     return {declared, graded};
 }
 

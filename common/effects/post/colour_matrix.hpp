@@ -13,7 +13,7 @@
 // The API (the chapter's Exercise 02, answered in lessons/04_colour_matrix/lesson.md): one setter
 // that takes a transform value, with the presets as named constructors of that value.
 //
-//   ColourMatrixPass grading = ColourMatrixPass::create();
+//   ColourMatrixPass grading;
 //   grading.setTransform(ColourTransform::sepia());
 //   DeclaredPass graded = grading.declare(graph, hdr.color);   // creates "colour.graded"
 #include <array>
@@ -90,12 +90,6 @@ inline constexpr float kMidGrey = 0.18f;
 // a negative value is NaN).
 class ColourMatrixPass {
 public:
-    ColourMatrixPass() = default;  // empty: no GL yet
-    static ColourMatrixPass create();
-
-    bool usable() const { return pass_.usable(); }
-    const std::string& error() const { return pass_.error(); }
-
     // Exercise 02: the one way to choose the conversion. The initial state is the identity.
     void setTransform(const ColourTransform& transform) { transform_ = transform; }
     const ColourTransform& transform() const { return transform_; }
@@ -105,7 +99,7 @@ public:
                          TextureFormat format = TextureFormat::RGBA16F) const;
 
 private:
-    FullscreenPass pass_;
+    FullscreenPass pass_{"effects/post/colour_matrix.frag", "colour matrix"};
     ColourTransform transform_;
 };
 

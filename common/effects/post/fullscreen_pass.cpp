@@ -2,11 +2,17 @@
 
 #include <utility>
 
+#include "render_gl/program_pass.hpp"
+
 namespace fx {
 
 FullscreenPass::FullscreenPass(std::string fragmentShader, std::string label, std::string defines)
     : program_({"common/fullscreen.vert", std::move(fragmentShader), {}, std::move(defines), label}),
       triangle_(gl::createVertexArray(label + " (full-screen triangle)")) {}
+
+Pass& FullscreenPass::addPass(FrameGraph& graph, std::string name, Pass::Body body) const {
+    return runsWith(graph.addPass(std::move(name), std::move(body)).setState(state()), program_);
+}
 
 void FullscreenPass::draw(std::initializer_list<GLuint> textures) const {
     GLuint unit = 0;

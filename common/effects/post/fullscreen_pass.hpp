@@ -4,16 +4,16 @@
 // that reads the pass's input textures. The triangle is wound counter-clockwise and the state below
 // turns culling off anyway, so a leaked glCullFace cannot make it vanish (Shader effects, hard case 15).
 //
-//   // A member (copy_), built in init; the body runs after buildFrame returns, so it copies what
-//   // it uses: the pointer to the pass and the handle, never a reference to a local.
+//   // A member (copy_); the body runs after buildFrame returns, so it copies what it uses: the
+//   // pointer to the pass and the handle, never a reference to a local.
 //   const FullscreenPass* copy = &copy_;
-//   graph.addPass("colour matrix", [copy, input](PassContext& ctx) { copy->draw({ctx.native(input)}); })
-//       .read(input).writeColor(output).setState(FullscreenPass::state());
+//   copy_.addPass(graph, "copy", [copy, input](PassContext& ctx) { copy->draw({ctx.native(input)}); })
+//       .read(input).writeColor(output);
 #include <initializer_list>
 #include <string>
 
 #include "gl/program.hpp"
-#include "render/pass.hpp"
+#include "render/frame_graph.hpp"
 #include "render/pass_state.hpp"
 
 namespace fx {
@@ -26,13 +26,16 @@ struct DeclaredPass {
 
 class FullscreenPass {
 public:
-    FullscreenPass() = default;  // empty: no GL yet (lessons are built before the context)
     // Builds the program from common/fullscreen.vert and `fragmentShader` (relative to shaders/).
     FullscreenPass(std::string fragmentShader, std::string label, std::string defines = {});
 
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
     GLuint program() const { return program_.name(); }
+    const gl::ReloadableProgram& reloadable() const { return program_; }
+
+    // Adds a pass that draws with this program: the full-screen state() below, and switched off with
+    // the program's error when it never built (render_gl/program_pass.hpp). `body` sets the uniforms
+    // and calls draw().
+    Pass& addPass(FrameGraph& graph, std::string name, Pass::Body body) const;
 
     // Binds `textures` to units 0, 1, ... in order, then draws the triangle with the program. The
     // caller has set the program's uniforms (glProgramUniform*, no bind needed).

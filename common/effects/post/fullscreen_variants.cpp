@@ -17,8 +17,6 @@ std::string shaderDefines(std::initializer_list<ShaderChoice> choices) {
 }
 
 const FullscreenPass& FullscreenVariants::get(std::initializer_list<ShaderChoice> choices) const {
-    static const FullscreenPass kNone;  // a default-made FullscreenVariants has nothing to build
-    if (!built_) return kNone;
     std::string key;
     for (const auto& [name, value] : choices) key += cat(key.empty() ? "" : ", ", name, " ", value);
     auto found = built_->find(key);

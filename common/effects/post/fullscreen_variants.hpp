@@ -28,13 +28,13 @@ std::string shaderDefines(std::initializer_list<ShaderChoice> choices);
 
 class FullscreenVariants {
 public:
-    FullscreenVariants() = default;  // empty: no GL yet
-    // `defines` go into every variant (limits shared with the C++ side).
+    // `defines` go into every variant (limits shared with the C++ side). Nothing is built until get().
     FullscreenVariants(std::string fragmentShader, std::string label, std::string defines = {});
 
     // The program for these choices, built on first use; its label names them ("bloom upsample
     // (BLOOM_FILTERS 1, BLOOM_WIDE 0)"). A build that fails stays unusable with its error, like any
-    // FullscreenPass, and is not retried until the file changes (the registry reloads it).
+    // FullscreenPass (a pass that draws with it is switched off with its error), and is not retried
+    // until the file changes (the registry reloads it).
     const FullscreenPass& get(std::initializer_list<ShaderChoice> choices) const;
 
     // Variants built so far (tests, and what a frame costs to start).

@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "effects/post/post_bindings.hpp"
+
 namespace fx {
-namespace {
-
-constexpr GLint kDividerLocation = 0;  // shaders/effects/output_transform.frag (split view only)
-constexpr GLint kExposureLocation = 2;
-
-}  // namespace
 
 const char* toString(ToneCurve curve) {
     switch (curve) {
@@ -40,12 +36,6 @@ int splitDividerPixel(float divider, int width) {
     return static_cast<int>(std::lround(double(divider) * double(std::max(width, 0))));
 }
 
-OutputTransformPass OutputTransformPass::create() {
-    OutputTransformPass p;
-    p.pass_ = FullscreenVariants("effects/post/output_transform.frag", "output transform");
-    return p;
-}
-
 const FullscreenPass& OutputTransformPass::program(bool split, ToneCurve curve) const {
     return pass_.get({{"SPLIT_VIEW", split ? 1 : 0}, {"TONE_CURVE", static_cast<int>(curve)}});
 }
@@ -55,24 +45,22 @@ Pass& OutputTransformPass::declare(FrameGraph& graph, TextureHandle linear,
                                    float exposure) const {
     const FullscreenPass* pass = &program(split.has_value(), curve);
     std::optional<SplitView> view = split;
-    Pass& declared = graph.addPass("output transform", [pass, linear, view, exposure](PassContext& ctx) {
-        glProgramUniform1f(pass->program(), kExposureLocation, exposure);
-        GLuint after = ctx.native(linear);
-        if (view) {
-            // The first pixel column that shows `linear`.
-            glProgramUniform1i(pass->program(), kDividerLocation,
-                               splitDividerPixel(view->divider, ctx.targetSize().width));
-            pass->draw({after, ctx.native(view->before)});
-        } else {
-            pass->draw({after});
-        }
-    });
+    Pass& declared =
+        pass->addPass(graph, "output transform", [pass, linear, view, exposure](PassContext& ctx) {
+            glProgramUniform1f(pass->program(), glsl::kOutputExposureLocation, exposure);
+            GLuint after = ctx.native(linear);
+            if (view) {
+                // The first pixel column that shows `linear`.
+                glProgramUniform1i(pass->program(), glsl::kOutputDividerLocation,
+                                   splitDividerPixel(view->divider, ctx.targetSize().width));
+                pass->draw({after, ctx.native(view->before)});
+            } else {
+                pass->draw({after});
+            }
+        });
     declared.read(linear);
     if (view) declared.read(view->before);
-    declared.writeColor(graph.output())
-        .setState(FullscreenPass::state())
-        .setTaps(1);  // one texel, either side
-    if (!pass->usable()) declared.disable("the output transform program did not build: " + pass->error());
+    declared.writeColor(graph.output()).setTaps(1);  // one texel, either side
     return declared;
 }
 

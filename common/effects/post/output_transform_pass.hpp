@@ -14,7 +14,7 @@
 // A split view shows two linear images through the same transform: `before` left of the divider,
 // the main input right of it, with a one-pixel line on the divider.
 //
-//   OutputTransformPass present = OutputTransformPass::create();
+//   OutputTransformPass present;
 //   present.declare(graph, graded, SplitView{hdr.color, 0.5f});
 #include <optional>
 
@@ -42,22 +42,16 @@ int splitDividerPixel(float divider, int width);
 
 class OutputTransformPass {
 public:
-    OutputTransformPass() = default;  // empty: no GL yet
-    static OutputTransformPass create();
-
-    // Whether the plain program (no split view, no tone curve) built; the others build when a frame
-    // first asks for them, and a pass whose program did not build is switched off with its error.
-    bool usable() const { return program(false, ToneCurve::clip).usable(); }
-    const std::string& error() const { return program(false, ToneCurve::clip).error(); }
-
-    // Declares "output transform": reads `linear` (and split->before), writes the graph's output.
+    // Declares "output transform": its program (one per split view and tone curve) builds when a frame
+    // first asks for it, and a pass whose program did not build is switched off with its error. Reads
+    // `linear` (and split->before), writes the graph's output.
     Pass& declare(FrameGraph& graph, TextureHandle linear,
                   const std::optional<SplitView>& split = std::nullopt, ToneCurve curve = ToneCurve::clip,
                   float exposure = 1.0f) const;
 
 private:
     const FullscreenPass& program(bool split, ToneCurve curve) const;
-    FullscreenVariants pass_;
+    FullscreenVariants pass_{"effects/post/output_transform.frag", "output transform"};
 };
 
 }  // namespace fx

@@ -5,17 +5,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "effects/post/post_bindings.hpp"
+
 namespace fx {
 namespace {
-
-// shaders/effects/radial_blur_offset.glsl (both programs) and radial_blur.frag (samples: the blur only;
-// setting a location a program does not have is a GL error).
-constexpr GLint kCentreLocation = 0;
-constexpr GLint kLengthLocation = 1;
-constexpr GLint kStartLocation = 2;
-constexpr GLint kFormulaLocation = 3;
-constexpr GLint kSamplesLocation = 4;
-constexpr GLint kSizeLocation = 5;
 
 const RadialBlurFormulaInfo kFormulas[] = {
     {"first version", "v = (centre - uv) * length", false},
@@ -27,11 +20,11 @@ const RadialBlurFormulaInfo kFormulas[] = {
 // `params` has been through clampedRadialBlurParams.
 void setUniforms(GLuint program, const RadialBlurParams& params, Size2D size) {
     glm::vec2 centre = radialBlurCentrePixels(params, size);
-    glProgramUniform2f(program, kCentreLocation, centre.x, centre.y);
-    glProgramUniform1f(program, kLengthLocation, params.length);
-    glProgramUniform1f(program, kStartLocation, params.start);
-    glProgramUniform1i(program, kFormulaLocation, static_cast<int>(params.formula));
-    glProgramUniform2f(program, kSizeLocation, float(std::max(size.width, 1)),
+    glProgramUniform2f(program, glsl::kBlurCentreLocation, centre.x, centre.y);
+    glProgramUniform1f(program, glsl::kBlurLengthLocation, params.length);
+    glProgramUniform1f(program, glsl::kBlurStartLocation, params.start);
+    glProgramUniform1i(program, glsl::kBlurFormulaLocation, static_cast<int>(params.formula));
+    glProgramUniform2f(program, glsl::kBlurTargetSizeLocation, float(std::max(size.width, 1)),
                        float(std::max(size.height, 1)));
 }
 
@@ -68,41 +61,30 @@ glm::vec2 radialBlurTapOffset(const RadialBlurParams& asked, Size2D size, glm::v
     return lenA > kRadialBlurCentreEpsilon ? d * (lenB / lenA) * params.length : glm::vec2(0.0f);
 }
 
-RadialBlur RadialBlur::create() {
-    RadialBlur r;
-    r.blur_ = FullscreenPass("effects/post/radial_blur.frag", "radial blur");
-    r.offsets_ = FullscreenPass("effects/post/radial_blur_offset.frag", "radial blur offsets");
-    r.sampler_ = gl::createLinearClampSampler("radial blur (linear, clamp to edge)");
-    return r;
-}
-
 RadialBlur::Declared RadialBlur::declare(FrameGraph& graph, TextureHandle input,
                                          const RadialBlurParams& asked, TextureFormat format) const {
     const RadialBlurParams params = clampedRadialBlurParams(asked);
     const FullscreenPass* blur = &blur_;
     const GLuint sampler = sampler_.name();
-    Pass& blurPass = graph.addPass("radial blur", [blur, input, params, sampler](PassContext& ctx) {
+    Pass& blurPass = blur_.addPass(graph, "radial blur", [blur, input, params, sampler](PassContext& ctx) {
         setUniforms(blur->program(), params, ctx.targetSize());
-        glProgramUniform1i(blur->program(), kSamplesLocation, params.samples);
+        glProgramUniform1i(blur->program(), glsl::kBlurSamplesLocation, params.samples);
         glBindSampler(0, sampler);
         blur->draw({ctx.native(input)});
         glBindSampler(0, 0);  // unit 0 goes back to its textures' own parameters
     });
     TextureHandle result =
         blurPass.create("blur.result", {TextureSize::output(), format, 1}, TextureUsage::ColorAttachment);
-    blurPass.read(input).setState(FullscreenPass::state()).setTaps(params.length > 0.0f ? params.samples : 1);
-    if (!blur_.usable()) blurPass.disable("the radial blur program did not build: " + blur_.error());
+    blurPass.read(input).setTaps(params.length > 0.0f ? params.samples : 1);
 
     const FullscreenPass* offsets = &offsets_;
-    Pass& offsetPass = graph.addPass("radial blur offsets", [offsets, params](PassContext& ctx) {
+    Pass& offsetPass = offsets_.addPass(graph, "radial blur offsets", [offsets, params](PassContext& ctx) {
         setUniforms(offsets->program(), params, ctx.targetSize());
         offsets->draw({});
     });
     TextureHandle offset = offsetPass.create("blur.offset", {TextureSize::output(), TextureFormat::RG16F, 1},
                                              TextureUsage::ColorAttachment);
-    offsetPass.setState(FullscreenPass::state()).setTaps(0);
-    if (!offsets_.usable())
-        offsetPass.disable("the radial blur offsets program did not build: " + offsets_.error());
+    offsetPass.setTaps(0);
     return {{blurPass, result}, {offsetPass, offset}};
 }
 

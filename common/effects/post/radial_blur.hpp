@@ -73,12 +73,6 @@ glm::vec2 radialBlurTapOffset(const RadialBlurParams& params, Size2D size, glm::
 
 class RadialBlur {
 public:
-    RadialBlur() = default;  // empty: no GL yet
-    static RadialBlur create();
-
-    bool usable() const { return blur_.usable() && offsets_.usable(); }
-    std::string error() const { return blur_.error().empty() ? offsets_.error() : blur_.error(); }
-
     struct Declared {
         DeclaredPass blur;     // "radial blur" -> blur.result (the format asked for, the output's size)
         DeclaredPass offsets;  // "radial blur offsets" -> blur.offset
@@ -87,12 +81,12 @@ public:
                      TextureFormat format = TextureFormat::RGBA16F) const;
 
 private:
-    FullscreenPass blur_;
-    FullscreenPass offsets_;
+    FullscreenPass blur_{"effects/post/radial_blur.frag", "radial blur"};
+    FullscreenPass offsets_{"effects/post/radial_blur_offset.frag", "radial blur offsets"};
     // Linear, clamp to edge: the taps need bilinear filtering, and a tap past the edge must read the
     // edge, not the opposite side (REPEAT). Bound for the draw, so whatever parameters the input
     // texture carries are not inherited.
-    gl::SamplerName sampler_;
+    gl::SamplerName sampler_ = gl::createLinearClampSampler("radial blur (linear, clamp to edge)");
 };
 
 }  // namespace fx

@@ -2,17 +2,9 @@
 
 #include <algorithm>
 
+#include "effects/post/post_bindings.hpp"
+
 namespace fx {
-
-namespace {
-constexpr GLint kPanelLocation = 0;  // shaders/effects/post/ui_badge.frag
-}
-
-UiQueuePass UiQueuePass::create() {
-    UiQueuePass ui;
-    ui.pass_ = FullscreenPass("effects/post/ui_badge.frag", "ui queue");
-    return ui;
-}
 
 Viewport UiQueuePass::panelRect(Size2D size) {
     constexpr int kMargin = 8;
@@ -28,9 +20,9 @@ Viewport UiQueuePass::panelRect(Size2D size) {
 Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
     const FullscreenPass* pass = &pass_;
     Viewport rect = panelRect(size);
-    Pass& ui = graph.addPass("ui queue", [pass, rect](PassContext&) {
-        glProgramUniform4f(pass->program(), kPanelLocation, float(rect.x), float(rect.y), float(rect.width),
-                           float(rect.height));
+    Pass& ui = pass_.addPass(graph, "ui queue", [pass, rect](PassContext&) {
+        glProgramUniform4f(pass->program(), glsl::kUiPanelLocation, float(rect.x), float(rect.y),
+                           float(rect.width), float(rect.height));
         pass->draw({});
     });
     ui.modify(graph.output(), TextureUsage::ColorAttachment).setTaps(0);  // a flat panel, no texture
@@ -42,7 +34,6 @@ Pass& UiQueuePass::declare(FrameGraph& graph, Size2D size) const {
                  .blendFunction = BlendFunction::alpha(),
                  .faceCulling = false,
                  .colorMask = ColorMask{}});
-    if (!pass_.usable()) ui.disable("the ui program did not build: " + pass_.error());
     return ui;
 }
 

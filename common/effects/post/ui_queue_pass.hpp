@@ -13,12 +13,6 @@ namespace fx {
 
 class UiQueuePass {
 public:
-    UiQueuePass() = default;  // empty: no GL yet
-    static UiQueuePass create();
-
-    bool usable() const { return pass_.usable(); }
-    const std::string& error() const { return pass_.error(); }
-
     // Draws the panel over the graph's output (`size` is the output's size this frame).
     Pass& declare(FrameGraph& graph, Size2D size) const;
 
@@ -27,7 +21,7 @@ public:
     static Viewport panelRect(Size2D size);
 
 private:
-    FullscreenPass pass_;
+    FullscreenPass pass_{"effects/post/ui_badge.frag", "ui queue"};
 };
 
 }  // namespace fx

@@ -91,9 +91,9 @@ void GpuModel::draw(GLuint program, const glm::mat4& objectModel, const ModelDra
     glUseProgram(program);
     for (const Instance& instance : instances_) {
         glm::mat4 model = objectModel * world_[static_cast<std::size_t>(instance.node)];
-        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
         if (style.skinned == SkinnedDraw::source && instance.skinned)
-            instance.joints.bind(storage_binding::jointMatrices);
+            instance.joints.bind(glsl::kJointMatricesBinding);
         for (const Part& part : instance.parts) {
             const MaterialGpu& material =
                 part.material >= 0 && static_cast<std::size_t>(part.material) < materials_.size()
@@ -102,14 +102,14 @@ void GpuModel::draw(GLuint program, const glm::mat4& objectModel, const ModelDra
             if (style.setMaterial) {
                 glm::vec3 base = material.baseColor * style.tint;
                 glm::vec3 emissive = material.emissive + style.addedEmissive;
-                glProgramUniform3fv(program, uniform_location::baseColor, 1, glm::value_ptr(base));
-                glProgramUniform3fv(program, uniform_location::emissive, 1, glm::value_ptr(emissive));
+                glProgramUniform3fv(program, glsl::kBaseColorLocation, 1, glm::value_ptr(base));
+                glProgramUniform3fv(program, glsl::kEmissiveLocation, 1, glm::value_ptr(emissive));
             }
             if (style.bindTextures) {
-                glBindTextureUnit(texture_unit::baseColor, style.baseColorTexture
-                                                               ? style.baseColorTexture
-                                                               : material.baseColorTexture);
-                glBindTextureUnit(texture_unit::emissive, material.emissiveTexture);
+                glBindTextureUnit(glsl::kBaseColorTextureBinding, style.baseColorTexture
+                                                                      ? style.baseColorTexture
+                                                                      : material.baseColorTexture);
+                glBindTextureUnit(glsl::kEmissiveTextureBinding, material.emissiveTexture);
             }
             if (!part.skinned) {
                 part.staticMesh.draw();

@@ -5,28 +5,17 @@
 
 namespace fx {
 
-GpuSkinning GpuSkinning::create() {
-    GpuSkinning s;
-    auto program =
-        gl::Program::build({"effects/scene/pose.vert", {}, {}, {}, "skinning (transform feedback)"});
-    if (!program) {
-        s.error_ = program.error();
-        log::error("GPU skinning: ", s.error_);
-        return s;
-    }
-    s.program_ = std::move(*program);
+GpuSkinning::GpuSkinning() {
     GLuint feedback = 0;
     glCreateTransformFeedbacks(1, &feedback);
-    s.feedback_ = gl::Object<TransformFeedbackTraits>(feedback);
-    s.feedback_.label("skinning.feedback");
-    s.framebuffer_ = gl::createFramebuffer("skinning.no attachments");
-    glNamedFramebufferParameteri(s.framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
-    glNamedFramebufferParameteri(s.framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
-    return s;
+    feedback_ = gl::Object<TransformFeedbackTraits>(feedback);
+    feedback_.label("skinning.feedback");
+    glNamedFramebufferParameteri(framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_WIDTH, 1);
+    glNamedFramebufferParameteri(framebuffer_.name(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, 1);
 }
 
 void GpuSkinning::pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints) const {
-    if (!usable() || mesh.vertexCount() == 0) return;
+    if (!program_.usable() || mesh.vertexCount() == 0) return;
     // Lessons pose their meshes before the frame's passes run, outside the graph's groups.
     gl::DebugGroup group("skinning (transform feedback)");
     GLint previousFeedback = 0, previousFramebuffer = 0;
@@ -35,7 +24,7 @@ void GpuSkinning::pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints)
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.name());
     GLboolean discardWasOn = glIsEnabled(GL_RASTERIZER_DISCARD);
 
-    joints.bind(storage_binding::jointMatrices);
+    joints.bind(glsl::kJointMatricesBinding);
     glTransformFeedbackBufferBase(feedback_.name(), 0, mesh.posedBuffer());
     glUseProgram(program_.name());
     glBindVertexArray(mesh.sourceVertexArray());

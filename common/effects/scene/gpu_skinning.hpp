@@ -14,15 +14,13 @@ namespace fx {
 
 class GpuSkinning {
 public:
-    GpuSkinning() = default;
-    // Builds the program; usable() says whether that worked, error() why not.
-    static GpuSkinning create();
+    // Builds the program (it joins the run's registry like any other: its error is shown, and F5
+    // rebuilds it).
+    GpuSkinning();
 
-    bool usable() const { return static_cast<bool>(program_); }
-    const std::string& error() const { return error_; }
-
-    // Writes the posed vertices of `mesh` for the joint matrices in `joints`. Leaves the GL state as
-    // it found it, except for the program and vertex array bindings (which every draw sets anyway).
+    // Writes the posed vertices of `mesh` for the joint matrices in `joints`; nothing while the
+    // program has never built (the mesh keeps its bind pose). Leaves the GL state as it found it,
+    // except for the program and vertex array bindings (which every draw sets anyway).
     void pose(const SkinnedMesh& mesh, const JointMatrixBuffer& joints) const;
 
     // Meshes posed so far, for the overlay and tests.
@@ -34,12 +32,11 @@ private:
         static constexpr GLenum labelNamespace = GL_TRANSFORM_FEEDBACK;
         static void destroy(GLuint n) { glDeleteTransformFeedbacks(1, &n); }
     };
-    gl::Program program_;
+    gl::ReloadableProgram program_{{"effects/scene/pose.vert", {}, {}, {}, "skinning (transform feedback)"}};
     gl::Object<TransformFeedbackTraits> feedback_;
     // Draw calls need a complete framebuffer even with the rasteriser off, and the one bound may not
     // be (a surfaceless context's default framebuffer): skinning draws into this attachment-less one.
-    gl::FramebufferName framebuffer_;
-    std::string error_;
+    gl::FramebufferName framebuffer_ = gl::createFramebuffer("skinning.no attachments");
     mutable std::uint64_t posed_ = 0;
 };
 

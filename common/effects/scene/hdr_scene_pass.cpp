@@ -3,13 +3,9 @@
 #include <algorithm>
 
 #include "effects/scene/camera_matrices.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
-namespace {
-
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/scene_hdr.frag
-
-}  // namespace
 
 PassState hdrSceneState(const Scene& scene) {
     // The sky is linear HDR like everything else in the scene file; it obeys the same limit.
@@ -26,31 +22,24 @@ PassState hdrSceneState(const Scene& scene) {
             .clearDepth = 1.0f};
 }
 
-HdrScenePass HdrScenePass::create() {
-    HdrScenePass pass;
-    pass.program_ = gl::ReloadableProgram(
-        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "scene (linear HDR)"});
-    return pass;
-}
-
-HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                      double seconds, TextureFormat colorFormat) const {
+HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const World& world,
+                                      TextureFormat colorFormat) const {
     const gl::ReloadableProgram* program = &program_;
-    Pass& pass = graph.addPass("scene", [program, &scene, &meshes, seconds](PassContext& ctx) {
+    Pass& pass = graph.addPass("scene", [program, world](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
         GLuint name = program->name();
-        SceneMeshes::setFrameUniforms(name, scene, camera);
-        glProgramUniform1f(name, kHdrMaxLocation, kSceneHdrMax);
-        meshes.draw(name, scene, seconds);
+        SceneMeshes::setFrameUniforms(name, world.scene(), camera);
+        glProgramUniform1f(name, glsl::kHdrMaxLocation, kSceneHdrMax);
+        world.draw(name);
     });
     HdrSceneTargets targets;
     targets.color =
         pass.create("scene.color", {TextureSize::output(), colorFormat, 1}, TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene)).setTaps(2);  // the material's base colour and emissive textures
-    if (!program_.usable()) pass.disable("the scene program did not build: " + program_.error());
+    // Taps: the material's base colour and emissive textures.
+    runsWith(pass.setState(hdrSceneState(world.scene())).setTaps(2), program_);
     return targets;
 }
 

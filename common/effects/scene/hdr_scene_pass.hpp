@@ -7,10 +7,9 @@
 // What is written is clamped to [0, kSceneHdrMax] with NaN turned to 0 (docs/numbers.md), so no
 // infinite or NaN texel can enter the post-processing chain and spread through a blur.
 //
-//   HdrScenePass scenePass;                       // in Lesson::init, with the context current:
-//   scenePass = HdrScenePass::create();
-//   HdrSceneTargets hdr = scenePass.declare(graph, scene, meshes, frame.seconds);
-#include "effects/scene/scene_meshes.hpp"
+//   HdrScenePass scenePass;  // builds its program: the context is current
+//   HdrSceneTargets hdr = scenePass.declare(graph, frame.world);
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 
@@ -33,20 +32,15 @@ struct HdrSceneTargets {
 
 class HdrScenePass {
 public:
-    HdrScenePass() = default;  // empty: no GL yet
-    static HdrScenePass create();
-
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
-
-    // Declares the "scene" pass. `scene` and `meshes` must outlive the frame's execution.
-    // `colorFormat` is scene.color's format: RGBA16F unless a lesson shows what another one costs
-    // (RGBA8 clips every value to [0, 1]: a lamp and the sun both store 1, Bloom chapter §1.1).
-    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
+    // Declares the "scene" pass: `world` drawn at its time. `colorFormat` is scene.color's format: RGBA16F
+    // unless a lesson shows what another one costs (RGBA8 clips every value to [0, 1]: a lamp and the sun
+    // both store 1, Bloom chapter §1.1).
+    HdrSceneTargets declare(FrameGraph& graph, const World& world,
                             TextureFormat colorFormat = TextureFormat::RGBA16F) const;
 
 private:
-    gl::ReloadableProgram program_;
+    gl::ReloadableProgram program_{
+        {"effects/scene/scene_hdr.vert", "effects/scene/scene_hdr.frag", {}, {}, "scene (linear HDR)"}};
 };
 
 }  // namespace fx

@@ -1,20 +1,18 @@
 #pragma once
 // The joint matrices of one skinned object in a shader storage buffer: std430, an array of mat4 that
-// shaders/common/skinning.glsl reads at binding 0 (the chapter's JointDataBlock). An SSBO belongs to
-// the context, not to a program: once bound, every program that declares the block sees it.
+// shaders/common/skinning.glsl reads at binding glsl::kJointMatricesBinding (the chapter's JointDataBlock).
+// An SSBO belongs to the context, not to a program: once bound, every program that declares the block sees
+// it.
 #include <span>
 #include <string>
 #include <string_view>
 
 #include <glm/mat4x4.hpp>
 
+#include "effects/scene/scene_bindings.hpp"
 #include "gl/object.hpp"
 
 namespace fx {
-
-namespace storage_binding {
-inline constexpr GLuint jointMatrices = 0;
-}  // namespace storage_binding
 
 class JointMatrixBuffer {
 public:
@@ -25,7 +23,7 @@ public:
     void upload(std::span<const glm::mat4> matrices);
     // Binds exactly the uploaded joints to `binding`, so jointMatrices.length() in the shader is
     // the joint count (the shader ignores joint indices beyond it).
-    void bind(GLuint binding = storage_binding::jointMatrices) const;
+    void bind(GLuint binding = glsl::kJointMatricesBinding) const;
 
     std::size_t jointCount() const { return count_; }
     GLuint name() const { return buffer_.name(); }

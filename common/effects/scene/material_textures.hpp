@@ -9,16 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "effects/scene/scene_bindings.hpp"
 #include "gl/texture.hpp"
 
 namespace fx {
-
-// Texture units the lit scene shaders sample material textures from (units 2 and up belong to the
-// lessons: the chapter's shadow map is unit 2).
-namespace texture_unit {
-inline constexpr GLuint baseColor = 0;
-inline constexpr GLuint emissive = 1;
-}  // namespace texture_unit
 
 class MaterialTextures {
 public:

@@ -28,13 +28,11 @@ MeshData meshFor(const Primitive& p) {
 
 }  // namespace
 
-SceneMeshes::SceneMeshes()
-    : textures_(std::make_unique<MaterialTextures>()), skinning_(std::make_unique<GpuSkinning>()) {}
 SceneMeshes::~SceneMeshes() = default;
 SceneMeshes::SceneMeshes(SceneMeshes&&) noexcept = default;
 SceneMeshes& SceneMeshes::operator=(SceneMeshes&&) noexcept = default;
 
-SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
+SceneMeshes::SceneMeshes(const Scene& scene) : textures_(std::make_unique<MaterialTextures>()) {
     bool needsSkinning = false;
     for (const SceneObject& object : scene.objects) {
         ObjectMeshes meshes;
@@ -75,11 +73,7 @@ SceneMeshes::SceneMeshes(const Scene& scene) : SceneMeshes() {
         objects_.push_back(std::move(meshes));
     }
     // The skinning program exists only when the scene has something to skin.
-    if (needsSkinning) {
-        *skinning_ = GpuSkinning::create();
-        if (!skinning_->usable())
-            log::error("skinned objects are drawn in their bind pose: ", skinning_->error());
-    }
+    if (needsSkinning) skinning_ = std::make_unique<GpuSkinning>();
 }
 
 glm::mat4 SceneMeshes::modelAt(const SceneObject& object, double seconds) {
@@ -99,12 +93,12 @@ void SceneMeshes::setFrameUniforms(GLuint program, const Scene& scene, const Cam
             break;
         }
     }
-    glProgramUniformMatrix4fv(program, uniform_location::viewProjection, 1, GL_FALSE,
+    glProgramUniformMatrix4fv(program, glsl::kViewProjectionLocation, 1, GL_FALSE,
                               glm::value_ptr(camera.viewProjection));
-    glProgramUniform3fv(program, uniform_location::lightDirection, 1, glm::value_ptr(toLight));
-    glProgramUniform3fv(program, uniform_location::lightColor, 1, glm::value_ptr(lightColor));
-    glProgramUniform3fv(program, uniform_location::ambient, 1, glm::value_ptr(scene.ambient));
-    glProgramUniform3fv(program, uniform_location::cameraPosition, 1, glm::value_ptr(camera.position));
+    glProgramUniform3fv(program, glsl::kToLightLocation, 1, glm::value_ptr(toLight));
+    glProgramUniform3fv(program, glsl::kLightColorLocation, 1, glm::value_ptr(lightColor));
+    glProgramUniform3fv(program, glsl::kAmbientLocation, 1, glm::value_ptr(scene.ambient));
+    glProgramUniform3fv(program, glsl::kCameraPositionLocation, 1, glm::value_ptr(camera.position));
 }
 
 void SceneMeshes::pose(double seconds) const {
@@ -159,17 +153,17 @@ std::size_t SceneMeshes::draw(GLuint program, const Scene& scene, double seconds
             continue;
         }
         if (!options.primitives || meshes.primitive.indexCount() == 0) continue;
-        glProgramUniformMatrix4fv(program, uniform_location::model, 1, GL_FALSE, glm::value_ptr(model));
+        glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
         if (options.setMaterial) {
             glm::vec3 emitted = object.material.emitted();
-            glProgramUniform3fv(program, uniform_location::baseColor, 1,
+            glProgramUniform3fv(program, glsl::kBaseColorLocation, 1,
                                 glm::value_ptr(object.material.baseColor));
-            glProgramUniform3fv(program, uniform_location::emissive, 1, glm::value_ptr(emitted));
+            glProgramUniform3fv(program, glsl::kEmissiveLocation, 1, glm::value_ptr(emitted));
         }
         if (options.bindTextures) {
-            glBindTextureUnit(texture_unit::baseColor,
+            glBindTextureUnit(glsl::kBaseColorTextureBinding,
                               meshes.baseColorTexture ? meshes.baseColorTexture : white);
-            glBindTextureUnit(texture_unit::emissive, white);
+            glBindTextureUnit(glsl::kEmissiveTextureBinding, white);
         }
         meshes.primitive.draw();
         ++drawn;

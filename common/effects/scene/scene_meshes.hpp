@@ -27,21 +27,10 @@
 #include "effects/scene/gpu_model.hpp"
 #include "effects/scene/gpu_skinning.hpp"
 #include "effects/scene/material_textures.hpp"
+#include "effects/scene/scene_bindings.hpp"
 #include "scene/scene.hpp"
 
 namespace fx {
-
-// Uniform locations shared by the lit shaders (explicit, as in the chapter's location map).
-namespace uniform_location {
-inline constexpr GLint model = 0;
-inline constexpr GLint viewProjection = 2;
-inline constexpr GLint baseColor = 3;
-inline constexpr GLint emissive = 4;
-inline constexpr GLint lightDirection = 10;  // towards the light, normalised
-inline constexpr GLint lightColor = 11;      // HDR colour times intensity
-inline constexpr GLint ambient = 12;
-inline constexpr GLint cameraPosition = 13;
-}  // namespace uniform_location
 
 // Which objects a draw covers, by whether they have a skinned mesh. A shadow pass draws the two
 // groups with two programs (Shader effects chapter §2: static meshes first, then skinned, one switch).
@@ -69,7 +58,6 @@ struct MeshDrawOptions {
 
 class SceneMeshes {
 public:
-    SceneMeshes();
     explicit SceneMeshes(const Scene& scene);
     ~SceneMeshes();
     SceneMeshes(SceneMeshes&&) noexcept;
@@ -104,7 +92,6 @@ public:
     const GpuModel* model(std::size_t index) const;
     // The clip time object `index` was last posed at.
     float clipTime(std::size_t index) const;
-    const GpuSkinning& skinning() const { return *skinning_; }
     const MaterialTextures& textures() const { return *textures_; }
 
 private:
@@ -119,7 +106,7 @@ private:
     std::vector<std::string> notDrawn_;
     std::map<std::string, std::shared_ptr<const GltfModel>> files_;
     std::unique_ptr<MaterialTextures> textures_;
-    std::unique_ptr<GpuSkinning> skinning_;
+    std::unique_ptr<GpuSkinning> skinning_;  // only when the scene has something to skin
     // draw() is const but poses on demand: the pose is a cache of the time it was computed for.
     mutable std::vector<float> clipTimes_;  // per object
     mutable double posedAt_ = 0.0;

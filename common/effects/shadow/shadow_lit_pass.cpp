@@ -4,37 +4,35 @@
 
 #include <glm/geometric.hpp>
 
+#include "render_gl/program_pass.hpp"
+
 namespace fx {
 namespace {
 
-constexpr GLint kHdrMaxLocation = 30;  // shaders/effects/shadow/shadowed_scene.frag
-
 // Everything once, then the skinned objects at each placement.
-void drawWithPlacements(GLuint program, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                        const std::vector<glm::mat4>& placements) {
+void drawWithPlacements(GLuint program, const World& world, const std::vector<glm::mat4>& placements) {
     MeshDrawOptions o;
     if (placements.empty()) {
-        (void)meshes.draw(program, scene, seconds, o);
+        (void)world.draw(program, o);
         return;
     }
     o.skinFilter = SkinFilter::withoutSkin;
-    (void)meshes.draw(program, scene, seconds, o);
+    (void)world.draw(program, o);
     o.skinFilter = SkinFilter::skinnedOnly;
     for (const glm::mat4& placement : placements) {
         o.placement = placement;
-        (void)meshes.draw(program, scene, seconds, o);
+        (void)world.draw(program, o);
     }
 }
 
 // The lit scene seen by `camera`, receiving the shadow map (`map` 0: none), skinned objects at each
 // placement: the body of both the scene pass and the light's view.
-void drawShadowed(GLuint program, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                  const CameraMatrices& camera, GLuint map, const ShadowLookup& lookup,
-                  const std::vector<glm::mat4>& placements) {
-    SceneMeshes::setFrameUniforms(program, scene, camera);
-    glProgramUniform1f(program, kHdrMaxLocation, kSceneHdrMax);
+void drawShadowed(GLuint program, const World& world, const CameraMatrices& camera, GLuint map,
+                  const ShadowLookup& lookup, const std::vector<glm::mat4>& placements) {
+    SceneMeshes::setFrameUniforms(program, world.scene(), camera);
+    glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
     ShadowMap::bindForLookup(program, map, lookup);
-    drawWithPlacements(program, scene, meshes, seconds, placements);
+    drawWithPlacements(program, world, placements);
 }
 
 // Texture lookups per shaded pixel of shadowed_scene.frag: base colour, emissive, and the PCF taps.
@@ -44,28 +42,16 @@ int shadowedSceneTaps(const ShadowLookup& lookup, bool hasMap) {
 
 }  // namespace
 
-ShadowLitPass ShadowLitPass::create() {
-    ShadowLitPass pass;
-    pass.program_ = gl::ReloadableProgram({"effects/shadow/shadowed_scene.vert",
-                                           "effects/shadow/shadowed_scene.frag",
-                                           {},
-                                           {},
-                                           "scene with shadows (linear HDR)"});
-    return pass;
-}
-
-HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                       double seconds, const DeclaredShadowMap& shadow,
+HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
                                        const std::vector<glm::mat4>& skinnedPlacements) const {
     const gl::ReloadableProgram* program = &program_;
     ShadowLookup lookup = shadow.lookup;
     bool hasMap = shadow.pass != nullptr;
     TextureHandle map = shadow.map;
-    Pass& pass = graph.addPass("scene", [=, &scene, &meshes](PassContext& ctx) {
+    Pass& pass = graph.addPass("scene", [=](PassContext& ctx) {
         Size2D size = ctx.targetSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
-                     skinnedPlacements);
+        CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
+        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     HdrSceneTargets targets;
@@ -73,13 +59,12 @@ HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const Scene& scene, co
                                 TextureUsage::ColorAttachment);
     targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
                                 TextureUsage::DepthAttachment);
-    pass.setState(hdrSceneState(scene)).setTaps(shadowedSceneTaps(lookup, hasMap));
-    if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
+    runsWith(pass.setState(hdrSceneState(world.scene())).setTaps(shadowedSceneTaps(lookup, hasMap)),
+             program_);
     return targets;
 }
 
-TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& scene,
-                                              const SceneMeshes& meshes, double seconds,
+TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const World& world,
                                               const DeclaredShadowMap& shadow,
                                               const std::vector<glm::mat4>& skinnedPlacements,
                                               int size) const {
@@ -88,14 +73,13 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
     ShadowLookup lookup = shadow.lookup;
     bool hasMap = shadow.pass != nullptr;
     TextureHandle map = shadow.map;
-    Pass& pass = graph.addPass("shadow light view", [=, &scene, &meshes](PassContext& ctx) {
+    Pass& pass = graph.addPass("shadow light view", [=](PassContext& ctx) {
         CameraMatrices camera;
         camera.view = lookup.light.view;
         camera.projection = lookup.light.projection;
         camera.viewProjection = lookup.light.viewProjection;
         camera.position = lookup.light.centre + lookup.light.directionToLight * lookup.light.farDistance;
-        drawShadowed(program->name(), scene, meshes, seconds, camera, hasMap ? ctx.native(map) : 0, lookup,
-                     skinnedPlacements);
+        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, skinnedPlacements);
     });
     if (hasMap) pass.read(map);
     TextureHandle color =
@@ -103,11 +87,11 @@ TextureHandle ShadowLitPass::declareLightView(FrameGraph& graph, const Scene& sc
                     TextureUsage::ColorAttachment);
     pass.create("shadow.light_view_depth", {TextureSize::absolute(size, size), TextureFormat::Depth32F, 1},
                 TextureUsage::DepthAttachment);
-    PassState state = hdrSceneState(scene);
+    PassState state = hdrSceneState(world.scene());
     state.faceCulling = false;  // seen from the light, a one-sided ground would vanish from below
     pass.setState(state).setTaps(shadowedSceneTaps(lookup, hasMap));
     if (!hasMap) pass.notCalledFor("scene has no directional light that casts shadows");
-    if (!program_.usable()) pass.disable("the shadowed scene program did not build: " + program_.error());
+    runsWith(pass, program_);
     return color;
 }
 

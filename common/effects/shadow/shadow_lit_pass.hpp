@@ -4,8 +4,8 @@
 // and reads the shadow map. Skinned objects are drawn posed (GpuSkinning), so the lit picture and
 // the shadow map show one pose.
 //
-//   DeclaredShadowMap map = shadows.declare(graph, scene, meshes, t, settings, {});
-//   HdrSceneTargets hdr = lit.declare(graph, scene, meshes, t, map);
+//   DeclaredShadowMap map = shadows.declare(graph, frame.world, settings, {});
+//   HdrSceneTargets hdr = lit.declare(graph, frame.world, map);
 //
 // declareLightView() draws the same scene from the light into "shadow.light_view" for the
 // inspector: what the shadow map "sees", in colour. From there every visible surface is lit, which
@@ -21,27 +21,24 @@ namespace fx {
 
 class ShadowLitPass {
 public:
-    ShadowLitPass() = default;  // empty: no GL yet
-    static ShadowLitPass create();
-
-    bool usable() const { return program_.usable(); }
-    const std::string& error() const { return program_.error(); }
     GLuint program() const { return program_.name(); }
 
     // Declares "scene" (scene.color RGBA16F, scene.depth Depth32F, the output's size). Skinned objects
     // are drawn at each of `skinnedPlacements` (empty: once, where they are), as ShadowPassOptions does.
-    HdrSceneTargets declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes, double seconds,
-                            const DeclaredShadowMap& shadow,
+    HdrSceneTargets declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
                             const std::vector<glm::mat4>& skinnedPlacements = {}) const;
 
     // Declares "shadow light view": the scene from the light, `size` squared, only when inspected.
-    TextureHandle declareLightView(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                   double seconds, const DeclaredShadowMap& shadow,
+    TextureHandle declareLightView(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
                                    const std::vector<glm::mat4>& skinnedPlacements = {},
                                    int size = 512) const;
 
 private:
-    gl::ReloadableProgram program_;
+    gl::ReloadableProgram program_{{"effects/shadow/shadowed_scene.vert",
+                                    "effects/shadow/shadowed_scene.frag",
+                                    {},
+                                    {},
+                                    "scene with shadows (linear HDR)"}};
 };
 
 }  // namespace fx

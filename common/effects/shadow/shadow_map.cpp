@@ -6,21 +6,12 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "effects/shadow/shadow_bindings.hpp"
 #include "gl/debug_output.hpp"
+#include "render_gl/program_pass.hpp"
 
 namespace fx {
 namespace {
-
-// shadow_depth_view.frag
-constexpr GLint kDepthRangeLocation = 0;
-constexpr GLint kTargetSizeLocation = 1;
-// shadow_lookup.glsl
-constexpr GLint kLookupMatrixLocation = 40;
-constexpr GLint kLookupParamsLocation = 41;
-constexpr GLint kLookupTapsLocation = 42;
-constexpr GLint kLookupToLightLocation = 43;
-// shadow_depth.frag
-constexpr GLint kAlphaCutoffLocation = 5;
 
 constexpr int kMaxMapSize = 8192;
 // A walking character's limbs leave its bind-pose box; this much room around skinned meshes keeps
@@ -109,80 +100,52 @@ const Light* shadowCastingLight(const Scene& scene) {
     return nullptr;
 }
 
-ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double seconds,
-                         const std::vector<glm::mat4>& skinnedPlacements) {
+ShadowBounds sceneBounds(const World& world, const std::vector<glm::mat4>& skinnedPlacements) {
     ShadowBounds out;
+    const Scene& scene = world.scene();
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         Bounds local;
         if (object.primitive) {
             local = primitiveBounds(*object.primitive);
-        } else if (const GpuModel* gpu = meshes.model(i)) {
+        } else if (const GpuModel* gpu = world.meshes().model(i)) {
             local = modelBounds(*gpu);
         }
-        glm::mat4 model = SceneMeshes::modelAt(object, seconds);
-        Bounds world = local.transformed(model);
-        if (meshes.isSkinned(i))
+        glm::mat4 model = SceneMeshes::modelAt(object, world.seconds());
+        Bounds placed = local.transformed(model);
+        if (world.meshes().isSkinned(i))
             for (const glm::mat4& placement : skinnedPlacements)
-                world.add(local.transformed(placement * model));
-        out.everything.add(world);
-        if (object.castsShadows) out.casters.add(world);
+                placed.add(local.transformed(placement * model));
+        out.everything.add(placed);
+        if (object.castsShadows) out.casters.add(placed);
     }
     return out;
 }
 
-ShadowMap ShadowMap::create() {
-    ShadowMap s;
-    s.static_ = gl::ReloadableProgram(
-        {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"});
-    s.skinned_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                        "effects/shadow/shadow_depth.frag",
-                                        {},
-                                        {},
-                                        "shadow (skinned, T*(J*p))"});
-    s.skinnedGrouped_ = gl::ReloadableProgram({"effects/shadow/shadow_skinned.vert",
-                                               "effects/shadow/shadow_depth.frag",
-                                               {},
-                                               "#define GROUPED_PRODUCT\n",
-                                               "shadow (skinned, (T*J)*p)"});
-    s.depthView_ = gl::ReloadableProgram(
-        {"common/fullscreen.vert", "effects/shadow/shadow_depth_view.frag", {}, {}, "shadow depth view"});
-    s.emptyVao_ = gl::createVertexArray("shadow depth view (full-screen triangle)");
-    return s;
-}
-
-bool ShadowMap::usable() const {
-    return static_.usable() && skinned_.usable() && skinnedGrouped_.usable() && depthView_.usable();
-}
-
-std::string ShadowMap::error() const {
-    for (const gl::ReloadableProgram* p : {&static_, &skinned_, &skinnedGrouped_, &depthView_})
-        if (!p->usable()) return p->error();
-    return {};
+const gl::ReloadableProgram& ShadowMap::skinnedReloadable(SkinningProduct product) const {
+    return product == SkinningProduct::parenthesised ? skinned_ : skinnedGrouped_;
 }
 
 const gl::Program& ShadowMap::skinnedProgram(SkinningProduct product) const {
-    return product == SkinningProduct::parenthesised ? skinned_.program() : skinnedGrouped_.program();
+    return skinnedReloadable(product).program();
 }
 
-DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                     double seconds, const ShadowSettings& settings,
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
                                      const ShadowPassOptions& options) const {
-    const Light* light = shadowCastingLight(scene);
+    const Light* light = shadowCastingLight(world.scene());
     glm::vec3 direction = light ? light->direction : glm::vec3(0.0f, -1.0f, 0.0f);
     ShadowSettings s = checked(settings);
-    ShadowBounds bounds = sceneBounds(scene, meshes, seconds, options.skinnedPlacements);
+    ShadowBounds bounds = sceneBounds(world, options.skinnedPlacements);
     LightView view = fitLightFrustum(bounds.casters, bounds.everything, direction, s.extent, s.mapSize);
-    return declare(graph, scene, meshes, seconds, s, view, options);
+    return declare(graph, world, s, view, options);
 }
 
-DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                                     double seconds, const ShadowSettings& settings, const LightView& light,
-                                     const ShadowPassOptions& options) const {
+DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
+                                     const LightView& light, const ShadowPassOptions& options) const {
     DeclaredShadowMap out;
     out.settings = checked(settings);
     out.lookup = shadowLookup(out.settings, light, options.filterRadiusMetres);
-    const Light* caster = shadowCastingLight(scene);
+    const Light* caster = shadowCastingLight(world.scene());
     if (!caster) {
         out.lookup.enabled = false;
         return out;
@@ -191,51 +154,51 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
 
     const gl::ReloadableProgram* staticProgram = &static_;
     const gl::Program* skinnedProgram = &this->skinnedProgram(options.product);
-    Pass& pass = graph.addPass(options.passName, [staticProgram, skinnedProgram, &scene, &meshes, seconds,
-                                                  light, options](PassContext&) {
-        ShadowPassStats stats;
-        const float* vp = glm::value_ptr(light.viewProjection);
-        glProgramUniformMatrix4fv(staticProgram->name(), 2, 1, GL_FALSE, vp);
-        glProgramUniformMatrix4fv(skinnedProgram->name(), 2, 1, GL_FALSE, vp);
-        // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
-        // uniform nobody set (set explicitly here because the program outlives the toggle).
-        glProgramUniform1f(staticProgram->name(), kAlphaCutoffLocation, kAlphaCutoff);
-        glProgramUniform1f(skinnedProgram->name(), kAlphaCutoffLocation,
-                           options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
-        if (options.drawStatic) {
-            MeshDrawOptions o;
-            o.shadowCastersOnly = true;
-            o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
-            o.bindTextures = true;  // the base colour alpha, for the cutoff
-            o.skinFilter = SkinFilter::withoutSkin;
-            stats.staticDraws = meshes.draw(staticProgram->name(), scene, seconds, o);
-        }
-        if (options.drawSkinned) {
-            // One switch, then every skinned object (Shader effects chapter, §2).
-            if (options.drawStatic) ++stats.programSwitches;
-            MeshDrawOptions o;
-            o.shadowCastersOnly = true;
-            o.bindTextures = true;
-            o.skinned = SkinnedDraw::source;
-            o.skinFilter = SkinFilter::skinnedOnly;
-            // The fix asks the program (its active uniforms were listed once, at link time).
-            o.setMaterial =
-                options.materialUpload == MaterialUpload::always || skinnedProgram->hasUniform("baseColor");
-            std::optional<gl::ExpectedErrorScope> expected;
-            if (options.materialUpload == MaterialUpload::always)
-                expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
-            std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
-            std::vector<glm::mat4> placements = options.skinnedPlacements;
-            if (placements.empty()) placements.emplace_back(1.0f);
-            for (const glm::mat4& placement : placements) {
-                o.placement = placement;
-                stats.skinnedDraws += meshes.draw(skinnedProgram->name(), scene, seconds, o);
+    Pass& pass =
+        graph.addPass(options.passName, [staticProgram, skinnedProgram, world, light, options](PassContext&) {
+            ShadowPassStats stats;
+            const float* vp = glm::value_ptr(light.viewProjection);
+            glProgramUniformMatrix4fv(staticProgram->name(), glsl::kViewProjectionLocation, 1, GL_FALSE, vp);
+            glProgramUniformMatrix4fv(skinnedProgram->name(), glsl::kViewProjectionLocation, 1, GL_FALSE, vp);
+            // One cutoff per program. The bug leaves the skinned program's at 0, the value GL gives a
+            // uniform nobody set (set explicitly here because the program outlives the toggle).
+            glProgramUniform1f(staticProgram->name(), glsl::kAlphaCutoffLocation, kAlphaCutoff);
+            glProgramUniform1f(skinnedProgram->name(), glsl::kAlphaCutoffLocation,
+                               options.cutoff == CutoffUniform::everyProgram ? kAlphaCutoff : 0.0f);
+            if (options.drawStatic) {
+                MeshDrawOptions o;
+                o.shadowCastersOnly = true;
+                o.setMaterial = false;  // the static path asks, as the chapter's Draw helper already did
+                o.bindTextures = true;  // the base colour alpha, for the cutoff
+                o.skinFilter = SkinFilter::withoutSkin;
+                stats.staticDraws = world.draw(staticProgram->name(), o);
             }
-            stats.glErrors = gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
-            stats.skinnedVertices = skinnedVertexCount(meshes) * placements.size();
-        }
-        if (options.stats) *options.stats = stats;
-    });
+            if (options.drawSkinned) {
+                // One switch, then every skinned object (Shader effects chapter, §2).
+                if (options.drawStatic) ++stats.programSwitches;
+                MeshDrawOptions o;
+                o.shadowCastersOnly = true;
+                o.bindTextures = true;
+                o.skinned = SkinnedDraw::source;
+                o.skinFilter = SkinFilter::skinnedOnly;
+                // The fix asks the program (its active uniforms were listed once, at link time).
+                o.setMaterial = options.materialUpload == MaterialUpload::always ||
+                                skinnedProgram->hasUniform("baseColor");
+                std::optional<gl::ExpectedErrorScope> expected;
+                if (options.materialUpload == MaterialUpload::always)
+                    expected.emplace("lesson 02: material uniforms uploaded to the skinned shadow program");
+                std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
+                std::vector<glm::mat4> placements = options.skinnedPlacements;
+                if (placements.empty()) placements.emplace_back(1.0f);
+                for (const glm::mat4& placement : placements) {
+                    o.placement = placement;
+                    stats.skinnedDraws += world.draw(skinnedProgram->name(), o);
+                }
+                stats.glErrors = gl::debugCounters().errors + gl::debugCounters().expectedErrors - before;
+                stats.skinnedVertices = skinnedVertexCount(world.meshes()) * placements.size();
+            }
+            if (options.stats) *options.stats = stats;
+        });
     std::string texName = options.textureName;
     out.map = pass.create(
         texName,
@@ -257,49 +220,42 @@ DeclaredShadowMap ShadowMap::declare(FrameGraph& graph, const Scene& scene, cons
         pass.setState({.faceCulling = false, .clearDepth = 1.0f});
     }
     pass.setTaps(1);  // the base colour's alpha, for the cutoff
-    if (!usable()) pass.disable("a shadow program did not build: " + error());
+    runsWith(pass, static_);
+    runsWith(pass, skinnedReloadable(options.product));
     return out;
 }
 
 TextureHandle ShadowMap::declareDepthView(FrameGraph& graph, const DeclaredShadowMap& map, int size) const {
     size = std::max(size, 1);
-    const gl::ReloadableProgram* program = &depthView_;
-    GLuint vao = emptyVao_.name();
+    const FullscreenPass* view = &depthView_;
     TextureHandle input = map.map;
     glm::vec2 range(map.lookup.light.nearDistance, map.lookup.light.farDistance);
-    Pass& pass = graph.addPass("shadow depth view", [program, vao, input, range](PassContext& ctx) {
+    Pass& pass = depthView_.addPass(graph, "shadow depth view", [view, input, range](PassContext& ctx) {
         Size2D target = ctx.targetSize();
-        glProgramUniform2f(program->name(), kDepthRangeLocation, range.x, range.y);
-        glProgramUniform2f(program->name(), kTargetSizeLocation, float(target.width), float(target.height));
-        glBindTextureUnit(0, ctx.native(input));
-        glUseProgram(program->name());
-        glBindVertexArray(vao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glProgramUniform2f(view->program(), glsl::kDepthViewRangeLocation, range.x, range.y);
+        glProgramUniform2f(view->program(), glsl::kDepthViewTargetSizeLocation, float(target.width),
+                           float(target.height));
+        view->draw({ctx.native(input)});
     });
     TextureHandle out =
         pass.create("shadow.depth_metres", {TextureSize::absolute(size, size), TextureFormat::R32F, 1},
                     TextureUsage::ColorAttachment);
     if (map.pass) pass.read(map.map);
-    pass.setState({.depthTest = false,
-                   .depthWrite = false,
-                   .blend = false,
-                   .faceCulling = false,
-                   .colorMask = ColorMask{}});
     pass.setTaps(1);
     if (!map.pass) pass.notCalledFor("scene has no directional light that casts shadows");
-    if (!depthView_.usable()) pass.disable("the depth view program did not build: " + depthView_.error());
     return out;
 }
 
 void ShadowMap::bindForLookup(GLuint program, GLuint depthTexture, const ShadowLookup& lookup) {
     bool on = lookup.enabled && depthTexture != 0;
-    glProgramUniformMatrix4fv(program, kLookupMatrixLocation, 1, GL_FALSE,
+    glProgramUniformMatrix4fv(program, glsl::kShadowMatrixLocation, 1, GL_FALSE,
                               glm::value_ptr(lookup.light.viewProjection));
-    glProgramUniform4f(program, kLookupParamsLocation, lookup.normalOffsetMetres, lookup.depthBias,
+    glProgramUniform4f(program, glsl::kShadowParamsLocation, lookup.normalOffsetMetres, lookup.depthBias,
                        lookup.filterRadiusTexels, on ? 1.0f : 0.0f);
-    glProgramUniform1i(program, kLookupTapsLocation, lookup.filterTaps);
-    glProgramUniform3fv(program, kLookupToLightLocation, 1, glm::value_ptr(lookup.light.directionToLight));
-    glBindTextureUnit(texture_unit::shadowMap, on ? depthTexture : 0);
+    glProgramUniform1i(program, glsl::kShadowTapsLocation, lookup.filterTaps);
+    glProgramUniform3fv(program, glsl::kShadowToLightLocation, 1,
+                        glm::value_ptr(lookup.light.directionToLight));
+    glBindTextureUnit(glsl::kShadowMapBinding, on ? depthTexture : 0);
 }
 
 std::size_t ShadowMap::skinnedVertexCount(const SceneMeshes& meshes) {

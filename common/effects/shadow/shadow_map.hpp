@@ -4,8 +4,8 @@
 // squared), static meshes first with one program, then skinned meshes with a second program that
 // skins in its vertex shader (joint matrices from the storage buffer at binding 0): one switch.
 //
-//   ShadowMap shadows = ShadowMap::create();                       // Lesson::init, context current
-//   DeclaredShadowMap map = shadows.declare(graph, scene, meshes, frame.seconds, settings, {});
+//   ShadowMap shadows;  // builds its programs: the context is current
+//   DeclaredShadowMap map = shadows.declare(graph, frame.world, settings, {});
 //   // in a receiving pass that read(map.map):
 //   ShadowMap::bindForLookup(program, ctx.native(map.map), map.lookup);
 //   // and its fragment shader includes shaders/common/shadow_lookup.glsl:
@@ -21,17 +21,14 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "effects/scene/scene_meshes.hpp"
+#include "effects/post/fullscreen_pass.hpp"
+#include "effects/scene/world.hpp"
 #include "gl/program.hpp"
 #include "render/frame_graph.hpp"
 #include "scene/light_frustum.hpp"
 #include "scene/scene.hpp"
 
 namespace fx {
-
-namespace texture_unit {
-inline constexpr GLuint shadowMap = 4;  // shaders/common/shadow_lookup.glsl
-}  // namespace texture_unit
 
 // The largest filter the lookup shader takes (kShadowMaxTaps there).
 inline constexpr int kShadowMaxFilterTaps = 64;
@@ -123,36 +120,27 @@ struct DeclaredShadowMap {
 // The first directional light that casts shadows, or null.
 const Light* shadowCastingLight(const Scene& scene);
 
-// World-space bounds of the scene's objects at `seconds` (glTF objects in their posed hierarchy,
+// World-space bounds of the scene's objects at the world's time (glTF objects in their posed hierarchy,
 // padded for skinned limbs), with each skinned object also at every one of `skinnedPlacements`:
 // the shadow casters alone, and everything (casters and receivers).
 struct ShadowBounds {
     Bounds casters;
     Bounds everything;
 };
-ShadowBounds sceneBounds(const Scene& scene, const SceneMeshes& meshes, double seconds,
-                         const std::vector<glm::mat4>& skinnedPlacements = {});
+ShadowBounds sceneBounds(const World& world, const std::vector<glm::mat4>& skinnedPlacements = {});
 
 class ShadowMap {
 public:
-    ShadowMap() = default;  // empty: no GL yet
-    static ShadowMap create();
-
-    bool usable() const;
-    std::string error() const;
-
     // Declares the shadow pass. `settings` comes from the light's shadow block (a lesson may override
     // mapSize and filterTaps: mapSize is clamped to [1, 8192], filterTaps to [1, 64]). The light view
     // is fitted to the scene (fitLightFrustum: across the light to the casters, along it to everything).
-    // `scene`, `meshes` and `options.stats` must outlive the frame's execution. When the scene has no
+    // `options.stats` must outlive the frame's execution. When the scene has no
     // shadow-casting light, nothing is declared and the lookup comes back disabled.
-    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                              double seconds, const ShadowSettings& settings,
+    DeclaredShadowMap declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
                               const ShadowPassOptions& options) const;
     // The same with a light view the caller fitted.
-    DeclaredShadowMap declare(FrameGraph& graph, const Scene& scene, const SceneMeshes& meshes,
-                              double seconds, const ShadowSettings& settings, const LightView& light,
-                              const ShadowPassOptions& options) const;
+    DeclaredShadowMap declare(FrameGraph& graph, const World& world, const ShadowSettings& settings,
+                              const LightView& light, const ShadowPassOptions& options) const;
 
     // For the inspector: "shadow.depth_metres" (R32F, `size` squared), the map as metres from the
     // light's near plane (-1 where nothing was drawn). Runs only when someone inspects it.
@@ -168,11 +156,21 @@ public:
     const gl::Program& skinnedProgram(SkinningProduct product) const;
 
 private:
-    gl::ReloadableProgram static_;
-    gl::ReloadableProgram skinned_;
-    gl::ReloadableProgram skinnedGrouped_;
-    gl::ReloadableProgram depthView_;
-    gl::VertexArrayName emptyVao_;
+    const gl::ReloadableProgram& skinnedReloadable(SkinningProduct product) const;
+
+    gl::ReloadableProgram static_{
+        {"effects/shadow/shadow_static.vert", "effects/shadow/shadow_depth.frag", {}, {}, "shadow (static)"}};
+    gl::ReloadableProgram skinned_{{"effects/shadow/shadow_skinned.vert",
+                                    "effects/shadow/shadow_depth.frag",
+                                    {},
+                                    {},
+                                    "shadow (skinned, T*(J*p))"}};
+    gl::ReloadableProgram skinnedGrouped_{{"effects/shadow/shadow_skinned.vert",
+                                           "effects/shadow/shadow_depth.frag",
+                                           {},
+                                           "#define GROUPED_PRODUCT\n",
+                                           "shadow (skinned, (T*J)*p)"}};
+    FullscreenPass depthView_{"effects/shadow/shadow_depth_view.frag", "shadow depth view"};
 };
 
 }  // namespace fx

@@ -1,8 +1,10 @@
 // The signed circle of confusion of a thin lens (scene/thin_lens.hpp holds the same maths on the CPU,
 // and the tests compare the two): a diameter in pixels, negative in front of the focus plane (near
 // field), positive behind it (far field), clamped to +-maxCoc.
-layout(location = 10) uniform vec2 depthRange;  // the projection's near and far planes (m)
-layout(location = 11) uniform vec4 lens;        // 1/P (1/m), K (px m), max |CoC| (px), radius per diameter
+#include "effects/dof/dof_bindings.glsl"
+
+layout(location = kDofDepthRangeLocation) uniform vec2 depthRange;  // the projection's near and far planes (m)
+layout(location = kDofLensLocation) uniform vec4 lens;        // 1/P (1/m), K (px m), max |CoC| (px), radius per diameter
 
 // View-space distance for a window-space depth of a standard projection (depth range 0..1). The
 // chapter's ToRealZ without 2d - 1: n f / (f - d (f - n)) keeps its precision near d = 1 (the sky).

@@ -1,5 +1,5 @@
-// Shared by the bloom passes (effects/bloom_chain.hpp). BLOOM_MAX_VALUE and BLOOM_MAX_BRIGHT come
-// from the C++ side (effects/bloom_settings.hpp) as defines, so the limits live in one place.
+// Shared by the bloom passes (effects/bloom/bloom_chain.hpp). BLOOM_MAX_VALUE and BLOOM_MAX_BRIGHT come
+// from the C++ side (effects/bloom/bloom_settings.hpp) as defines, so the limits live in one place.
 
 // A colour made safe to filter and to store: NaN becomes 0 (GLSL leaves clamp(NaN) undefined, so it
 // is picked out first), and the rest is clamped to [lo, hi], which also turns +-Inf into a limit.

@@ -7,15 +7,17 @@
 #include "bloom_common.glsl"
 #include "../../common/output_transform.glsl"
 
+#include "bloom_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D base;
 layout(binding = 1) uniform sampler2D source;
 // Chosen when the program is built (effects/post/fullscreen_variants.hpp): a uniform here would make
 // llvmpipe run every filter's taps for every pixel.
 const int filters = BLOOM_FILTERS;
-layout(location = 4) uniform float offset;
-layout(location = 6) uniform float scale;
+layout(location = kBloomOffsetLocation) uniform float offset;
+layout(location = kBloomUpScaleLocation) uniform float scale;
 const int curve = TONE_CURVE;
-layout(location = 9) uniform float exposure;
+layout(location = kBloomExposureLocation) uniform float exposure;
 
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 color;

@@ -1,5 +1,5 @@
 #version 450 core
-// The bright pass (effects/bloom_chain.hpp): keeps the part of the scene above the threshold and
+// The bright pass (effects/bloom/bloom_chain.hpp): keeps the part of the scene above the threshold and
 // shrinks it into the chain's first level in the same pass.
 //   filters 0 (Shader effects): 4 taps at +-offset texels (1: the centres of the 2x2 quads around the
 //                         destination's 4x4 block), the ratio on each tap, averaged, times `scale`;
@@ -9,14 +9,16 @@
 // must not leave this pass as anything but a bounded, non-negative colour.
 #include "bloom_common.glsl"
 
+#include "bloom_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D source;
 // Chosen when the program is built (effects/post/fullscreen_variants.hpp): a uniform here would make
 // llvmpipe run every filter's taps for every pixel.
 const int filters = BLOOM_FILTERS;
-layout(location = 1) uniform float threshold;
-layout(location = 2) uniform float knee;
-layout(location = 3) uniform float scale;
-layout(location = 4) uniform float offset;
+layout(location = kBloomThresholdLocation) uniform float threshold;
+layout(location = kBloomKneeLocation) uniform float knee;
+layout(location = kBloomScaleLocation) uniform float scale;
+layout(location = kBloomOffsetLocation) uniform float offset;
 const bool karis = BLOOM_KARIS != 0;
 
 layout(location = 1) in vec2 uv;

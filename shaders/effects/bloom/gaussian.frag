@@ -1,12 +1,14 @@
 #version 450 core
-// The reference glow (effects/bloom_reference.hpp): one direction of a separable Gaussian at full
+// The reference glow (effects/bloom/bloom_reference.hpp): one direction of a separable Gaussian at full
 // resolution, 32-bit float, every tap read exactly (texelFetch, clamped to the edge like the chain's
 // sampler) and weighted exp(-i^2 / 2 sigma^2) out to 3 sigma, the weights normalised to sum to 1.
 // Slow on purpose: it is the answer the chain's few bilinear taps approximate.
+#include "bloom_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D source;
-layout(location = 0) uniform ivec2 direction;  // (1, 0) or (0, 1)
-layout(location = 1) uniform float sigma;      // output pixels
-layout(location = 2) uniform float scale;
+layout(location = kGaussianDirectionLocation) uniform ivec2 direction;  // (1, 0) or (0, 1)
+layout(location = kGaussianSigmaLocation) uniform float sigma;      // output pixels
+layout(location = kGaussianScaleLocation) uniform float scale;
 
 layout(location = 0) out vec4 color;
 

@@ -1,5 +1,5 @@
 #version 450 core
-// One step up the chain, and the composite (effects/bloom_chain.hpp, bloom_composite.hpp): the target
+// One step up the chain, and the composite (effects/bloom/bloom_chain.hpp, bloom_composite.hpp): the target
 // gets `base` (same size, read texel for texel) plus `scale` times the smaller `source`, blurred while
 // it is enlarged. The chapters add the enlarged level with additive blending onto the level itself;
 // writing the sum into a texture of its own gives the same numbers and keeps the level as it was
@@ -15,13 +15,15 @@
 // float once they are added up (Bloom chapter, hard case 2).
 #include "bloom_common.glsl"
 
+#include "bloom_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D base;
 layout(binding = 1) uniform sampler2D source;
 // Chosen when the program is built (effects/post/fullscreen_variants.hpp): a uniform here would make
 // llvmpipe run every filter's taps for every pixel.
 const int filters = BLOOM_FILTERS;
-layout(location = 4) uniform float offset;
-layout(location = 6) uniform float scale;
+layout(location = kBloomOffsetLocation) uniform float offset;
+layout(location = kBloomUpScaleLocation) uniform float scale;
 const bool wide = BLOOM_WIDE != 0;
 
 layout(location = 1) in vec2 uv;

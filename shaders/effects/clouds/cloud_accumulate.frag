@@ -1,6 +1,8 @@
 #version 450 core
 // The cloud layer averaged over frames (effects/clouds/cloud_temporal.hpp): this frame's march mixed
 // with last frame's result, reprojected and clamped to this frame's neighbourhood. Premultiplied RGBA.
+#include "clouds_bindings.glsl"
+
 layout(location = 0) out vec4 color;         // clouds.result, for the composite (and the bench)
 layout(location = 1) out vec4 historyOut;    // the same, kept for next frame
 
@@ -8,14 +10,14 @@ layout(binding = 0) uniform sampler2D current;  // clouds.layer
 layout(binding = 1) uniform sampler2D history;  // last frame's result, the same size
 layout(binding = 2) uniform sampler2D sceneDepth;
 
-layout(location = 0) uniform mat4 inverseProjection;
-layout(location = 1) uniform mat3 viewToWorldRotation;
+layout(location = kAccumulateInverseProjectionLocation) uniform mat4 inverseProjection;
+layout(location = kAccumulateViewToWorldRotationLocation) uniform mat3 viewToWorldRotation;
 // Last frame's view-projection applied to positions relative to this frame's camera.
-layout(location = 2) uniform mat4 previousFromCamera;
-layout(location = 3) uniform vec2 slabMiddleAndEyeY;
-layout(location = 4) uniform float currentWeight;  // 1: no history (the first frame of an average)
-layout(location = 5) uniform vec2 targetSize;
-layout(location = 6) uniform int depthStride;
+layout(location = kAccumulatePreviousFromCameraLocation) uniform mat4 previousFromCamera;
+layout(location = kAccumulateSlabMiddleAndEyeYLocation) uniform vec2 slabMiddleAndEyeY;
+layout(location = kAccumulateCurrentWeightLocation) uniform float currentWeight;  // 1: no history (the first frame of an average)
+layout(location = kAccumulateTargetSizeLocation) uniform vec2 targetSize;
+layout(location = kAccumulateDepthStrideLocation) uniform int depthStride;
 
 void accumulate();
 

@@ -8,23 +8,25 @@
 // As in clouds.frag, positions stay relative to the camera and the camera's position is folded into
 // the texture offsets on the CPU (in double).
 
+#include "clouds_bindings.glsl"
+
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 transmittance;
 
 layout(binding = 0) uniform sampler2D density;     // sRGB8_ALPHA8: .r is sRGB-decoded, as in the chapter
 layout(binding = 1) uniform sampler2D sceneDepth;  // the scene's depth buffer, [0, 1]
 
-layout(location = 0) uniform mat4 inverseProjection;
-layout(location = 1) uniform mat3 viewToWorldRotation;
-layout(location = 2) uniform vec3 cameraPosition;
-layout(location = 3) uniform vec4 offsets;        // layer 0 in xy, layer 1 in zw (cloudShaderOffsets)
-layout(location = 4) uniform vec4 rangeCountStep;  // bottom, top (the samples are this pass's own)
-layout(location = 5) uniform vec2 thresholdPair;   // threshold, 1 / (1 - threshold) (0: no cloud)
-layout(location = 7) uniform vec2 scales;
-layout(location = 8) uniform vec3 toLight;     // unit vector toward the sun
-layout(location = 9) uniform int samples;      // along each shadow ray
-layout(location = 10) uniform float sigmaPerDensity;  // extinction per metre per unit of density
-layout(location = 14) uniform vec2 targetSize;
+layout(location = kCloudsInverseProjectionLocation) uniform mat4 inverseProjection;
+layout(location = kCloudsViewToWorldRotationLocation) uniform mat3 viewToWorldRotation;
+layout(location = kCloudsCameraPositionLocation) uniform vec3 cameraPosition;
+layout(location = kCloudsOffsetsLocation) uniform vec4 offsets;        // layer 0 in xy, layer 1 in zw (cloudShaderOffsets)
+layout(location = kCloudsRangeCountStepLocation) uniform vec4 rangeCountStep;  // bottom, top (the samples are this pass's own)
+layout(location = kCloudsThresholdPairLocation) uniform vec2 thresholdPair;   // threshold, 1 / (1 - threshold) (0: no cloud)
+layout(location = kCloudsScalesLocation) uniform vec2 scales;
+layout(location = kCloudShadowToLightLocation) uniform vec3 toLight;     // unit vector toward the sun
+layout(location = kCloudShadowSamplesLocation) uniform int samples;      // along each shadow ray
+layout(location = kCloudShadowSigmaPerDensityLocation) uniform float sigmaPerDensity;  // extinction per metre per unit of density
+layout(location = kCloudsTargetSizeLocation) uniform vec2 targetSize;
 
 // A sun lower than this (sine of about 5.7 degrees) is treated as this high: the path through the slab
 // is 1 / toLight.y times its thickness, and the guard keeps it (and the shadow's reach) finite.

@@ -8,29 +8,31 @@
 // double), so a camera 10 km from the origin loses nothing to float cancellation.
 #include "../../common/shadow_lookup.glsl"
 
+#include "clouds_bindings.glsl"
+
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 color;
 
 layout(binding = 0) uniform sampler2D density;     // sRGB8_ALPHA8: .r is sRGB-decoded, as in the chapter
 layout(binding = 1) uniform sampler2D sceneDepth;  // plain sampler: the scene's depth buffer, [0, 1]
 
-layout(location = 0) uniform mat4 inverseProjection;
-layout(location = 1) uniform mat3 viewToWorldRotation;  // the inverse view matrix without its translation
-layout(location = 2) uniform vec3 cameraPosition;       // world space
+layout(location = kCloudsInverseProjectionLocation) uniform mat4 inverseProjection;
+layout(location = kCloudsViewToWorldRotationLocation) uniform mat3 viewToWorldRotation;  // the inverse view matrix without its translation
+layout(location = kCloudsCameraPositionLocation) uniform vec3 cameraPosition;       // world space
 // Texture offsets, xy for layer 0 and zw for layer 1, with the camera's own position already added.
-layout(location = 3) uniform vec4 offsets;
-layout(location = 4) uniform vec4 rangeCountStep;  // bottom, top, samples, vertical step (cloud_march.hpp)
-layout(location = 5) uniform vec2 thresholdPair;   // threshold, 1 / (1 - threshold) (0: no cloud)
-layout(location = 6) uniform vec3 cloudColour;
-layout(location = 7) uniform vec2 scales;  // texture repeats per metre, layer 0 and layer 1
-layout(location = 10) uniform float shadowOffset;  // metres: one texel of the shadow map
-layout(location = 12) uniform int frameIndex;      // moves the IGN and R2 patterns every frame
-layout(location = 13) uniform float planeHeight;   // stages 0 and 1
+layout(location = kCloudsOffsetsLocation) uniform vec4 offsets;
+layout(location = kCloudsRangeCountStepLocation) uniform vec4 rangeCountStep;  // bottom, top, samples, vertical step (cloud_march.hpp)
+layout(location = kCloudsThresholdPairLocation) uniform vec2 thresholdPair;   // threshold, 1 / (1 - threshold) (0: no cloud)
+layout(location = kCloudsColourLocation) uniform vec3 cloudColour;
+layout(location = kCloudsScalesLocation) uniform vec2 scales;  // texture repeats per metre, layer 0 and layer 1
+layout(location = kCloudsShadowOffsetLocation) uniform float shadowOffset;  // metres: one texel of the shadow map
+layout(location = kCloudsFrameIndexLocation) uniform int frameIndex;      // moves the IGN and R2 patterns every frame
+layout(location = kCloudsPlaneHeightLocation) uniform float planeHeight;   // stages 0 and 1
 // The target's size: the pixel's position on the screen is gl_FragCoord / targetSize, exact at pixel
 // centres, and it indexes the depth texture (the same size) directly.
-layout(location = 14) uniform vec2 targetSize;
+layout(location = kCloudsTargetSizeLocation) uniform vec2 targetSize;
 // Scene depth texels per pixel of this target: 1 at full resolution, 2 at half.
-layout(location = 16) uniform int depthStride;
+layout(location = kCloudsDepthStrideLocation) uniform int depthStride;
 
 // What the whole draw shares is built into the program, one program per combination (#defines set by
 // cloud_pass.cpp through effects/post/fullscreen_variants.hpp), not read from uniforms: llvmpipe runs

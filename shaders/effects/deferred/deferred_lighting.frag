@@ -8,22 +8,24 @@
 #include "gbuffer_read.glsl"
 #include "point_lights.glsl"
 
-layout(location = 22) uniform float hdrMax;
-layout(location = 23) uniform vec3 sky;
+#include "deferred_bindings.glsl"
+
+layout(location = kHdrMaxLocation) uniform float hdrMax;
+layout(location = kSkyLocation) uniform vec3 sky;
 // The whole scene moved this far from the origin (the shadow map was drawn where it is unmoved).
-layout(location = 25) uniform vec3 worldOffset;
+layout(location = kWorldOffsetLocation) uniform vec3 worldOffset;
 
 #ifdef TILED
-layout(std430, binding = 6) readonly buffer TileLights {
+layout(std430, binding = kTileLightsBinding) readonly buffer TileLights {
     uint tileLights[];  // per tile: the count, then up to MAX_TILE_LIGHTS indices
 };
-layout(location = 24) uniform int tilesX;
+layout(location = kTilesXLocation) uniform int tilesX;
 #endif
 
 layout(location = 0) out vec4 color;
 
 const float kSpecular = 0.3;
-const float kShininess = SHININESS;  // 40 in the lessons (DeferredLighting::create)
+const float kShininess = SHININESS;  // 40 in the lessons (DeferredLighting's constructor)
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -10,7 +10,7 @@
 #include "../../common/scene_uniforms.glsl"
 #include "octahedral.glsl"
 
-layout(binding = 0) uniform sampler2D baseColorTexture;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;

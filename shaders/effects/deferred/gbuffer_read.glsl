@@ -3,11 +3,13 @@
 // with the inverse of the view-projection the G-buffer pass drew with (the same matrices, the same size).
 #include "octahedral.glsl"
 
+#include "deferred_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D albedoTarget;
 layout(binding = 1) uniform sampler2D normalTarget;
 layout(binding = 2) uniform sampler2D positionTarget;  // fat layouts
 layout(binding = 3) uniform sampler2D depthTarget;
-layout(location = 21) uniform mat4 inverseViewProjection;
+layout(location = kInverseViewProjectionLocation) uniform mat4 inverseViewProjection;
 
 vec3 worldPositionAt(ivec2 p, float depth) {
 #if LAYOUT == 0

@@ -4,8 +4,10 @@
 // the camera, linear, near white fading to black at `viewRange` metres. Two targets at once.
 #include "gbuffer_read.glsl"
 
-layout(location = 0) uniform vec3 eye;
-layout(location = 1) uniform float viewRange;
+#include "deferred_bindings.glsl"
+
+layout(location = kViewsEyeLocation) uniform vec3 eye;
+layout(location = kViewsRangeLocation) uniform float viewRange;
 layout(location = 0) out vec4 normalColour;
 layout(location = 1) out vec4 linearDepth;
 

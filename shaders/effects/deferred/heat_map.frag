@@ -1,11 +1,13 @@
 #version 450 core
 // Lights per tile as a heat map over the lit picture: black-blue-green-yellow-red-white for 0 to
 // maxLights lights, mixed half and half with the picture; a tile past the list's cap is white.
+#include "deferred_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D heat;  // cull.heat: one texel per tile
 layout(binding = 1) uniform sampler2D lit;   // the lit picture (linear)
-layout(location = 0) uniform float maxLights;
-layout(location = 1) uniform int tileSize;
-layout(location = 2) uniform float capacity;
+layout(location = kHeatMaxLightsLocation) uniform float maxLights;
+layout(location = kHeatTileSizeLocation) uniform int tileSize;
+layout(location = kHeatCapacityLocation) uniform float capacity;
 layout(location = 0) out vec4 color;
 
 vec3 ramp(float t) {

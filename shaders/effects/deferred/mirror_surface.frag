@@ -2,10 +2,12 @@
 // The mirror's surface over the lit picture: the reflection under this pixel, blended in at the
 // mirror's strength (alpha). The reflection was drawn with the same projection, so the pixel's own
 // place in the output, as a fraction, is where its reflection is, whatever the reflection's size.
-layout(binding = 0) uniform sampler2D reflection;
-layout(binding = 1) uniform sampler2D sceneDepth;  // the G-buffer's: what is in front of the mirror
-layout(location = 27) uniform float strength;
-layout(location = 28) uniform vec2 outputSize;
+#include "deferred_bindings.glsl"
+
+layout(binding = kMirrorReflectionBinding) uniform sampler2D reflection;
+layout(binding = kMirrorSceneDepthBinding) uniform sampler2D sceneDepth;  // the G-buffer's: what is in front of the mirror
+layout(location = kMirrorStrengthLocation) uniform float strength;
+layout(location = kMirrorOutputSizeLocation) uniform vec2 outputSize;
 layout(location = 0) out vec4 color;
 
 void main() {

@@ -4,11 +4,13 @@
 // reflection (GL_CLIP_DISTANCE0 is on during the pass).
 #include "../../common/scene_uniforms.glsl"
 
+#include "deferred_bindings.glsl"
+
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 normal;
 
-layout(location = 26) uniform vec4 clipPlane;  // n.p + d >= 0 is kept
+layout(location = kClipPlaneLocation) uniform vec4 clipPlane;  // n.p + d >= 0 is kept
 
 layout(location = 1) out vec2 outTexcoord;
 layout(location = 2) out vec3 worldNormal;

@@ -10,10 +10,12 @@
 // It sums to 1 (flat areas stay as they are); for inputs in [0, 1] its output lies in [-4, 5]. The
 // sum goes to two targets: output 0 an RGBA8 target (clipped to [0, 1], as the slides' GL_RGBA is),
 // output 1 a float one (kept). texelFetch at the pixel: the targets have the output's size.
+#include "deferred_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D diffuseTerm;
 layout(binding = 1) uniform sampler2D specularTerm;
 layout(binding = 2) uniform sampler2D ambientTerm;
-layout(location = 0) uniform vec3 sky;
+layout(location = kMrtSkyLocation) uniform vec3 sky;
 
 layout(location = 0) out vec4 color;
 #ifdef SHARPEN

@@ -6,8 +6,8 @@
 #include "../../common/scene_uniforms.glsl"
 #include "phong.glsl"
 
-layout(binding = 0) uniform sampler2D baseColorTexture;
-layout(binding = 1) uniform sampler2D emissiveTexture;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
+layout(binding = kEmissiveTextureBinding) uniform sampler2D emissiveTexture;
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;

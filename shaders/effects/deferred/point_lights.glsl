@@ -9,11 +9,13 @@ struct PointLight {
     vec4 color;  // rgb: colour x intensity
 };
 
-layout(std430, binding = 5) readonly buffer PointLights {
+#include "deferred_bindings.glsl"
+
+layout(std430, binding = kPointLightsBinding) readonly buffer PointLights {
     PointLight pointLights[];
 };
 
-layout(location = 20) uniform int pointLightCount;
+layout(location = kPointLightCountLocation) uniform int pointLightCount;
 
 float pointLightAttenuation(float distance, float radius) {
     if (!(radius > 0.0) || distance >= radius) return 0.0;

@@ -5,8 +5,8 @@
 #include "../../common/scene_uniforms.glsl"
 #include "point_lights.glsl"
 
-layout(binding = 0) uniform sampler2D baseColorTexture;
-layout(location = 22) uniform float hdrMax;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
+layout(location = kHdrMaxLocation) uniform float hdrMax;
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;

@@ -7,16 +7,18 @@
 // thread), so the picture is the same in every run. A tile with no surface lists nothing.
 #include "point_lights.glsl"
 
+#include "deferred_bindings.glsl"
+
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 
-layout(binding = 3) uniform sampler2D depthTarget;
-layout(std430, binding = 6) writeonly buffer TileLights {
+layout(binding = kCullDepthBinding) uniform sampler2D depthTarget;
+layout(std430, binding = kTileLightsBinding) writeonly buffer TileLights {
     uint tileLights[];  // per tile: the count, then up to MAX_TILE_LIGHTS indices
 };
-layout(r32f, binding = 0) uniform writeonly image2D heat;  // lights touching each tile (before the cap)
+layout(r32f, binding = kCullHeatBinding) uniform writeonly image2D heat;  // lights touching each tile (before the cap)
 
-layout(location = 30) uniform mat4 viewMatrix;
-layout(location = 31) uniform mat4 inverseProjection;
+layout(location = kCullViewLocation) uniform mat4 viewMatrix;
+layout(location = kCullInverseProjectionLocation) uniform mat4 inverseProjection;
 
 const int kMaxLights = 1024;
 shared uint minDepthBits;

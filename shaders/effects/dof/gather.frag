@@ -10,17 +10,19 @@
 //             through the near field's blurred edge).
 // Without separation every tap counts up to its own radius, as a single average.
 // Taps are fetched at whole texels clamped to the screen: no wrap-around from the opposite edge.
+#include "dof_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D prefiltered;  // rgb, a = signed radius in gather pixels
 layout(binding = 1) uniform sampler2D tileMax;
-layout(location = 0) uniform int rings;         // rings around the centre tap
-layout(location = 1) uniform int tapsPerRing;   // ring k holds tapsPerRing * k taps
+layout(location = kDofRingsLocation) uniform int rings;         // rings around the centre tap
+layout(location = kDofTapsPerRingLocation) uniform int tapsPerRing;   // ring k holds tapsPerRing * k taps
 // DOF_SEPARATE, near/far separation on (1) or off (0), is a #define, one program each
 // (effects/post/fullscreen_variants.hpp): llvmpipe runs both sides of a branch on a uniform, so one
 // field cost as much as two.
-layout(location = 3) uniform int tilePixels;
-layout(location = 4) uniform float maxRadius;   // gather pixels: the clamp, which bounds the tile reach
-layout(location = 5) uniform float highlight;   // bokeh: extra weight per unit of luminance above 1
-layout(location = 6) uniform int scale;         // full-resolution pixels per gather texel
+layout(location = kDofGatherTilePixelsLocation) uniform int tilePixels;
+layout(location = kDofMaxRadiusLocation) uniform float maxRadius;   // gather pixels: the clamp, which bounds the tile reach
+layout(location = kDofHighlightLocation) uniform float highlight;   // bokeh: extra weight per unit of luminance above 1
+layout(location = kDofGatherScaleLocation) uniform int scale;         // full-resolution pixels per gather texel
 
 layout(location = 0) out vec4 color;
 

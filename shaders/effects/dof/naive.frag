@@ -4,9 +4,11 @@
 // pattern) and isotropic in texture coordinates, so the blur is an ellipse in pixels.
 #include "poisson.glsl"
 
+#include "dof_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D scene;
 layout(binding = 1) uniform sampler2D depth;
-layout(location = 0) uniform vec2 naive;  // the depth that stays sharp (0.935), the scale (0.1)
+layout(location = kDofNaiveLocation) uniform vec2 naive;  // the depth that stays sharp (0.935), the scale (0.1)
 
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec4 color;

@@ -5,9 +5,11 @@
 // full row or column (odd sizes) read the edge.
 #include "coc.glsl"
 
+#include "dof_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D scene;
 layout(binding = 1) uniform sampler2D cocTexture;
-layout(location = 0) uniform int scale;  // full-resolution pixels per gather pixel: 1 or 2
+layout(location = kDofPrefilterScaleLocation) uniform int scale;  // full-resolution pixels per gather pixel: 1 or 2
 
 layout(location = 0) out vec4 color;
 

@@ -2,8 +2,10 @@
 // The largest blur radius in each tile of the gather's texels: r = the largest near-field radius, g =
 // the largest of either field. The gather reads the tiles around a pixel to bound how far it looks.
 // The last tile in a row or column also covers the texels left over when the size is not a multiple.
+#include "dof_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D prefiltered;  // a = signed radius in gather pixels
-layout(location = 0) uniform int tilePixels;
+layout(location = kDofTilePixelsLocation) uniform int tilePixels;
 
 layout(location = 0) out vec2 tileMax;
 

@@ -6,15 +6,17 @@
 // invocations win the counter differs between runs, and so would the blended picture.)
 #include "particle_common.glsl"
 
+#include "particles_bindings.glsl"
+
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 0) readonly buffer Particles { Particle particles[]; };
-layout(std430, binding = 2) writeonly buffer LiveIndices { uint liveIndex[]; };
-layout(std430, binding = 3) buffer Stats { uint replaced; uint live; };
+layout(std430, binding = kParticlePoolBinding) readonly buffer Particles { Particle particles[]; };
+layout(std430, binding = kParticleLiveBinding) writeonly buffer LiveIndices { uint liveIndex[]; };
+layout(std430, binding = kParticleStatsBinding) buffer Stats { uint replaced; uint live; };
 // glDrawArraysIndirect's command: count, instanceCount, first, baseInstance.
-layout(std430, binding = 4) writeonly buffer DrawCommand { uint command[4]; };
+layout(std430, binding = kParticleCommandBinding) writeonly buffer DrawCommand { uint command[4]; };
 
-layout(location = 1) uniform uint totalSlots;
+layout(location = kCompactTotalSlotsLocation) uniform uint totalSlots;
 
 shared uint stretchStart[256];
 

@@ -13,18 +13,21 @@
 #error "PARTICLE_SOFT and PARTICLE_PREMULTIPLIED are set by ParticleRenderer"
 #endif
 
+#include "common/scene_bindings.glsl"
+#include "particles_bindings.glsl"
+
 layout(location = 0) in vec2 corner;
 layout(location = 1) in vec4 color;
 layout(location = 2) flat in vec3 emitterFlags;  // coverage, textured, the chapter's unclamped alpha
 layout(location = 3) in float viewDistance;
 
-layout(binding = 0) uniform sampler2D sprite;
-layout(location = 11) uniform float hdrMax;
+layout(binding = kParticleSpriteBinding) uniform sampler2D sprite;
+layout(location = kHdrMaxLocation) uniform float hdrMax;
 #if PARTICLE_SOFT
-layout(binding = 1) uniform sampler2D sceneDepth;
-layout(location = 12) uniform float softDistance;  // > 0 (ParticleRenderer builds this only then)
-layout(location = 13) uniform vec2 nearFar;
-layout(location = 14) uniform vec2 depthTexelsPerPixel;
+layout(binding = kParticleSceneDepthBinding) uniform sampler2D sceneDepth;
+layout(location = kParticleSoftDistanceLocation) uniform float softDistance;  // > 0 (ParticleRenderer builds this only then)
+layout(location = kParticleNearFarLocation) uniform vec2 nearFar;
+layout(location = kParticleDepthTexelsPerPixelLocation) uniform vec2 depthTexelsPerPixel;
 
 // Distance from the camera of a [0, 1] depth-buffer value under a perspective projection.
 float linearDepth(float depth, float near, float far) {

@@ -18,20 +18,22 @@
 #error "PARTICLE_SOURCE is set by ParticleRenderer: 0 buffer, 1 live list, 2 uniforms"
 #endif
 
-layout(std430, binding = 1) readonly buffer Emitters { Emitter emitters[]; };
+#include "particles_bindings.glsl"
+
+layout(std430, binding = kParticleEmittersBinding) readonly buffer Emitters { Emitter emitters[]; };
 #if PARTICLE_SOURCE == 2
-layout(location = 3) uniform vec4 oneOriginAge;
-layout(location = 4) uniform vec4 oneVelocityLife;
-layout(location = 5) uniform vec4 oneExtra;
+layout(location = kParticleOneOriginAgeLocation) uniform vec4 oneOriginAge;
+layout(location = kParticleOneVelocityLifeLocation) uniform vec4 oneVelocityLife;
+layout(location = kParticleOneExtraLocation) uniform vec4 oneExtra;
 #else
-layout(std430, binding = 0) readonly buffer Particles { Particle particles[]; };
+layout(std430, binding = kParticlePoolBinding) readonly buffer Particles { Particle particles[]; };
 #endif
 #if PARTICLE_SOURCE == 1
-layout(std430, binding = 2) readonly buffer LiveIndices { uint liveIndex[]; };
+layout(std430, binding = kParticleLiveBinding) readonly buffer LiveIndices { uint liveIndex[]; };
 #endif
 
-layout(location = 0) uniform mat4 viewMatrix;
-layout(location = 1) uniform mat4 projectionMatrix;
+layout(location = kParticleViewLocation) uniform mat4 viewMatrix;
+layout(location = kParticleProjectionLocation) uniform mat4 projectionMatrix;
 
 layout(location = 0) out vec2 corner;
 layout(location = 1) out vec4 color;

@@ -3,9 +3,11 @@
 // the scene, upsampled by the bilinear filter; blended ONE, ONE_MINUS_SRC_ALPHA. Additive light sums
 // without limit in the off-screen target; the clamp here keeps scene.color (16-bit floats, 65504 at
 // most) finite: it gains at most hdrMax.
+#include "common/scene_bindings.glsl"
+
 layout(location = 1) in vec2 uv;
 layout(binding = 0) uniform sampler2D particles;
-layout(location = 0) uniform float hdrMax;
+layout(location = kHdrMaxLocation) uniform float hdrMax;
 layout(location = 0) out vec4 outColor;
 
 void main() {

@@ -3,13 +3,15 @@
 // Red: how far through its life (age / lifetime), green: alive, blue: which emitter (0 to 1).
 #include "particle_common.glsl"
 
+#include "particles_bindings.glsl"
+
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 0) readonly buffer Particles { Particle particles[]; };
-layout(binding = 0, rgba32f) uniform writeonly image2D view;
+layout(std430, binding = kParticlePoolBinding) readonly buffer Particles { Particle particles[]; };
+layout(binding = kPoolViewImageBinding, rgba32f) uniform writeonly image2D view;
 
-layout(location = 0) uniform uint slots;
-layout(location = 1) uniform float emitterScale;  // 1 / (emitters - 1), or 0 for one emitter
+layout(location = kPoolViewSlotsLocation) uniform uint slots;
+layout(location = kPoolViewEmitterScaleLocation) uniform float emitterScale;  // 1 / (emitters - 1), or 0 for one emitter
 
 void main() {
     uint slot = gl_GlobalInvocationID.x;

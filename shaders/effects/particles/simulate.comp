@@ -6,26 +6,28 @@
 // rules and numbers as ParticleSystem::update on the CPU (common/effects/particles/particle_system.cpp).
 #include "particle_common.glsl"
 
+#include "particles_bindings.glsl"
+
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 0) buffer Particles { Particle particles[]; };
-layout(std430, binding = 3) buffer Stats { uint replaced; uint live; };
+layout(std430, binding = kParticlePoolBinding) buffer Particles { Particle particles[]; };
+layout(std430, binding = kParticleStatsBinding) buffer Stats { uint replaced; uint live; };
 
-layout(location = 0) uniform uint firstSlot;
-layout(location = 1) uniform uint slots;
-layout(location = 2) uniform uint head;  // ring index of this frame's first spawn
-layout(location = 3) uniform uint spawnCount;
-layout(location = 4) uniform uint firstNumber;  // low 32 bits of the oldest spawn's number
-layout(location = 5) uniform float newestAge;
-layout(location = 6) uniform float period;
-layout(location = 7) uniform float dt;
-layout(location = 8) uniform int chapterLifetime;
-layout(location = 9) uniform vec3 origin;
-layout(location = 10) uniform float riseSpeed;
-layout(location = 11) uniform float spread;
-layout(location = 12) uniform uint seed;
-layout(location = 13) uniform float lifetime;
-layout(location = 14) uniform uint emitterIndex;
+layout(location = kSimulateFirstSlotLocation) uniform uint firstSlot;
+layout(location = kSimulateSlotsLocation) uniform uint slots;
+layout(location = kSimulateHeadLocation) uniform uint head;  // ring index of this frame's first spawn
+layout(location = kSimulateSpawnCountLocation) uniform uint spawnCount;
+layout(location = kSimulateFirstNumberLocation) uniform uint firstNumber;  // low 32 bits of the oldest spawn's number
+layout(location = kSimulateNewestAgeLocation) uniform float newestAge;
+layout(location = kSimulatePeriodLocation) uniform float period;
+layout(location = kSimulateDtLocation) uniform float dt;
+layout(location = kSimulateChapterLifetimeLocation) uniform int chapterLifetime;
+layout(location = kSimulateOriginLocation) uniform vec3 origin;
+layout(location = kSimulateRiseSpeedLocation) uniform float riseSpeed;
+layout(location = kSimulateSpreadLocation) uniform float spread;
+layout(location = kSimulateSeedLocation) uniform uint seed;
+layout(location = kSimulateLifetimeLocation) uniform float lifetime;
+layout(location = kSimulateEmitterIndexLocation) uniform uint emitterIndex;
 
 Particle spawnParticle(uint number, float age) {
     vec3 velocity = vec3(0.0, riseSpeed, 0.0);

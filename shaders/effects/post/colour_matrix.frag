@@ -1,11 +1,14 @@
 #version 450 core
-// Colour conversion by an affine transform on linear HDR colour (effects/colour_matrix.hpp):
+// Colour conversion by an affine transform on linear HDR colour (effects/post/colour_matrix.hpp):
 // rgb' = colourMatrix * rgb + colourOffset. With offset 0 this is the chapter's mat3 (section 3.5);
 // the offset is what an inverted picture or an added brightness needs.
+#include "common/scene_bindings.glsl"
+#include "post_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D source;
-layout(location = 200) uniform mat3 colourMatrix;  // column-major, uploaded without transpose
-layout(location = 201) uniform vec3 colourOffset;
-layout(location = 202) uniform float hdrMax;       // the largest value written
+layout(location = kColourMatrixLocation) uniform mat3 colourMatrix;  // column-major, uploaded without transpose
+layout(location = kColourOffsetLocation) uniform vec3 colourOffset;
+layout(location = kHdrMaxLocation) uniform float hdrMax;             // the largest value written
 
 layout(location = 0) out vec4 color;
 

@@ -1,9 +1,10 @@
 #version 450 core
-// The frame's one output transform (effects/output_transform_pass.hpp): linear light in, the sRGB
+// The frame's one output transform (effects/post/output_transform_pass.hpp): linear light in, the sRGB
 // encoding out. Encoding twice looks washed out and not at all looks too dark (Shader effects §3.4),
 // so this is the only place that does it. With a split view the columns left of the divider show
 // `before`, through the same transform, so the two halves differ only by the effect.
 #include "../../common/output_transform.glsl"
+#include "post_bindings.glsl"
 
 // The split view and the tone curve are built into the program (SPLIT_VIEW, TONE_CURVE: one program
 // each, effects/post/fullscreen_variants.hpp): as uniforms, llvmpipe fetched `before` and ran all three
@@ -12,12 +13,12 @@ layout(binding = 0) uniform sampler2D after;
 #if SPLIT_VIEW
 layout(binding = 1) uniform sampler2D before;
 // The first pixel column that shows `after`.
-layout(location = 0) uniform int divider;
+layout(location = kOutputDividerLocation) uniform int divider;
 #endif
-// The tone curve before the encoding (effects/output_transform_pass.hpp: ToneCurve); 0: none.
+// The tone curve before the encoding (effects/post/output_transform_pass.hpp: ToneCurve); 0: none.
 const int curve = TONE_CURVE;
 // Multiplies the light before the curve (1: unchanged).
-layout(location = 2) uniform float exposure;
+layout(location = kOutputExposureLocation) uniform float exposure;
 
 layout(location = 0) out vec4 color;
 

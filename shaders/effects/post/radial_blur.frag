@@ -1,9 +1,9 @@
 #version 450 core
-// Radial blur (effects/radial_blur.hpp): the average of taps from the pixel toward the centre.
+// Radial blur (effects/post/radial_blur.hpp): the average of taps from the pixel toward the centre.
 #include "radial_blur_offset.glsl"
 
 layout(binding = 0) uniform sampler2D source;
-layout(location = 4) uniform int samples;  // 1 to 256
+layout(location = kBlurSamplesLocation) uniform int samples;  // 1 to 256
 
 layout(location = 0) out vec4 color;
 

@@ -2,7 +2,9 @@
 // The engine's own user-interface queue (Shader effects chapter §3.4: drawn last, straight into the window,
 // with the depth test off): a translucent panel with a light border and a sun disc. Its colours are
 // display values already, so nothing after the output transform may touch them.
-layout(location = 0) uniform vec4 panel;  // x, y, width, height of the panel in window pixels
+#include "post_bindings.glsl"
+
+layout(location = kUiPanelLocation) uniform vec4 panel;  // x, y, width, height of the panel in window pixels
 layout(location = 0) out vec4 color;
 
 void main() {

@@ -6,10 +6,10 @@
 #include "../../common/lighting.glsl"
 
 // Material textures are sRGB textures, so sampling them returns linear values already.
-layout(binding = 0) uniform sampler2D baseColorTexture;
-layout(binding = 1) uniform sampler2D emissiveTexture;
-// The largest value written (effects/hdr_scene_pass.hpp: kSceneHdrMax).
-layout(location = 30) uniform float hdrMax;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
+layout(binding = kEmissiveTextureBinding) uniform sampler2D emissiveTexture;
+// The largest value written (effects/scene/hdr_scene_pass.hpp: kSceneHdrMax).
+layout(location = kHdrMaxLocation) uniform float hdrMax;
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;

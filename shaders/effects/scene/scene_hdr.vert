@@ -1,5 +1,5 @@
 #version 450 core
-// The scene's vertices for the linear-HDR scene pass (effects/hdr_scene_pass.hpp).
+// The scene's vertices for the linear-HDR scene pass (effects/scene/hdr_scene_pass.hpp).
 #include "../../common/scene_uniforms.glsl"
 
 layout(location = 0) in vec3 position;

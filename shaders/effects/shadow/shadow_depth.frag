@@ -4,8 +4,11 @@
 // fence, a lattice) casts its holes. The cutoff is a uniform of each program that links this file: a
 // program whose cutoff was never set keeps GL's initial 0, discards nothing, and its cut-out casters
 // throw solid shadows (Shader effects §2: the skinned shadow program needs its own cutoff).
-layout(location = 5) uniform float alphaCutoff;
-layout(binding = 0) uniform sampler2D baseColorTexture;
+#include "common/scene_bindings.glsl"
+#include "shadow_bindings.glsl"
+
+layout(location = kAlphaCutoffLocation) uniform float alphaCutoff;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
 
 layout(location = 1) in vec2 texcoord;
 

@@ -2,9 +2,11 @@
 // The shadow map for people: the depth written by the light's orthographic projection is already
 // linear in distance, so it is turned into metres from the light's near plane (1 m = 1.0), with
 // the cleared background (depth 1, nothing there) shown as -1 so it stands apart in the inspector.
+#include "shadow_bindings.glsl"
+
 layout(binding = 0) uniform sampler2D shadowDepth;
-layout(location = 0) uniform vec2 depthRangeMetres;  // x: near, y: far, along the light
-layout(location = 1) uniform vec2 targetSize;          // the view's size in pixels
+layout(location = kDepthViewRangeLocation) uniform vec2 depthRangeMetres;  // x: near, y: far, along the light
+layout(location = kDepthViewTargetSizeLocation) uniform vec2 targetSize;   // the view's size in pixels
 layout(location = 0) out vec4 color;
 
 void main() {

@@ -8,8 +8,8 @@
 // GROUPED_PRODUCT selects the slow form for the lesson's comparison.
 #include "../../common/skinning.glsl"
 
-layout(location = 0) uniform mat4 modelMatrix;
-layout(location = 2) uniform mat4 viewProjectionMatrix;
+layout(location = kModelLocation) uniform mat4 modelMatrix;
+layout(location = kViewProjectionLocation) uniform mat4 viewProjectionMatrix;
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 texcoord;  // for the alpha cutoff (shadow_depth.frag)

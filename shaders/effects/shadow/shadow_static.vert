@@ -3,8 +3,10 @@
 // view-projection is at location 2, where the lit shaders have the camera's. Only the uniforms this
 // program really has are declared: a material upload to location 3 or 4 is an error here, which is
 // the chapter's error flood when a draw path does not ask first (section 2.4).
-layout(location = 0) uniform mat4 modelMatrix;
-layout(location = 2) uniform mat4 viewProjectionMatrix;
+#include "common/scene_bindings.glsl"
+
+layout(location = kModelLocation) uniform mat4 modelMatrix;
+layout(location = kViewProjectionLocation) uniform mat4 viewProjectionMatrix;
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 texcoord;  // for the alpha cutoff (shadow_depth.frag)

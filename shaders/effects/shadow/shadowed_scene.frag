@@ -1,13 +1,13 @@
 #version 450 core
 // Linear-HDR lighting with the directional light's shadow (shaders/common/shadowed_lighting.glsl).
-// Written clamped and NaN-free like the plain scene pass (effects/hdr_scene_pass.hpp, kSceneHdrMax).
+// Written clamped and NaN-free like the plain scene pass (effects/scene/hdr_scene_pass.hpp, kSceneHdrMax).
 #include "../../common/scene_uniforms.glsl"
 #include "../../common/shadow_lookup.glsl"
 #include "../../common/shadowed_lighting.glsl"
 
-layout(binding = 0) uniform sampler2D baseColorTexture;
-layout(binding = 1) uniform sampler2D emissiveTexture;
-layout(location = 30) uniform float hdrMax;
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
+layout(binding = kEmissiveTextureBinding) uniform sampler2D emissiveTexture;
+layout(location = kHdrMaxLocation) uniform float hdrMax;
 // Cut-out materials: the same cutoff the shadow pass uses (ShadowMap, kAlphaCutoff), so a surface has
 // holes exactly where its shadow has them. Opaque textures (alpha 1) never reach it.
 const float kAlphaCutoff = 0.5;

@@ -1,5 +1,5 @@
 #version 450 core
-// The lit scene with shadows (effects/shadow_lit_pass.hpp): scene_hdr.vert plus the world position,
+// The lit scene with shadows (effects/shadow/shadow_lit_pass.hpp): scene_hdr.vert plus the world position,
 // which the shadow lookup needs.
 #include "../../common/scene_uniforms.glsl"
 

@@ -3,10 +3,11 @@
 // matrices; PARENTHESISED chooses T*(J*p) (two mat4*vec4: 32 mul, 24 add) over (T*J)*p
 // (mat4*mat4 then mat4*vec4: 80 mul, 60 add). The result is the same; the cost is not.
 #include "../../common/scene_uniforms.glsl"
+#include "skinning_bindings.glsl"
 layout(location = 0) in vec3 position;
 layout(location = 2) in vec3 normal;
-layout(location = 20) uniform mat4 joints[4];
-layout(location = 24) uniform int spheresPerRow;
+layout(location = kJointsLocation) uniform mat4 joints[4];
+layout(location = kSpheresPerRowLocation) uniform int spheresPerRow;
 layout(location = 2) out vec3 worldNormal;
 void main() {
     // Weights from the vertex position: smooth, sum to 1, different for every vertex.

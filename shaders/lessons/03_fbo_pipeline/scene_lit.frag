@@ -9,10 +9,12 @@
 #include "../../common/shadowed_lighting.glsl"
 #include "../../common/output_transform.glsl"
 
-layout(binding = 0) uniform sampler2D baseColorTexture;
-layout(binding = 1) uniform sampler2D emissiveTexture;
-layout(location = 30) uniform float hdrMax;            // effects/hdr_scene_pass.hpp: kSceneHdrMax
-layout(location = 31) uniform int encodeForDisplay;    // 1: end with the display encoding
+layout(binding = kBaseColorTextureBinding) uniform sampler2D baseColorTexture;
+layout(binding = kEmissiveTextureBinding) uniform sampler2D emissiveTexture;
+#include "scene_lit_bindings.glsl"
+
+layout(location = kHdrMaxLocation) uniform float hdrMax;                // effects/scene/hdr_scene_pass.hpp: kSceneHdrMax
+layout(location = kEncodeForDisplayLocation) uniform int encodeForDisplay;  // 1: end with the display encoding
 
 layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 worldNormal;

@@ -44,6 +44,23 @@ TEST(Params, ChecksTypeAndRangeAndKeepsTheOldValue) {
     EXPECT_EQ(samples, 8);
 }
 
+// A choice bound to the enumeration it means: a name sets the enumerator, and a value out of range (a
+// preset's index, the bench) is refused, so the lesson reads it without a clamp.
+TEST(Params, AChoiceReadsAsItsEnumeration) {
+    enum class Curve { clip, reinhard, filmic };
+    fx::Choice<Curve> curve{Curve::filmic};
+    fx::ParamSet params;
+    params.addChoice("curve", &curve, {"clip", "reinhard", "filmic"}, "");
+    EXPECT_EQ(*curve, Curve::filmic);
+    ASSERT_TRUE(params.assign("curve=reinhard").ok());
+    EXPECT_EQ(*curve, Curve::reinhard);
+    EXPECT_FALSE(params.assign("curve=3").ok());
+    EXPECT_FALSE(params.fromJson(R"({"curve": "-1"})", "p.json").ok());
+    EXPECT_EQ(*curve, Curve::reinhard);
+    params.find("curve")->set(7);  // the program setting it directly is clamped into range
+    EXPECT_EQ(*curve, Curve::filmic);
+}
+
 TEST(Params, PresetRoundTripAndAllOrNothingLoad) {
     float a = 1.0f;
     int c = 0;

@@ -1,4 +1,5 @@
-// docs/scene-format.md shows the every-field fixture and the smallest scene; they must stay true.
+// docs/scene-format.md shows the every-field fixture and the smallest scene, the limits and the settings
+// that start lessons' parameters; they must stay true.
 #include <gtest/gtest.h>
 #include "base/paths.hpp"
 
@@ -11,6 +12,7 @@
 #include "base/message_text.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/scene_settings.hpp"
 #include "scene_test_support.hpp"
 
 namespace {
@@ -57,7 +59,8 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         row("`objects`", std::to_string(limits::kMaxObjects)),
         row("`lights`", std::to_string(limits::kMaxLights)),
         row("`lightGrids`", std::to_string(limits::kMaxLightGrids) + " (and " +
-                                std::to_string(fx::kMaxGridLights) + " lights from all of them)"),
+                                std::to_string(fx::kMaxGridLights) +
+                                " point lights from them and `lights` together)"),
         row("`emitters`", std::to_string(limits::kMaxEmitters)),
         row("`clouds`", std::to_string(limits::kMaxClouds)),
         row("clips named by one object", std::to_string(limits::kMaxClipsPerObject)),
@@ -74,6 +77,17 @@ TEST(SceneDocs, TheLimitsTableMatchesTheCode) {
         EXPECT_NE(markdown->find(expected), std::string::npos) << expected;
     EXPECT_NE(markdown->find("Messages quote at most " + std::to_string(fx::kExcerptBytes) + " bytes"),
               std::string::npos);
+}
+
+// The settings table is the declarations' (scene/scene_settings.cpp): a range or a default changed in
+// one place and not the other fails here.
+TEST(SceneDocs, TheSettingsTableIsTheDeclarations) {
+    auto markdown = fx::readTextFile(fx::projectRoot() / "docs" / "scene-format.md");
+    ASSERT_TRUE(markdown.ok()) << markdown.error();
+    const std::string expected = fx::settingsTableMarkdown();
+    EXPECT_NE(markdown->find(expected), std::string::npos)
+        << "docs/scene-format.md's settings table is not scene/scene_settings.cpp's; it reads:\n"
+        << expected;
 }
 
 }  // namespace

@@ -403,18 +403,18 @@ const BadField kBadFields[] = {
      R"([{"op":"replace","path":"/clouds/0/bottom","value":60}])",
      "clouds[0].bottom",
      {"not below top"}},
-    {"StepsZero",
-     R"([{"op":"replace","path":"/clouds/0/steps","value":0}])",
+    {"StepsNegative",
+     R"([{"op":"replace","path":"/clouds/0/steps","value":-1}])",
      "clouds[0].steps",
-     {"0 is out of range [1, 512]"}},
+     {"-1 is out of range [0, 512]"}},
     {"StepsTooMany",
      R"([{"op":"replace","path":"/clouds/0/steps","value":513}])",
      "clouds[0].steps",
-     {"513 is out of range [1, 512]"}},
-    {"ThresholdOne",
-     R"([{"op":"replace","path":"/clouds/0/threshold","value":1}])",
+     {"513 is out of range [0, 512]"}},
+    {"ThresholdAboveOne",
+     R"([{"op":"replace","path":"/clouds/0/threshold","value":1.5}])",
      "clouds[0].threshold",
-     {"1 is out of range [0, 1)"}},
+     {"1.5 is out of range [0, 1]"}},
     {"NoiseLayersCount",
      R"([{"op":"remove","path":"/clouds/0/noise/1"}])",
      "clouds[0].noise",
@@ -448,7 +448,7 @@ const BadField kBadFields[] = {
     {"BloomLevelsZero",
      R"([{"op":"replace","path":"/postEffects/bloom/levels","value":0}])",
      "postEffects.bloom.levels",
-     {"out of range [1, 16]"}},
+     {"out of range [1, 8]"}},
     {"BloomKneeAboveOne",
      R"([{"op":"replace","path":"/postEffects/bloom/knee","value":2}])",
      "postEffects.bloom.knee",
@@ -565,15 +565,29 @@ TEST(SceneErrors, TooManyObjectsAreRefusedBeforeAnyIsRead) {
     ASSERT_FALSE(scene.ok());
     EXPECT_TRUE(contains(scene.error(), ": objects: 100000 entries; a scene may have at most 4096"))
         << scene.error();
-    std::string lights;
-    for (int i = 0; i < 300; ++i)
-        lights += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
-    auto lit = fx::parseScene(
-        R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "lights": [)" + lights +
-            "]}",
-        nominalFile(), scene_test::testOptions());
-    ASSERT_FALSE(lit.ok());
-    EXPECT_TRUE(contains(lit.error(), ": lights: 300 entries; a scene may have at most 256")) << lit.error();
+    // As many point lights as the GPU list holds (lesson 10 lights 1024), written one by one.
+    auto withLights = [&](int count, const std::string& grids) {
+        std::string lights;
+        for (int i = 0; i < count; ++i)
+            lights += std::string(i ? "," : "") + R"({"type": "point", "position": [0, 1, 0]})";
+        return fx::parseScene(
+            R"({"name": "a", "camera": {"position": [0, 1, 2], "target": [0, 0, 0]}, "lights": [)" + lights +
+                "]" + grids + "}",
+            nominalFile(), scene_test::testOptions());
+    };
+    auto many = withLights(300, "");
+    EXPECT_TRUE(many.ok()) << many.error();
+    auto tooMany = withLights(1100, "");
+    ASSERT_FALSE(tooMany.ok());
+    EXPECT_TRUE(contains(tooMany.error(), ": lights: 1100 entries; a scene may have at most 1024"))
+        << tooMany.error();
+    // One list for both forms: 300 lights and a 32 x 32 grid are 1324 point lights.
+    auto both = withLights(300, R"(, "lightGrids": [{"center": [0, 1, 0], "count": [32, 32]}])");
+    ASSERT_FALSE(both.ok());
+    EXPECT_TRUE(contains(both.error(),
+                         "lightGrids[0].count: the scene's point lights and grids make 1324 lights "
+                         "together; at most 1024"))
+        << both.error();
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Every field is read, and a scene survives save and load unchanged.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "scene/scene_loader.hpp"
 #include "scene/scene_writer.hpp"
 #include "scene_test_support.hpp"
@@ -162,6 +164,17 @@ TEST(SceneRoundTrip, ShortestNumbersInTheText) {
     EXPECT_NE(text.find("\"near\": 0.05,"), std::string::npos) << text;
     EXPECT_NE(text.find("\"emissive\": [8, 4, 1]"), std::string::npos) << text;
     EXPECT_EQ(text.find("0.0500000"), std::string::npos) << text;
+}
+
+// A lens focused at a far mountain: JSON has no number for infinity, so the file writes the word.
+TEST(SceneRoundTrip, FocusAtInfinityIsWrittenAsTheWord) {
+    fx::Scene scene = loadEveryField();
+    ASSERT_TRUE(scene.camera.lens.has_value());
+    scene.camera.lens->focusDistanceM = std::numeric_limits<float>::infinity();
+    std::string text = fx::saveScene(scene);
+    EXPECT_NE(text.find("\"focusDistance\": \"infinity\""), std::string::npos) << text;
+    fx::Scene again = reload(scene);
+    EXPECT_TRUE(again == scene) << text;
 }
 
 TEST(SceneRoundTrip, ChangedFieldBreaksEquality) {

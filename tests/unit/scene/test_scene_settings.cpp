@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "scene/scene_settings.hpp"
@@ -52,6 +53,34 @@ TEST(SceneSettings, EveryPathIsKnownWhateverTheSceneHas) {
         EXPECT_TRUE(known(path));
     }
     EXPECT_FALSE(known("camera.lens.aperture"));
+}
+
+// One range: a parameter made from a setting takes both ends of what a scene file may hold (bloom
+// levels up to the chain's 8, a focus distance up to infinity), and what the setting refuses it refuses.
+TEST(SceneSettings, AParameterTakesEveryValueItsSettingAllows) {
+    for (const fx::SettingSpec& spec : fx::sceneSettingSpecs()) {
+        SCOPED_TRACE(spec.path);
+        fx::ParamSet params;
+        float number = 0.0f;
+        int whole = 0;
+        fx::Param& p = spec.type == fx::ParamType::Float ? params.addSetting("p", &number, spec)
+                                                         : params.addSetting("p", &whole, spec);
+        EXPECT_EQ(p.min, spec.min);
+        EXPECT_EQ(p.max, spec.max);
+        EXPECT_EQ(p.sceneSetting, spec.path);
+        for (double end : {spec.min, spec.max}) {
+            EXPECT_TRUE(params.assign("p=" + spec.valueText(end)).ok()) << spec.valueText(end);
+        }
+        if (spec.type != fx::ParamType::Choice && !std::isinf(spec.max)) {
+            EXPECT_FALSE(params.assign("p=" + spec.valueText(spec.max + 1)).ok());
+        }
+    }
+    float focus = 0.0f;
+    fx::ParamSet params;
+    params.addSetting("focus_distance", &focus, fx::sceneSetting("camera.lens.focusDistance"));
+    ASSERT_TRUE(params.assign("focus_distance=100000").ok());
+    ASSERT_TRUE(params.assign("focus_distance=infinity").ok());
+    EXPECT_TRUE(std::isinf(focus));
 }
 
 }  // namespace
