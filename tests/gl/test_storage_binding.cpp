@@ -53,8 +53,8 @@ gl::Program jointReader(const fs::path& dir, int slot) {
 class StorageBinding : public GlTest {};
 
 TEST_F(StorageBinding, EverySkinningProgramDeclaresTheJointBlockAtTheBindingTheCppSideBinds) {
-    ShadowMap shadows = ShadowMap::create();
-    ASSERT_TRUE(shadows.usable()) << shadows.error();
+    ShadowMap shadows;
+    ASSERT_TRUE(programsBuilt());
     auto pose = gl::Program::build({"effects/scene/pose.vert", {}, {}, {}, "test pose"});
     ASSERT_TRUE(pose.ok()) << pose.error();
     const std::array<std::pair<const char*, GLuint>, 3> programs = {{
@@ -63,7 +63,7 @@ TEST_F(StorageBinding, EverySkinningProgramDeclaresTheJointBlockAtTheBindingTheC
         {"pose (transform feedback)", pose->name()},
     }};
     for (const auto& [what, program] : programs) {
-        EXPECT_EQ(jointBlockBinding(program), GLint(storage_binding::jointMatrices)) << what;
+        EXPECT_EQ(jointBlockBinding(program), GLint(glsl::kJointMatricesBinding)) << what;
     }
 }
 
@@ -91,7 +91,7 @@ TEST_F(StorageBinding, ABufferBoundOnceIsReadByEveryProgramThatDeclaresTheBlock)
     glGetNamedBufferSubData(seen.name(), 0, GLsizeiptr(back.size() * sizeof(glm::vec4)), back.data());
     glUseProgram(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, storage_binding::jointMatrices, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, glsl::kJointMatricesBinding, 0);
     for (int i = 0; i < 2; ++i) {
         EXPECT_EQ(back[std::size_t(i)], glm::vec4(1, 2, 3, 2))
             << "program " << i << ": joint 1's translation and the joint count";
