@@ -155,7 +155,11 @@ struct ReloadableProgram::State {
         auto built = Program::build(sources);
         if (!built) {
             error = built.error();
-            log::error(error, program ? "(keeping the last good program)" : "");
+            if (!program && !shaderSubstituteFiles().empty() && buildOursInstead()) {
+                log::error(error, "(drawing with the lesson's own file until yours compiles)");
+            } else {
+                log::error(error, program ? "(keeping the last good program)" : "");
+            }
             // Watch the top-level files so that a fix is picked up; includes are watched once they built.
             std::vector<fs::path> files = watched;
             for (auto* p : {&sources.vertex, &sources.fragment, &sources.compute}) {
@@ -171,6 +175,18 @@ struct ReloadableProgram::State {
         ++generation;
         rememberStamps(program.sourceFiles());
         return Status::success();
+    }
+
+    // A student's file (an exercise) that never compiled: the program builds from our own files, the
+    // last good program there is, so the lesson opens; the error stays the student's, and the first
+    // save that compiles takes over.
+    bool buildOursInstead() {
+        ShaderSubstitutesSetAside ours;
+        auto built = Program::build(sources);
+        if (!built) return false;
+        program = std::move(*built);
+        ++generation;
+        return true;
     }
 
     bool reloadIfChanged() {

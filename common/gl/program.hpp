@@ -64,7 +64,8 @@ public:
     ReloadableProgram& operator=(const ReloadableProgram&) = delete;
 
     // Builds from the current files. On failure the last good program stays in use and error()
-    // says why.
+    // says why. One that never built from a student's file (gl/shader_substitutes.hpp) is built from
+    // ours instead, keeping the student's error, so an exercise's lesson opens.
     Status reload();
     // Reloads when a source file (or an include) changed on disk since the last attempt.
     bool reloadIfChanged();

@@ -1,6 +1,7 @@
 #include "gl/shader_substitutes.hpp"
 
 #include <map>
+#include <utility>
 
 #include "base/paths.hpp"
 
@@ -33,6 +34,12 @@ ShaderSubstitute::~ShaderSubstitute() {
         substitutes()[original_] = *before_;
     else
         substitutes().erase(original_);
+}
+
+ShaderSubstitutesSetAside::ShaderSubstitutesSetAside() : set_(std::exchange(substitutes(), {})) {}
+
+ShaderSubstitutesSetAside::~ShaderSubstitutesSetAside() {
+    substitutes() = std::move(set_);
 }
 
 fs::path substitutedShaderFile(const fs::path& file) {

@@ -4,6 +4,7 @@
 // errors then name the student's file and line, and the reload watch follows it, so an exercise reuses
 // the live reload that keeps the last good program (app/exercise_*.hpp, docs/exercises.md).
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -21,6 +22,19 @@ public:
 private:
     std::filesystem::path original_;
     std::optional<std::filesystem::path> before_;
+};
+
+// Sets every substitute aside for the life of this object, so that programs build from our files: a
+// lesson whose student's file never compiled opens with the lesson's own program (ReloadableProgram).
+class ShaderSubstitutesSetAside {
+public:
+    ShaderSubstitutesSetAside();
+    ~ShaderSubstitutesSetAside();
+    ShaderSubstitutesSetAside(const ShaderSubstitutesSetAside&) = delete;
+    ShaderSubstitutesSetAside& operator=(const ShaderSubstitutesSetAside&) = delete;
+
+private:
+    std::map<std::filesystem::path, std::filesystem::path> set_;
 };
 
 // The file to read for `file` (absolute): its substitute, or `file` itself.

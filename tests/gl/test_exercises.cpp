@@ -1,12 +1,16 @@
 // Every exercise graded as the check grades it: its solution passes, its starter fails, each typical
 // wrong answer fails with the hint written for it, NaN is found and named, a compile error names the
-// student's file and line, and the student's file stands in for ours only while it is set.
+// student's file and line, the student's file stands in for ours only while it is set, and a lesson
+// whose student's file never compiled draws with ours until a save compiles.
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
+#include <optional>
 
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
+#include "base/paths.hpp"
 #include "gl/program.hpp"
 #include "gl/shader_substitutes.hpp"
 #include "gl_test.hpp"
@@ -40,6 +44,12 @@ protected:
     fs::path write(const std::string& name, const std::string& text) {
         std::ofstream(dir / name) << text;
         return dir / name;
+    }
+    // A fragment shader that includes the lesson's circle of confusion (exercise 09-1's file).
+    fs::path cocProbe() {
+        return write("probe.frag",
+                     "#version 450 core\n#include \"effects/dof/coc.glsl\"\nout vec4 c;\n"
+                     "void main() { c = vec4(signedCocPixels(0.5)); }\n");
     }
 };
 
@@ -112,9 +122,7 @@ TEST_F(Exercises, ACompileErrorNamesTheStudentsFileAndLine) {
 
 TEST_F(Exercises, AStudentsFileStandsInForOursOnlyWhileItIsSet) {
     const fs::path student = write("coc.glsl", "float signedCocPixels(float d) { return 7.0; }\n");
-    const fs::path frag = write("probe.frag",
-                                "#version 450 core\n#include \"effects/dof/coc.glsl\"\nout vec4 c;\n"
-                                "void main() { c = vec4(signedCocPixels(0.5)); }\n");
+    const fs::path frag = cocProbe();
     {
         gl::ShaderSubstitute substitute("effects/dof/coc.glsl", student);
         auto built = gl::Program::build({"common/fullscreen.vert", frag, {}, {}, "substituted"});
@@ -126,4 +134,28 @@ TEST_F(Exercises, AStudentsFileStandsInForOursOnlyWhileItIsSet) {
     ASSERT_TRUE(ours.ok()) << ours.error();
     EXPECT_EQ(std::find(ours->sourceFiles().begin(), ours->sourceFiles().end(), student),
               ours->sourceFiles().end());
+}
+
+TEST_F(Exercises, AStudentsFileThatNeverCompiledLeavesOursDrawingUntilASaveCompiles) {
+    const fs::path student = write("coc.glsl", "float signedCocPixels(float d) {\n    return 7.0 * dd;\n}\n");
+    const fs::path frag = cocProbe();
+    gl::ShaderSubstitute substitute("effects/dof/coc.glsl", student);
+    gl::ProgramRegistry registry;
+    gl::ReloadableProgram program({"common/fullscreen.vert", frag, {}, {}, "exercise fallback"});
+    // The lesson opens: ours draws, and the error is the student's, with their file and line.
+    EXPECT_TRUE(program.usable()) << program.error();
+    EXPECT_EQ(registry.firstUnusable(), std::nullopt);
+    EXPECT_NE(program.error().find(student.string() + ":2:"), std::string::npos) << program.error();
+    const auto& ours = program.program().sourceFiles();
+    EXPECT_EQ(std::find(ours.begin(), ours.end(), student), ours.end()) << "built from our own file";
+    EXPECT_EQ(gl::substitutedShaderFile(shaderDir() / "effects/dof/coc.glsl"), student)
+        << "the substitute is back after the fallback";
+
+    // The save that compiles takes over.
+    std::ofstream(student) << "float signedCocPixels(float d) { return 7.0; }\n";
+    fs::last_write_time(student, fs::last_write_time(student) + std::chrono::seconds(1));
+    EXPECT_EQ(registry.reloadChanged(), 1);
+    EXPECT_TRUE(program.error().empty()) << program.error();
+    const auto& theirs = program.program().sourceFiles();
+    EXPECT_NE(std::find(theirs.begin(), theirs.end(), student), theirs.end());
 }
