@@ -24,7 +24,9 @@ import sys
 # cycle 1, then holds for as many cycles as were run (seven: no rise after cycle 3); a leak keeps
 # rising and the long run's many cycles show it.
 HEAP_TOLERANCE_KIB = 2048
-RESIDENT_TOLERANCE_KIB = 16384
+# 64 MiB: lesson 07's resident peak moves by about 40 MB from one cycle to the next in some runs (its
+# step 4 pool's pages kept by malloc or given back); a leak shows in the heap and the GL objects.
+RESIDENT_TOLERANCE_KIB = 65536
 OBJECT_KINDS = ["textures", "buffers", "framebuffers", "renderbuffers", "vertexArrays", "samplers", "queries",
                 "programs", "shaders", "transformFeedbacks"]
 
