@@ -15,11 +15,14 @@ and C++ cannot disagree. This check fails on:
     uniforms on one location (arrays take one location per element), or two different buffers,
     images or samplers on one binding.
 
-check_bindings.py ROOT [--expect FILE]: with --expect, the findings must equal FILE's lines (the
-checker's own test, on tests/bindings/fixture)."""
+check_bindings.py [ROOT] [--expect FILE] (tests/checker_cli.py); its fixture is tests/bindings/fixture."""
 import os
 import re
 import sys
+import pathlib
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
 
 # Not converted yet: the overlay's shaders and their C++ (common/ui), which the classroom work is
 # rewriting as this lands. Everything else is checked.
@@ -186,27 +189,10 @@ def check(root):
 
 
 def main():
-    args = sys.argv[1:]
-    if not args:
-        print(__doc__)
-        return 2
-    problems = check(args[0])
-    if "--expect" in args:
-        expected = open(args[args.index("--expect") + 1], encoding="utf-8").read().splitlines()
-        if problems != expected:
-            print("the checker's findings differ from the fixture's expected.txt:")
-            for line in problems:
-                print("  got:      " + line)
-            for line in expected:
-                print("  expected: " + line)
-            return 1
-        print(f"{len(problems)} violations found, as expected")
-        return 0
-    for line in problems:
-        print(line)
-    if not problems:
-        print(f"{len(programs(args[0]))} programs checked: every location and binding is named once")
-    return 1 if problems else 0
+    return checker_cli.run(
+        "check_bindings", lambda root: check(str(root)),
+        lambda root: f"{len(programs(str(root)))} programs checked: every location and binding is named once",
+        __doc__)
 
 
 if __name__ == "__main__":

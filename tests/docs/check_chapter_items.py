@@ -19,6 +19,9 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
+
 PAGE = "docs/chapters.md"
 REFERENCE = re.compile(r"`(gl|unit|gl_app|ctest|file):([^`\s]+)`")
 GTEST = re.compile(r"\bTEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)\s*\)")
@@ -84,22 +87,8 @@ def check(root):
 
 
 def main(args):
-    root = pathlib.Path(args[1]) if len(args) > 1 else pathlib.Path(__file__).resolve().parents[2]
-    expect = pathlib.Path(args[3]) if len(args) == 4 and args[2] == "--expect" else None
-    found = check(root)
-    if expect is not None:
-        wanted = expect.read_text(encoding="utf-8").splitlines()
-        if found == wanted:
-            print(f"check_chapter_items: reports at {root} as expected ({len(found)} lines)")
-            return 0
-        print("check_chapter_items: expected\n  " + "\n  ".join(wanted) + "\ngot\n  " + "\n  ".join(found))
-        return 1
-    for problem in found:
-        print(problem)
-    if found:
-        return 1
-    print(f"check_chapter_items: every test and file {PAGE} names exists")
-    return 0
+    return checker_cli.run("check_chapter_items", check, lambda root: f"every test and file {PAGE} names exists",
+                           __doc__, args[1:])
 
 
 if __name__ == "__main__":

@@ -15,6 +15,9 @@ Standard library only (python3 is on CI).
 import pathlib
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
+
 GLOSSARY = "docs/japanese-terms.md"
 COLUMNS = ["English", "Japanese", "not", "note"]
 
@@ -105,40 +108,29 @@ def problems(root):
     return found, len(files), len(terms)
 
 
-def main(argv):
-    args = argv[1:]
-    expect = None
-    if len(args) == 3 and args[1] == "--expect":
-        expect = pathlib.Path(args[2])
-        args = args[:1]
-    if len(args) > 1:
-        print(__doc__, file=sys.stderr)
-        return 2
-    root = pathlib.Path(args[0]) if args else pathlib.Path(__file__).resolve().parents[2]
+def reported(root):
+    """The lines check_japanese_terms reports at root: each variant found, or what keeps it from checking."""
     try:
-        found, file_count, term_count = problems(root)
+        found, file_count, _ = problems(root)
     except TableError as error:
-        found, file_count, term_count = [f"check_japanese_terms: {error}"], 0, 0
-    if expect is not None:
-        wanted = expect.read_text(encoding="utf-8").splitlines()
-        if found == wanted:
-            print(f"check_japanese_terms: reports at {root} as expected ({len(found)} lines)")
-            return 0
-        print(f"check_japanese_terms: at {root} expected:\n  " + "\n  ".join(wanted) +
-              "\nbut got:\n  " + "\n  ".join(found or ["(nothing)"]))
-        return 1
-    if found:
-        print("\n".join(found))
-        if file_count:
-            print(f"check_japanese_terms: {len(found)} line{'s' if len(found) != 1 else ''} to fix ({file_count} lesson.ja.md files checked; "
-                  f"write the second word in quotes instead of the first)")
-        return 1
+        return [f"check_japanese_terms: {error}"]
     if file_count == 0:
-        print(f"check_japanese_terms: no lessons/*/lesson.ja.md under {root}")
-        return 1
-    print(f"check_japanese_terms: {file_count} lesson.ja.md files, {term_count} terms from {GLOSSARY}, "
-          f"no variant to avoid")
-    return 0
+        return [f"check_japanese_terms: no lessons/*/lesson.ja.md under {root}"]
+    return found
+
+
+def main(argv):
+    def passed(root):
+        _, file_count, term_count = problems(root)
+        return f"{file_count} lesson.ja.md files, {term_count} terms from {GLOSSARY}, no variant to avoid"
+
+    def failed(_root, found):
+        if found[0].startswith("check_japanese_terms:"):
+            return None  # the glossary or the lessons could not be read: nothing to fix line by line
+        return (f"{len(found)} line{'s' if len(found) != 1 else ''} to fix "
+                "(write the second word in quotes instead of the first)")
+
+    return checker_cli.run("check_japanese_terms", reported, passed, __doc__, argv[1:], failed=failed)
 
 
 if __name__ == "__main__":

@@ -15,6 +15,9 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
+
 LAYER_CALL = re.compile(r"^\s*fx_add_layer\(\s*(\w+)([^)]*)\)", re.M)
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 SOURCE_SUFFIXES = {".h", ".hpp", ".cpp"}
@@ -77,31 +80,11 @@ def violations(root):
 
 
 def main(argv):
-    if len(argv) not in (2, 4) or (len(argv) == 4 and argv[2] != "--expect"):
-        print(__doc__, file=sys.stderr)
-        return 2
-    root = pathlib.Path(argv[1])
-    found = violations(root)
-    if len(argv) == 4:
-        expected = [l for l in pathlib.Path(argv[3]).read_text().splitlines() if l.strip()]
-        if found == expected:
-            print(f"the checker finds exactly the {len(expected)} expected violation(s) in {root}")
-            return 0
-        print("the checker's findings differ from the expected ones", file=sys.stderr)
-        for line in found:
-            print(("  found:    " if line not in expected else "  ok:       ") + line, file=sys.stderr)
-        for line in expected:
-            if line not in found:
-                print("  missed:   " + line, file=sys.stderr)
-        return 1
-    for line in found:
-        print(line, file=sys.stderr)
-    if found:
-        print(f"{len(found)} include(s) break the layering (README.md, Layout; common/CMakeLists.txt)",
-              file=sys.stderr)
-        return 1
-    print(f"every include in {root / 'common'} and {root / 'tests' / 'unit'} respects the layers")
-    return 0
+    return checker_cli.run(
+        "check_layers", violations,
+        lambda root: f"every include in {root / 'common'} and {root / 'tests' / 'unit'} respects the layers",
+        __doc__, argv[1:],
+        failed=lambda root, found: f"{len(found)} include(s) break the layering (README.md, Layout; common/CMakeLists.txt)")
 
 
 if __name__ == "__main__":

@@ -5,13 +5,16 @@ lesson.ja.md, its code in .cpp files, the last line of one of them FX_LESSON(Cla
 folder gives the number and the slug, cmake/FxLesson.cmake), and no header that only one file
 includes (it belongs in that file). Prints one line per violation; exits 1 when there is one.
 
-check_lesson_folders.py ROOT [--expect FILE]: with --expect, the output must equal FILE's lines (the
-checker's own test, on tests/lessons/fixture).
+check_lesson_folders.py [ROOT] [--expect FILE] (tests/checker_cli.py); its fixture is tests/lessons/fixture.
 check_lesson_folders.py --readme README.md FILE: README's smallest lesson (the C++ block after "The
 smallest lesson") is FILE, the lesson the build compiles and runs, to the letter."""
 import os
 import re
 import sys
+import pathlib
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
+import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
 
 FOLDER = re.compile(r"^[0-9][0-9]_[a-z0-9]+(_[a-z0-9]+)*$")
 MACRO = re.compile(r'^FX_LESSON\(\s*[\w:]+\s*,\s*"[^"]+"\s*,\s*"([^"]*)"\s*\)\s*$')
@@ -79,10 +82,7 @@ def readme_block(readme):
 
 def main():
     args = sys.argv[1:]
-    if not args:
-        print(__doc__)
-        return 2
-    if args[0] == "--readme":
+    if args[:1] == ["--readme"] and len(args) == 3:
         shown = readme_block(args[1])
         built = open(args[2], encoding="utf-8").read()
         if shown != built:
@@ -90,23 +90,9 @@ def main():
             return 1
         print(f"{args[1]} shows {args[2]} as it is ({built.count(chr(10))} lines)")
         return 0
-    problems = check(args[0])
-    if "--expect" in args:
-        expected = open(args[args.index("--expect") + 1], encoding="utf-8").read().splitlines()
-        if problems != expected:
-            print("the checker's findings differ from the fixture's expected.txt:")
-            for line in problems:
-                print("  got:      " + line)
-            for line in expected:
-                print("  expected: " + line)
-            return 1
-        print(f"{len(problems)} violations found, as expected")
-        return 0
-    for line in problems:
-        print(line)
-    if not problems:
-        print(f"every lesson folder under {os.path.join(args[0], 'lessons')} has the lesson shape")
-    return 1 if problems else 0
+    return checker_cli.run(
+        "check_lesson_folders", lambda root: check(str(root)),
+        lambda root: f"every lesson folder under {root / 'lessons'} has the lesson shape", __doc__)
 
 
 if __name__ == "__main__":
