@@ -14,19 +14,8 @@ source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 edit "$work/four_lights.json" 'd["lightGrids"][0]["count"] = [3, 1]; d["objects"] = [o for o in d["objects"] if "mirror" not in o]'
 edit "$work/edge_on.json" 'd["camera"] = {"position": [0, 0.02, 12], "target": [0, 0.02, 0], "fovY": 55, "near": 0.1, "far": 200}'
 
-# check <report> <python expression on the report r>: prints the expression's failure
-check() {
-  python3 - "$1" "$2" <<'PY' || fail "$1: $2"
-import json, sys
-r = json.load(open(sys.argv[1]))
-passes = {p["name"]: p for p in r["passes"]}
-finite = all(s["nan"] == 0 and s["inf"] == 0 for t in r["textures"] for s in t.get("stats", []))
-ok = eval(sys.argv[2])
-if not ok:
-    print(json.dumps([(p["name"], p["status"], p["reason"]) for p in r["passes"]], indent=1))
-sys.exit(0 if ok else 1)
-PY
-}
+# check <report> <python expression on the report r, passes, facts, finite>: prints the expression's failure
+check() { python3 "$(dirname "$0")/report.py" check "$1" "$2" || fail "$1: $2"; }
 
 run() {  # run <name> <frames> <args...>
   local name="$1" frames="$2"; shift 2

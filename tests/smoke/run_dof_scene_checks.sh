@@ -13,9 +13,10 @@ for step in 2 4 5 6 7; do
   if ! "$exe" --headless --size 64x36 --frames 2 --step "$step" --scene "$scene" --report "$report" >"$work/log" 2>&1; then
     echo "FAIL: step $step exited with an error:"; cat "$work/log"; status=1; continue
   fi
-  python3 - "$report" "$step" <<'PY' || status=1
-import json, sys
-report, step = json.load(open(sys.argv[1])), sys.argv[2]
+  PYTHONPATH="$(dirname "$0")" python3 - "$report" "$step" <<'PY' || status=1
+import sys
+from report import load
+report, step = load(sys.argv[1]), sys.argv[2]
 passes = []
 def walk(o):
     if isinstance(o, dict):
@@ -49,11 +50,12 @@ for run in "4 focus_distance=0.0311769" "6 focus_distance=0.0311769" "6 focus_di
   report="$work/extreme-$1-$2.json"
   "$exe" --headless --size 63x63 --frames 1 --step "$1" --param "$2" --report "$report" >"$work/log" 2>&1 ||
     { echo "FAIL: step $1 with $2 exited with an error:"; cat "$work/log"; status=1; continue; }
-  python3 - "$report" "$1 $2" <<'PY' || status=1
-import json, sys
-r = json.load(open(sys.argv[1]))
-stats = [s for t in r["textures"] for s in t.get("stats", [])]
-bad = sum(s["nan"] + s["inf"] for s in stats)
+  PYTHONPATH="$(dirname "$0")" python3 - "$report" "$1 $2" <<'PY' || status=1
+import sys
+from report import load, non_finite, texture_stats
+r = load(sys.argv[1])
+stats = texture_stats(r)
+bad = non_finite(r)
 if r["glErrors"] or bad or not stats:
     print(f"FAIL: {sys.argv[2]}: {r['glErrors']} GL errors, {bad} NaN/Inf in {len(stats)} channels")
     sys.exit(1)

@@ -13,12 +13,12 @@ for step in 1 2 3 4 5; do
     --graph "$work/step-$step.dot" >"$work/step-$step.log" 2>&1 \
     || { echo "FAIL: step $step exited with an error"; cat "$work/step-$step.log"; exit 1; }
 done
-python3 - "$work" <<'PY' || status=1
-import json, sys
+PYTHONPATH="$(dirname "$0")" python3 - "$work" <<'PY' || status=1
+import sys
+from report import load
 work = sys.argv[1]
 def report(step):
-    with open(f"{work}/step-{step}.json") as f:
-        return json.load(f)
+    return load(f"{work}/step-{step}.json")
 def inherited(r, name):
     return next(p["stateInherited"] for p in r["passes"] if p["name"] == name)
 failures = []

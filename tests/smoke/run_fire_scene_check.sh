@@ -22,12 +22,9 @@ edit "$dir/.check-$tag-negative.json" "$nosprite"'
 d["emitters"][0]["rate"] = -5'
 edit "$dir/.check-$tag-nosprite.json" 'd["emitters"][0]["sprite"] = "no_such_sprite.png"'
 
-pass_field() {  # pass_field <report> <pass> <field>
-  python3 -c "import json,sys; r=json.load(open(sys.argv[1])); print(next((str(p[sys.argv[3]]) for p in r['passes'] if p['name']==sys.argv[2]), 'absent'))" "$@"
-}
-fact() {  # fact <report> <name>
-  python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['facts'].get(sys.argv[2], 'absent'))" "$@"
-}
+report_py="$(dirname "$0")/report.py"
+pass_field() { python3 "$report_py" pass "$@"; }  # pass_field <report> <pass> <field>
+fact() { python3 "$report_py" fact "$@"; }        # fact <report> <name>
 
 for step in 4 5; do
   "$exe" --headless --size 64x36 --frames 2 --step $step --scene "$dir/.check-$tag-none.json" \

@@ -20,13 +20,13 @@ run "$exe03" l03-step4-bug --step 4 --param viewport_bug=true
 run "$exe04" l04-step2 --step 2
 "$exe04" --list-params >"$work/l04-params.txt" 2>&1 || { echo "FAIL: --list-params"; exit 1; }
 PYTHONPATH="$here" python3 - "$work" <<'PY'
-import json, sys
+import sys
 from png_pixels import read_png
+from report import load
 work = sys.argv[1]
 failures = []
 def report(name):
-    with open(f"{work}/{name}.json") as f:
-        return json.load(f)
+    return load(f"{work}/{name}.json")
 for name in ("l03-step4", "l03-step4-bug", "l04-step2"):
     if report(name)["glErrors"] != 0:
         failures.append(f"{name}: GL errors")

@@ -12,12 +12,9 @@ rm -rf "$work" && mkdir -p "$work"
 status=0
 source "$(dirname "$0")/scene_copy.sh"  # fail, edit
 
-fact() {  # fact <report> <name>
-  python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['facts'].get(sys.argv[2], 'absent'))" "$@"
-}
-report_field() {  # report_field <report> <field>
-  python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$@"
-}
+report_py="$(dirname "$0")/report.py"
+fact() { python3 "$report_py" fact "$@"; }          # fact <report> <name>
+report_field() { python3 "$report_py" field "$@"; }  # report_field <report> <field>
 
 # The copies' sprite resolves from the work folder: the copies draw soft dots instead.
 for n in 1 34 256; do

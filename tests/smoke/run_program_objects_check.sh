@@ -16,12 +16,12 @@ run() {  # run <name> <args...>
 for step in 1 2 3 4 5; do run "step-$step" --step "$step"; done
 run step-1-none --step 1 --param broken_shader=none
 run step-2-none --step 2 --param broken_shader=none
-python3 - "$work" <<'PY'
-import json, sys
+PYTHONPATH="$(dirname "$0")" python3 - "$work" <<'PY'
+import sys
+from report import load
 work = sys.argv[1]
 def report(name):
-    with open(f"{work}/{name}.json") as f:
-        return json.load(f)
+    return load(f"{work}/{name}.json")
 def final(name):
     with open(f"{work}/{name}/final.png", "rb") as f:
         return f.read()

@@ -57,9 +57,10 @@ done
 if cmp -s "$work/06_bloom/final.png" "$work/steered/final.png"; then
   fail "editing the scene's bloom and tone map did not change the picture"
 fi
-python3 - "$work/steered/report.json" <<'PY' || status=1
-import json, sys
-params = {p["name"]: p for p in json.load(open(sys.argv[1]))["params"]}
+PYTHONPATH="$(dirname "$0")" python3 - "$work/steered/report.json" <<'PY' || status=1
+import sys
+from report import load, params as by_name
+params = by_name(load(sys.argv[1]))
 bad = [n for n, want in (("intensity", "scene"), ("tone_map", "scene"), ("karis", "default")) if params[n]["source"] != want]
 if bad or params["tone_map"]["value"] != "reinhard":
     print("FAIL: the report's params:", {n: params[n] for n in ("intensity", "tone_map", "karis")})

@@ -19,8 +19,9 @@ done
 "$exe" --headless --size 64x36 --frames 1 --step 2 --report "$work/step-2.json" >"$work/step-2.log" 2>&1 \
   || { echo "FAIL: step 2 exited with an error:"; cat "$work/step-2.log"; exit 1; }
 PYTHONPATH="$here" python3 - "$work" <<'PY'
-import json, re, sys
+import re, sys
 from png_pixels import read_png
+from report import facts, load
 work = sys.argv[1]
 # The chapter's final per-frame pipeline table, rows 2 to 14, as the fxlab passes that do each row.
 TABLE = ["shadow map", "scene", "bloom bright pass", "bloom down", "bloom up", "bloom composite",
@@ -36,8 +37,7 @@ def follows(executed):
 failures = []
 reports = {}
 for order in (0, 1):
-    with open(f"{work}/order-{order}.json") as f:
-        r = json.load(f)
+    r = load(f"{work}/order-{order}.json")
     reports[order] = r
     if r["glErrors"] != 0:
         failures.append(f"order {order}: {r['glErrors']} GL errors ({r['lastGlError']})")
@@ -51,8 +51,7 @@ if follows(executed1):
     failures.append(f"the colour matrix before the bloom should break the chapter's order: {executed1}")
 if not str(reports[1]["facts"].get("followsChapterTable", "")).startswith("no"):
     failures.append(f"order 1: the lesson should say it leaves the chapter's order")
-with open(f"{work}/step-2.json") as f:
-    emitters = json.load(f)["facts"].get("brightestEmitters", "")
+emitters = facts(load(f"{work}/step-2.json")).get("brightestEmitters", "")
 if "sun 300" not in emitters or "firefly 900" not in emitters:
     failures.append(f"step 2: the panel should quote the scene's emitters (sun 300, firefly 900): {emitters!r}")
 def coloured(order):
