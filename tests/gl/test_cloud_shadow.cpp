@@ -10,10 +10,8 @@
 #include "effects/clouds/cloud_shadow_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "gl/readback.hpp"
+#include "gl_frame_runner.hpp"
 #include "gl_test.hpp"
-#include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
-#include "render_gl/pass_timer.hpp"
 
 using namespace fx;
 
@@ -87,23 +85,19 @@ protected:
         std::vector<float> d = sky ? std::vector<float>(std::size_t(kSize * kSize), 1.0f) : floorDepth(s);
         glTextureSubImage2D(depth.name(), 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, d.data());
 
-        FrameGraph graph(OutputTarget{{kSize, kSize}, "output", TextureFormat::RGBA8, 0});
-        TextureHandle dh = graph.importTexture("scene.depth", depth.spec(), depth.name());
-        TextureHandle map = pass.declareMap(graph, dh, density, s, {toLight, 0.7f, kCloudShadowSamples});
         FloatImage result;
-        graph
-            .addPass("read back",
-                     [map, &result](PassContext& ctx) {
-                         result = gl::readTexture(ctx.native(map), {kSize, kSize, TextureFormat::R16F, 1});
-                     })
-            .read(map)
-            .keepAlive();
-        Status status = graph.execute(pool, executor);
-        EXPECT_TRUE(status) << (status ? "" : status.error());
-        graph.releaseTextures();
-        pool.endFrame();
-        glUseProgram(0);
-        glBindVertexArray(0);
+        test::GlFrameRunner({kSize, kSize}).frame([&](FrameGraph& graph) {
+            TextureHandle dh = graph.importTexture("scene.depth", depth.spec(), depth.name());
+            TextureHandle map = pass.declareMap(graph, dh, density, s, {toLight, 0.7f, kCloudShadowSamples});
+            graph
+                .addPass(
+                    "read back",
+                    [map, &result](PassContext& ctx) {
+                        result = gl::readTexture(ctx.native(map), {kSize, kSize, TextureFormat::R16F, 1});
+                    })
+                .read(map)
+                .keepAlive();
+        });
         return result;
     }
 
@@ -129,10 +123,6 @@ protected:
     }
 
     CloudShadowPass pass;
-    GlTextureAllocator allocator;
-    TexturePool pool{allocator};
-    PassTimer timer{TimingMode::Off, ""};
-    GlPassExecutor executor{timer, {0, true}};
 };
 
 TEST_F(CloudShadowOnGl, NoCloudLetsAllTheSunThroughExactly) {

@@ -87,25 +87,23 @@ TEST_F(CloudsOnGl, AJitterAveragedOverFramesConvergesToManySamples) {
         return std::sqrt(sum / double(w * h));
     };
     double firstError = 0, lastError = 0;
+    GlFrameRunner runner({w, h});  // one pool for the 16 frames, as in the lesson
     for (int frame = 0; frame < 16; ++frame) {
         const float zero[4] = {0, 0, 0, 0};
         glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
         CloudFrameSettings f = s;
         f.dither = CloudDither::ign;
         f.frameIndex = frame;
-        FrameGraph graph(OutputTarget{{w, h}, "output", TextureFormat::RGBA8, 0});
-        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
-        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
-        temporal.declare(graph, pass, {c, d, nullptr}, constant, f, {true, false}, 1u, {w, h});
-        Status status = graph.execute(pool, executor);
+        Status status = runner.frame([&](FrameGraph& graph) {
+            TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+            TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+            temporal.declare(graph, pass, {c, d, nullptr}, constant, f, {true, false}, 1u, {w, h});
+        });
         ASSERT_TRUE(status) << status.error();
-        graph.releaseTextures();
-        pool.endFrame();
         FloatImage out = gl::readTexture(color);
         ASSERT_TRUE(allFinite(out));
         (frame == 0 ? firstError : lastError) = rmse(out);
     }
-    glDisable(GL_BLEND);
     EXPECT_EQ(temporal.framesAveraged(), 16);
     EXPECT_GT(firstError, 0.01);  // one frame of 8 jittered samples is visibly off
     EXPECT_LT(lastError, 0.5 * firstError);

@@ -16,11 +16,9 @@
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "gl/readback.hpp"
+#include "gl_frame_runner.hpp"
 #include "gl_test.hpp"
 #include "image/png_file.hpp"
-#include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
-#include "render_gl/pass_timer.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace fx::test {
@@ -106,17 +104,11 @@ protected:
         glTextureSubImage2D(depth.name(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
                             depth01.data());
 
-        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
-        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
-        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
-        pass.declare(graph, {c, d, nullptr}, density, settings);
-        Status status = graph.execute(pool, executor);
-        EXPECT_TRUE(status) << (status ? "" : status.error());
-        graph.releaseTextures();
-        pool.endFrame();
-        glDisable(GL_BLEND);
-        glUseProgram(0);
-        glBindVertexArray(0);
+        GlFrameRunner({width, height}).frame([&](FrameGraph& graph) {
+            TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+            TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+            pass.declare(graph, {c, d, nullptr}, density, settings);
+        });
         return gl::readTexture(color);
     }
 
@@ -150,21 +142,15 @@ protected:
         glClearTexImage(color.name(), 0, GL_RGBA, GL_FLOAT, zero);
         glClearTexImage(depth.name(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
 
-        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
-        TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
-        TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
-        ShadowSettings shadowSettings = shadowCastingLight(scene)->shadow;
-        DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), shadowSettings, {});
-        EXPECT_NE(map.pass, nullptr);
-        EXPECT_FALSE(map.lookup.light.fallbackDirection);
-        pass.declare(graph, {c, d, &map}, density, settings);
-        Status status = graph.execute(pool, executor);
-        EXPECT_TRUE(status) << (status ? "" : status.error());
-        graph.releaseTextures();
-        pool.endFrame();
-        glDisable(GL_BLEND);
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(GL_TRUE);
+        GlFrameRunner({width, height}).frame([&](FrameGraph& graph) {
+            TextureHandle c = graph.importTexture("scene.color", color.spec(), color.name());
+            TextureHandle d = graph.importTexture("scene.depth", depth.spec(), depth.name());
+            ShadowSettings shadowSettings = shadowCastingLight(scene)->shadow;
+            DeclaredShadowMap map = shadows.declare(graph, World(scene, meshes, 0.0), shadowSettings, {});
+            EXPECT_NE(map.pass, nullptr);
+            EXPECT_FALSE(map.lookup.light.fallbackDirection);
+            pass.declare(graph, {c, d, &map}, density, settings);
+        });
         return gl::readTexture(color);
     }
     static float alphaAt(const FloatImage& image, int x, int y) { return image.texel(x, y, 3); }
@@ -172,10 +158,6 @@ protected:
     CloudPass pass;
     CloudDensityTexture constant;
     float a = 0.0f;
-    GlTextureAllocator allocator;
-    TexturePool pool{allocator};
-    PassTimer timer{TimingMode::Off, ""};
-    GlPassExecutor executor{timer, {0, true}};
 };
 
 // The cloud density texture the lessons ship (res/textures/cloud_density.png).

@@ -175,9 +175,9 @@ TEST_F(DeferredHardCases, PositionErrorFarFromTheOrigin) {
     SceneMeshes meshes(*scene);
     GBufferPass gbuffer;
     const Size2D size{96, 54};
-    GraphRunner runner(size.width, size.height);
+    GlFrameRunner runner(size);
     auto measure = [&](GBufferLayout layout, float offset) {
-        FloatImage error = runner.run(size, [&](FrameGraph& graph) {
+        FloatImage error = runner.frameAndRead([&](FrameGraph& graph) {
             GBufferTargets g =
                 gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, true, glm::vec3(offset, 0, 0)});
             return lighting.declarePositionError(graph, *scene, g);
@@ -231,8 +231,8 @@ TEST_F(DeferredHardCases, ManyLightsCostWidthTimesHeightTimesLightsUnlessCulled)
     lights.upload(gpuPointLights(allLights(*scene), kMaxGridLights));
     ASSERT_EQ(lights.count(), 1024);
     const Size2D size{320, 180};
-    GraphRunner runner(size.width, size.height);
-    FloatImage heat = runner.run(size, [&](FrameGraph& graph) {
+    GlFrameRunner runner(size);
+    FloatImage heat = runner.frameAndRead([&](FrameGraph& graph) {
         GBufferTargets g =
             gbuffer.declare(graph, World(*scene, meshes, 0.0), {GBufferLayout::compact, false, {}});
         return culling.declare(graph, *scene, g, lights).heat;

@@ -23,12 +23,8 @@
 #include "gl/program.hpp"
 #include "gl/readback.hpp"
 #include "gl/texture.hpp"
+#include "gl_frame_runner.hpp"
 #include "gl_test.hpp"
-#include "render/frame_graph.hpp"
-#include "render/texture_pool.hpp"
-#include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
-#include "render_gl/pass_timer.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_fullscreen_harness.hpp"
 
@@ -37,37 +33,6 @@ namespace fx::test {
 inline constexpr int kW = 6, kH = 1;
 // Exact in RGBA8 (153, 102 and 51 over 255), so the stored albedo is the one the CPU side uses.
 inline const glm::vec3 kAlbedo(0.6f, 0.4f, 0.2f);
-
-// Runs frame-graph passes on the GL executor, as a lesson does.
-struct GraphRunner {
-    GlTextureAllocator allocator;
-    TexturePool pool{allocator};
-    PassTimer timer{TimingMode::Off, ""};
-    GlPassExecutor executor{timer, {0, true}};
-    gl::Texture output;
-    gl::Framebuffer outputFbo{"test.output"};
-
-    GraphRunner(int w, int h) : output(gl::Texture::create2D(TextureFormat::RGBA8, w, h, 1, "test.output")) {
-        outputFbo.attachColor(0, output);
-        outputFbo.setDrawBuffers(1);
-        executor.setPresentFramebuffer(outputFbo.name());
-    }
-
-    template <class Declare>
-    FloatImage run(Size2D size, Declare declare) {
-        FrameGraph graph(OutputTarget{size, "output", TextureFormat::RGBA8, 0});
-        TextureHandle result = declare(graph);
-        graph.capture(result);
-        FloatImage out;
-        Status status = graph.execute(pool, executor);
-        EXPECT_TRUE(status) << (status ? "" : status.error());
-        if (status) out = gl::readTexture(graph.texture(result).native, graph.texture(result).spec, 0);
-        graph.releaseTextures();
-        pool.endFrame();
-        test::EffectRunner::restoreInitialState();
-        return out;
-    }
-};
 
 // A scene with no light but the point lights the test gives: a black sun (setFrameUniforms would
 // otherwise use a default white one), no ambient, the default camera.
@@ -135,8 +100,8 @@ protected:
         glTextureSubImage2D(normal.name(), 0, 0, 0, kW, kH, GL_RG, GL_FLOAT, nrm.data());
         glTextureSubImage2D(depth.name(), 0, 0, 0, kW, kH, GL_DEPTH_COMPONENT, GL_FLOAT, d.data());
         lights.upload(pointLights);
-        GraphRunner runner(kW, kH);
-        return runner.run({kW, kH}, [&](FrameGraph& graph) {
+        GlFrameRunner runner({kW, kH});
+        return runner.frameAndRead([&](FrameGraph& graph) {
             GBufferTargets g;
             g.layout = GBufferLayout::compact;
             g.albedo = graph.importTexture("gbuffer.albedo", albedo.spec(), albedo.name());

@@ -113,7 +113,7 @@ TEST_F(DeferredHardCases, SharpeningReachesItsRangeInFloatAndClipsInEightBits) {
     scene.background = glm::vec3(0.2f, 0.4f, 0.6f);
     LectureMrt mrt;
     ASSERT_TRUE(programsBuilt());
-    GraphRunner runner(w, h);
+    GlFrameRunner runner({w, h});
     SharpenTargets targets;
     auto declare = [&](FrameGraph& graph) {
         MrtTargets t{d.import(graph, "mrt.diffuse"),
@@ -123,8 +123,8 @@ TEST_F(DeferredHardCases, SharpeningReachesItsRangeInFloatAndClipsInEightBits) {
         targets = mrt.declareSharpen(graph, scene, t);
         return targets.kept;
     };
-    FloatImage kept = runner.run({w, h}, declare);
-    FloatImage clipped = runner.run({w, h}, [&](FrameGraph& graph) {
+    FloatImage kept = runner.frameAndRead(declare);
+    FloatImage clipped = runner.frameAndRead([&](FrameGraph& graph) {
         declare(graph);
         return targets.clipped;
     });
@@ -151,9 +151,9 @@ TEST_F(DeferredHardCases, RawRgba8NormalsLoseTheirNegativeHalf) {
     SceneMeshes meshes(*scene);
     GBufferPass gbuffer;
     const Size2D size{96, 54};
-    GraphRunner runner(size.width, size.height);
+    GlFrameRunner runner(size);
     auto normals = [&](GBufferLayout layout) {
-        return runner.run(size, [&](FrameGraph& graph) {
+        return runner.frameAndRead([&](FrameGraph& graph) {
             return gbuffer.declare(graph, World(*scene, meshes, 0.0), {layout, false, glm::vec3(0)}).normal;
         });
     };
@@ -189,21 +189,21 @@ TEST_F(DeferredHardCases, ForwardAndDeferredAgreeToEightBitQuantisation) {
     LectureMrt mrt;
     ASSERT_TRUE(programsBuilt());
     const Size2D size{512, 512};
-    GraphRunner runner(size.width, size.height);
-    FloatImage forward = runner.run(size, [&](FrameGraph& graph) {
+    GlFrameRunner runner(size);
+    FloatImage forward = runner.frameAndRead([&](FrameGraph& graph) {
         return rtt.declare(graph, World(*scene, meshes, 0.0), RttDepth::renderbuffer);
     });
     MrtTargets targets;
     auto declareTerms = [&](FrameGraph& graph) {
         targets = mrt.declare(graph, World(*scene, meshes, 0.0), MrtOrder::fixed, nullptr);
     };
-    FloatImage sum = runner.run(size, [&](FrameGraph& graph) {
+    FloatImage sum = runner.frameAndRead([&](FrameGraph& graph) {
         declareTerms(graph);
         return mrt.declareComposite(graph, *scene, targets);
     });
     FloatImage terms[3];
     for (int i = 0; i < 3; ++i)
-        terms[i] = runner.run(size, [&](FrameGraph& graph) {
+        terms[i] = runner.frameAndRead([&](FrameGraph& graph) {
             declareTerms(graph);
             return i == 0 ? targets.diffuse : i == 1 ? targets.specular : targets.ambient;
         });

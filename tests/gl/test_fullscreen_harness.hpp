@@ -10,13 +10,10 @@
 #include <functional>
 #include <string>
 
-#include "gl/framebuffer.hpp"
 #include "gl/readback.hpp"
 #include "gl/texture.hpp"
+#include "gl_frame_runner.hpp"
 #include "image/image.hpp"
-#include "render/frame_graph.hpp"
-#include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
 
 namespace fx::test {
 
@@ -45,60 +42,30 @@ FloatImage makeImage(int width, int height, F f) {
     return image;
 }
 
+// An effect on a synthetic input: the input uploaded into a texture of the format asked for and
+// imported as "test.input", the effect declared on it, the result read back.
 class EffectRunner {
 public:
     using Declare = std::function<TextureHandle(FrameGraph&, TextureHandle input)>;
 
-    EffectRunner(int width, int height)
-        : width_(width),
-          height_(height),
-          timer_(TimingMode::Off, ""),
-          executor_(timer_, {0, true}),
-          output_(gl::Texture::create2D(TextureFormat::RGBA8, width, height, 1, "test.output")),
-          outputFbo_("test.output") {
-        outputFbo_.attachColor(0, output_);
-        outputFbo_.setDrawBuffers(1);
-        executor_.setPresentFramebuffer(outputFbo_.name());
-    }
+    EffectRunner(int width, int height) : runner_({width, height}) {}
 
     // Uploads `input` into a texture of `format`, declares the effect on a fresh graph and runs it.
     // Returns the texture `declare` names, read back as floats (empty when the graph failed).
     FloatImage run(const FloatImage& input, TextureFormat format, const Declare& declare) {
-        gl::Texture texture = gl::Texture::create2D(format, width_, height_, 1, "test.input");
-        glTextureSubImage2D(texture.name(), 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, input.texels.data());
+        Size2D size = runner_.size();
+        gl::Texture texture = gl::Texture::create2D(format, size.width, size.height, 1, "test.input");
+        glTextureSubImage2D(texture.name(), 0, 0, 0, size.width, size.height, GL_RGBA, GL_FLOAT,
+                            input.texels.data());
         storedInput = gl::readTexture(texture);
-
-        FrameGraph graph(OutputTarget{{width_, height_}, "output", TextureFormat::RGBA8, 0});
-        TextureHandle in = graph.importTexture("test.input", {width_, height_, format, 1}, texture.name());
-        TextureHandle result = declare(graph, in);
-        graph.capture(result);
-        FloatImage out;
-        Status status = graph.execute(pool_, executor_);
-        lastErrors = status ? std::string() : status.error();
-        report = graph.report();
-        if (status) {
-            const TextureView& view = graph.texture(result);
-            if (view.native != 0 && view.origin != TextureOrigin::PresentedOutput) {
-                out = gl::readTexture(view.native, view.spec, 0);
-            }
-            presented = gl::readFramebufferRgba8(outputFbo_.name(), width_, height_);
-        }
-        graph.releaseTextures();
-        pool_.endFrame();
-        restoreInitialState();
+        FloatImage out = runner_.frameAndRead([&](FrameGraph& graph) {
+            return declare(graph, graph.importTexture("test.input", {size.width, size.height, format, 1},
+                                                      texture.name()));
+        });
+        lastErrors = runner_.lastError;
+        report = runner_.report;
+        if (lastErrors.empty()) presented = runner_.presented();
         return out;
-    }
-
-    // The tests share one context: leave it as GL starts, so a later test that relies on the defaults
-    // (depth writes on, say) does not inherit a full-screen pass's state (Shader effects, hard case 15).
-    static void restoreInitialState() {
-        glDepthMask(GL_TRUE);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glUseProgram(0);
-        glBindVertexArray(0);
     }
 
     FloatImage storedInput;  // the input as the GPU stored it (rounded to the format)
@@ -107,13 +74,7 @@ public:
     std::string lastErrors;
 
 private:
-    int width_, height_;
-    GlTextureAllocator allocator_;
-    TexturePool pool_{allocator_};
-    PassTimer timer_;
-    GlPassExecutor executor_;
-    gl::Texture output_;
-    gl::Framebuffer outputFbo_;
+    GlFrameRunner runner_;
 };
 
 }  // namespace fx::test

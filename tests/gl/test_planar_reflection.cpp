@@ -64,10 +64,10 @@ protected:
         FloatImage shown;      // deferred.color after the mirror's surface
     };
     Frame render(Size2D size, int fraction) {
-        GraphRunner runner(size.width, size.height);
+        GlFrameRunner runner(size);
         Frame f;
         for (bool wantReflection : {true, false}) {
-            FloatImage image = runner.run(size, [&](FrameGraph& graph) {
+            FloatImage image = runner.frameAndRead([&](FrameGraph& graph) {
                 const World world(scene, *meshes, 0.0);
                 GBufferTargets g = gbuffer.declare(graph, world, {GBufferLayout::compact, false, {}});
                 TextureHandle lit =

@@ -8,31 +8,18 @@
 #include "gl/program.hpp"
 #include "gl/readback.hpp"
 #include "gl/texture.hpp"
+#include "gl_frame_runner.hpp"
 #include "gl_test.hpp"
-#include "render/frame_graph.hpp"
-#include "render_gl/gl_pass_executor.hpp"
-#include "render_gl/gl_texture_allocator.hpp"
 #include "ui/overlay.hpp"
 
 namespace fx::test {
 
-struct UiHarness {
+// The screen is the runner's output ("test.output"), with pass timing on as in a window.
+struct UiHarness : GlFrameRunner {
     int width, height;
-    GlTextureAllocator allocator;
-    TexturePool pool{allocator};
-    PassTimer timer{TimingMode::Fenced, reinterpret_cast<const char*>(glGetString(GL_RENDERER))};
-    GlPassExecutor executor{timer, {0, true}};
-    gl::Texture screen;
-    gl::Framebuffer screenFbo{"test.screen"};
     Overlay overlay{nullptr};
-    FrameReport lastReport;
 
-    UiHarness(int w, int h) : width(w), height(h) {
-        screen = gl::Texture::create2D(TextureFormat::RGBA8, w, h, 1, "test.screen");
-        screenFbo.attachColor(0, screen);
-        screenFbo.setDrawBuffers(1);
-        executor.setPresentFramebuffer(screenFbo.name());
-    }
+    UiHarness(int w, int h) : GlFrameRunner({w, h}, TimingMode::Fenced), width(w), height(h) {}
 
     // One frame as the runner makes it: a slice of the cost panel's sweep between frames when one is
     // asked for, else build, inspect what the overlay wants, execute, draw the overlay while the
@@ -41,32 +28,31 @@ struct UiHarness {
                     bool withOverlay = true, const std::function<void(const FrameGraph&)>& whileHeld = {}) {
         if (withOverlay && overlay.costPanel().measurePending()) {
             overlay.costPanel().runPending(model.measureKnobs);
-            glBindFramebuffer(GL_FRAMEBUFFER, screenFbo.name());
+            glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer());
             glViewport(0, 0, width, height);
-            model.frame = &lastReport;
+            model.frame = &report;
             model.graph = nullptr;
             overlay.draw(model, width, height, 1.0 / 60.0);
-            return gl::readFramebufferRgba8(screenFbo.name(), width, height);
+            return presented();
         }
-        FrameGraph graph(OutputTarget{{width, height}, "output", TextureFormat::RGBA8, 0});
-        build(graph);
-        if (withOverlay) {
-            for (auto& name : overlay.wantedTextures()) graph.inspect(name);
-        }
-        EXPECT_TRUE(graph.execute(pool, executor).ok());
-        lastReport = graph.report();
-        if (whileHeld) whileHeld(graph);
-        if (withOverlay) {
-            glBindFramebuffer(GL_FRAMEBUFFER, screenFbo.name());
-            glViewport(0, 0, width, height);
-            model.frame = &lastReport;
-            model.graph = &graph;
-            overlay.draw(model, width, height, 1.0 / 60.0);
-        }
-        ByteImage image = gl::readFramebufferRgba8(screenFbo.name(), width, height);
-        graph.releaseTextures();
-        pool.endFrame();
-        return image;
+        GlFrameRunner::frame(
+            [&](FrameGraph& graph) {
+                build(graph);
+                if (withOverlay) {
+                    for (auto& name : overlay.wantedTextures()) graph.inspect(name);
+                }
+            },
+            [&](FrameGraph& graph) {
+                if (whileHeld) whileHeld(graph);
+                if (withOverlay) {
+                    glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer());
+                    glViewport(0, 0, width, height);
+                    model.frame = &report;
+                    model.graph = &graph;
+                    overlay.draw(model, width, height, 1.0 / 60.0);
+                }
+            });
+        return presented();
     }
 };
 

@@ -84,7 +84,7 @@ TEST_F(UiOverlay, LeavesGlStateAsItFoundIt) {
     scene.declare(graph);
     for (auto& name : h.overlay.wantedTextures()) graph.inspect(name);
     ASSERT_TRUE(graph.execute(h.pool, h.executor).ok());
-    glBindFramebuffer(GL_FRAMEBUFFER, h.screenFbo.name());
+    glBindFramebuffer(GL_FRAMEBUFFER, h.outputFramebuffer());
     glViewport(3, 4, 200, 100);
     glEnable(GL_DEPTH_TEST);
     glUseProgram(scene.program.name());
@@ -128,12 +128,12 @@ TEST_F(UiOverlay, KeepsAliveOnlyWhatTheOpenInspectorShows) {
     h.frame(build, lessonLikeModel(&step));
     EXPECT_TRUE(h.overlay.wantedTextures().empty())
         << "the inspector is collapsed: it must not change the frame";
-    const PassRecord* debug = h.lastReport.findPass("debug view");
+    const PassRecord* debug = h.report.findPass("debug view");
     ASSERT_NE(debug, nullptr);
     EXPECT_FALSE(debug->executed);
 
     // Listed, greyed, with the reason.
-    auto entries = listTextures(h.lastReport);
+    auto entries = listTextures(h.report);
     auto it = std::find_if(entries.begin(), entries.end(),
                            [](auto& e) { return e.texture->name == "debug.normals"; });
     ASSERT_NE(it, entries.end());
@@ -146,14 +146,14 @@ TEST_F(UiOverlay, KeepsAliveOnlyWhatTheOpenInspectorShows) {
     h.overlay.inspector().select("scene.hdr");
     for (int i = 0; i < 6; ++i) {
         h.frame(build, lessonLikeModel(&step));
-        EXPECT_FALSE(h.lastReport.findPass("debug view")->executed) << "frame " << i;
+        EXPECT_FALSE(h.report.findPass("debug view")->executed) << "frame " << i;
     }
     h.overlay.inspector().select("debug.normals");
     h.frame(build, lessonLikeModel(&step));
     auto wanted = h.overlay.wantedTextures();
     EXPECT_NE(std::find(wanted.begin(), wanted.end(), "debug.normals"), wanted.end());
     h.frame(build, lessonLikeModel(&step));
-    EXPECT_TRUE(h.lastReport.findPass("debug view")->executed) << "selecting it brings the pass back";
+    EXPECT_TRUE(h.report.findPass("debug view")->executed) << "selecting it brings the pass back";
 }
 
 // A sweep whose rows are known: one point per next().
