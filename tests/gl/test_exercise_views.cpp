@@ -58,7 +58,7 @@ const std::array<int, 3> kMagenta = {255, 0, 255};
 }  // namespace
 
 TEST_F(ExerciseViews, TheDisplayScaleMapsKnownValuesToKnownColours) {
-    // Exercise 05-1's and 09-1's display: value x 1/64 + 0.5, so 0 px is grey, +32 px white, -32 px black.
+    // Exercise 09-1's display: value x 1/64 + 0.5, so a CoC of 0 px is grey, +32 px white, -32 px black.
     const gl::Texture values =
         floatPicture({0.0f, 16.0f, -32.0f, 64.0f, kNaN, kInf, -kInf, 8.0f}, "test.values");
     const PairDisplay display{1.0f / 64.0f, 0.5f, kDifferenceGain, true};
