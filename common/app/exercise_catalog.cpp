@@ -130,6 +130,10 @@ Result<Exercise> loadExercise(const fs::path& folder) {
                 in.fail("measure", cat("unknown measure \"", exercise.measure, "\" (maxAbs or rmse)"));
             exercise.tolerance = in.requiredNumber("tolerance", NumberRange::aboveZero(1e6));
             exercise.measures = in.requiredText("measures");
+            JsonFieldReader display = in.object("display");
+            exercise.display.scale = display.requiredNumber("scale", NumberRange::aboveZero(1e6));
+            exercise.display.offset = display.number("offset", 0.0f, NumberRange::closed(-1.0, 1.0));
+            display.reportUnknown();
         } else {
             in.fail("kind", cat("unknown value \"", exercise.kind, "\" (probe or scene)"));
         }

@@ -42,6 +42,14 @@ struct ExerciseHint {
     std::string text;
 };
 
+// How the probe's numbers show as colours in the lesson's exercise views (F3): each channel value v as
+// v * scale + offset (red, green, blue; a probe writes tap offsets, pixels of blur, metres, colours).
+// The difference view shows |student - reference| * scale times the view's gain.
+struct ExerciseDisplay {
+    float scale = 1.0f;
+    float offset = 0.0f;
+};
+
 struct Exercise {
     // "probe": the student's shader is rendered by the probe and compared with the reference.
     // "scene": the student's file is a scene whose emitters are simulated (app/exercise_scene_check.hpp).
@@ -60,6 +68,7 @@ struct Exercise {
     double tolerance = 1e-5;
     std::string measures;  // what the probe's numbers are, for the message ("the tap offset of every pixel")
     std::vector<ExerciseHint> hints;
+    ExerciseDisplay display;  // "probe" only
     // "scene" only: the most particles alive at once, and how long the emitters are simulated.
     int budget = 0;
     double seconds = 10.0;

@@ -118,6 +118,7 @@ std::string number(double value) {
 
 struct Comparison {
     double measured = 0.0;
+    std::size_t worst = 0;  // the case of `measured`
     Size2D worstAt;
     std::int64_t nonFinite = 0;
     std::string firstNonFinite;  // "pixel (16, 8) at 33x17"
@@ -133,6 +134,7 @@ Comparison compareRuns(const Exercise& exercise, const ProbeRun& student, const 
                                                           : difference->maxAbs;
         if (value > out.measured || i == 0) {
             out.measured = value;
+            out.worst = i;
             out.worstAt = exercise.cases[i].size;
         }
         for (int y = 0; y < mine.height; ++y) {
@@ -188,12 +190,15 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
             first = student.error.substr(begin + 1, student.error.find('\n', at) - begin - 1);
         }
         verdict.message = cat("your shader did not build: ", first);
+        verdict.referenceImage = reference.images.front();
         return verdict;
     }
     const Comparison c = compareRuns(exercise, student, reference);
     verdict.passed = passes(exercise, c);
     verdict.measured = c.measured;
     verdict.nonFiniteTexels = c.nonFinite;
+    verdict.studentImage = student.images[c.worst];
+    verdict.referenceImage = reference.images[c.worst];
     verdict.message = cat(measureName(exercise.measure), " ", number(c.measured), " against the reference (",
                           exercise.measures, "), needs <= ", number(exercise.tolerance), "; worst at ",
                           sizeText(c.worstAt), ", ", exercise.cases.size(), " sizes");
@@ -220,6 +225,12 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
         if (hint.when == "fails") verdict.hint = hint.text;
     }
     return verdict;
+}
+
+std::string verdictSummary(const ExerciseVerdict& v) {
+    if (!v.error.empty()) return "FAIL: no measure (see the message)";
+    return cat(v.passed ? "PASS: " : "FAIL: ", measureName(v.measure), " ", number(v.measured),
+               ", needs <= ", number(v.tolerance));
 }
 
 std::string verdictJson(const ExerciseVerdict& v) {

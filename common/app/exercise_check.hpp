@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/exercise_catalog.hpp"
+#include "image/image.hpp"
 
 namespace fx {
 
@@ -25,9 +26,17 @@ struct ExerciseVerdict {
     std::string message;  // one line: what was measured against what, or why nothing could be
     std::string hint;     // for a failure: the hint for the mistake it looks like
     std::string error;    // a compile or link error (file and line), a missing file, a watchdog
+    // The probe's results (RGBA floats, rows bottom-up) in the case the verdict is decided on: the worst,
+    // so the lesson's exercise views (F3) show what the measure saw. When the student's file did not
+    // build, the reference's of the first case alone. Kept in this process only (not in the JSON).
+    FloatImage studentImage;
+    FloatImage referenceImage;
 };
 
 ExerciseVerdict checkExercise(const Exercise& exercise, const std::filesystem::path& studentFile);
+
+// "FAIL: max |difference| inf, needs <= 1e-05": pass or fail with the measure and its threshold.
+std::string verdictSummary(const ExerciseVerdict& verdict);
 
 // checkExercise in a child process that gets `seconds` to finish.
 ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const std::filesystem::path& studentFile,

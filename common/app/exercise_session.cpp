@@ -1,6 +1,7 @@
 #include "app/exercise_session.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "app/lesson_listing.hpp"
 #include "base/file_io.hpp"
@@ -9,6 +10,45 @@
 namespace fx {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// `image` into `texture` (RGBA32F, made again when its size changes); an empty image frees it.
+void upload(gl::Texture& texture, const FloatImage& image, const std::string& label) {
+    if (image.empty()) {
+        texture = {};
+        return;
+    }
+    if (!texture || texture.width() != image.width || texture.height() != image.height)
+        texture = gl::Texture::create2D(TextureFormat::RGBA32F, image.width, image.height, 1, label);
+    static constexpr GLenum kFormats[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    const GLenum format = kFormats[std::clamp(image.channels, 1, 4) - 1];
+    // Rows bottom-up, as GL keeps them: the picture shows the probe's pixels upright.
+    glTextureSubImage2D(texture.name(), 0, 0, 0, image.width, image.height, format, GL_FLOAT,
+                        image.texels.data());
+}
+
+std::string shortNumber(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", double(value));
+    return text;
+}
+
+}  // namespace
+
+ExerciseView nextExerciseView(ExerciseView view) {
+    switch (view) {
+        case ExerciseView::Off:
+            return ExerciseView::Student;
+        case ExerciseView::Student:
+            return ExerciseView::Reference;
+        case ExerciseView::Reference:
+            return ExerciseView::Difference;
+        case ExerciseView::Difference:
+            return ExerciseView::Off;
+    }
+    return ExerciseView::Off;
+}
 
 Result<std::string> exerciseSectionText(std::string_view markdown, const std::string& file, int number) {
     auto sections = parseStepSections(markdown, file, "Checked exercise");
@@ -70,7 +110,53 @@ bool ExerciseSession::recheckIfChanged() {
     }
     verdict_ = std::move(verdict);
     ++revision_;
+    if (hasViews()) {
+        upload(student_, verdict_.studentImage, cat("exercise.", exercise_.id(), ".student"));
+        upload(reference_, verdict_.referenceImage, cat("exercise.", exercise_.id(), ".reference"));
+    }
     return true;
+}
+
+PairDisplay ExerciseSession::display() const {
+    PairDisplay display;
+    display.scale = exercise_.display.scale;
+    display.offset = exercise_.display.offset;
+    display.keepAspect = true;
+    return display;
+}
+
+std::string ExerciseSession::describeView(ExerciseView view) const {
+    if (view == ExerciseView::Off) return {};
+    const ExerciseDisplay& d = exercise_.display;
+    const std::string offset = d.offset == 0.0f ? "" : cat(" + ", shortNumber(d.offset));
+    const gl::Texture& shown = view == ExerciseView::Reference || !student_ ? reference_ : student_;
+    std::string what;
+    switch (view) {
+        case ExerciseView::Student:
+            what =
+                student_ ? "YOURS: your file's result in the probe" : "YOURS: none, your file did not build";
+            break;
+        case ExerciseView::Reference:
+            what = "REFERENCE: the right result";
+            break;
+        default:
+            what = student_ ? cat("DIFFERENCE: |yours - reference| x ", shortNumber(d.scale), " x ",
+                                  shortNumber(kDifferenceGain), ", black where they agree")
+                            : "DIFFERENCE: none, your file did not build";
+            break;
+    }
+    std::string colours = view == ExerciseView::Difference ? std::string()
+                                                           : cat("; colour = value x ", shortNumber(d.scale),
+                                                                 offset, " (red, green, blue)");
+    return cat("exercise ", exercise_.id(), ", F3 view ", int(view), " of 3: ", what, ", ", shown.width(),
+               "x", shown.height(), " (", exercise_.measures, "; the case the verdict is decided on)",
+               colours, "; NaN and Inf magenta. ", verdictSummary(verdict_),
+               ". F3: ", view == ExerciseView::Difference ? "back to the lesson's picture" : "the next view");
+}
+
+void ExerciseSession::releasePictures() {
+    student_ = {};
+    reference_ = {};
 }
 
 void ExerciseSession::annotate(std::vector<LessonStep>& steps, int& revision) const {

@@ -4,7 +4,9 @@
 // and the registry's reload picks up every save (the last good program kept, errors with file and
 // line). Every save is checked again as `./fxlab check` checks it, and the step's text in the overlay
 // gets the exercise's text (its "## Checked exercise N: title" section of lesson.md or lesson.ja.md)
-// with the verdict: the measure, the threshold, pass or fail and the hint.
+// with the verdict: the measure, the threshold, pass or fail and the hint. After each check the probe's
+// results of the case the verdict is decided on (the student's and the reference's) are textures that F3
+// shows on the exercise's step (ExerciseView), so a student sees where their numbers differ.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,8 +17,15 @@
 #include "app/lesson.hpp"
 #include "base/lesson_text.hpp"
 #include "gl/shader_substitutes.hpp"
+#include "gl/texture.hpp"
+#include "ui/picture_view.hpp"
 
 namespace fx {
+
+// What F3 shows on a probe exercise's step: the lesson's picture (off), or the probe's results of the
+// case the verdict is decided on: the student's, the reference's, their difference.
+enum class ExerciseView { Off, Student, Reference, Difference };
+ExerciseView nextExerciseView(ExerciseView view);  // off -> yours -> reference -> difference -> off
 
 class ExerciseSession {
 public:
@@ -32,8 +41,23 @@ public:
     bool studentFileIsAScene() const { return exercise_.kind == "scene"; }
 
     // Checks again (on the current GL context) when the student's file changed since the last check,
-    // and says the verdict in the log when it changed. True when it checked.
+    // and says the verdict in the log when it changed; the verdict's pictures go to their textures.
+    // True when it checked.
     bool recheckIfChanged();
+
+    // A probe exercise has pictures to show (a scene exercise has none).
+    bool hasViews() const { return exercise_.kind == "probe"; }
+    // The probe's results (RGBA32F, labelled "exercise.LL-N.student" and ".reference"); the student's is
+    // empty when their file did not build. Made or updated by each check.
+    const gl::Texture& studentPicture() const { return student_; }
+    const gl::Texture& referencePicture() const { return reference_; }
+    // The exercise's colours (exercise.json's "display"), the pictures' aspect kept.
+    PairDisplay display() const;
+    // The lesson window's line for a view: what it shows, at what size, how numbers become colours, and
+    // the verdict with its measure and threshold.
+    std::string describeView(ExerciseView view) const;
+    // Deletes the textures; the run calls it while its context is current (the session outlives it).
+    void releasePictures();
     // The exercise's text and verdict after its step's text; `revision` grows when they change.
     void annotate(std::vector<LessonStep>& steps, int& revision) const;
 
@@ -48,6 +72,7 @@ private:
     bool checked_ = false;
     ExerciseVerdict verdict_;
     int revision_ = 0;
+    gl::Texture student_, reference_;
 };
 
 // The text of "## Checked exercise N: title" in `markdown`, or an error naming `file`.

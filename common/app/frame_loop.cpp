@@ -85,6 +85,10 @@ FrameLoop::FrameLoop(RunSession& session, const RunPlan& plan, Context& context,
     if (!plan.headless || overlay_) picture_ = std::make_unique<PictureView>();
 }
 
+FrameLoop::~FrameLoop() {
+    if (s_.exercise) s_.exercise->releasePictures();
+}
+
 void FrameLoop::run() {
     const std::uint64_t frames = std::uint64_t(plan_.frames);
     lastReloadCheck_ = Clock::now();
@@ -208,7 +212,42 @@ void FrameLoop::present(const LayoutRect& place, Size2D window) {
     const GLuint target = context_.presentFramebuffer();
     const float ground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
     glClearNamedFramebufferfv(target, GL_COLOR, 0, ground);
-    picture_->present(target, window.height, place, compare_);
+    if (exerciseView_ != ExerciseView::Off && onExerciseStep())
+        drawExerciseView(target, window, place);
+    else
+        picture_->present(target, window.height, place, compare_);
+}
+
+bool FrameLoop::onExerciseStep() const {
+    return s_.exercise && s_.exercise->hasViews() && s_.step == s_.exercise->step();
+}
+
+void FrameLoop::setExerciseView(ExerciseView view) {
+    exerciseView_ = view;
+    loggedExerciseView_ = ExerciseView::Off;
+    if (view == ExerciseView::Off) {
+        notify(cat("exercise ", s_.exercise->verdict().passed ? "PASS" : "FAIL",
+                   ": F3 view off, the lesson's picture"));
+        return;
+    }
+    // While it is on the lesson window says what is shown (FrameLoop::drawOverlay).
+    s_.status = s_.exercise->describeView(view);
+    log::info(s_.status);
+}
+
+void FrameLoop::drawExerciseView(GLuint window, Size2D windowSize, const LayoutRect& place) {
+    const ExerciseSession& e = *s_.exercise;
+    const bool difference = exerciseView_ == ExerciseView::Difference;
+    const gl::Texture& first =
+        exerciseView_ == ExerciseView::Reference ? e.referencePicture() : e.studentPicture();
+    const LayoutRect at = picture_->drawPair(window, windowSize.height, place,
+                                             difference ? PairView::Difference : PairView::First, first,
+                                             e.referencePicture(), e.display());
+    // Where it went, once per view: the window test reads the pixels there.
+    if (std::exchange(loggedExerciseView_, exerciseView_) != exerciseView_)
+        log::info("exercise view ", int(exerciseView_), " drawn at ", int(at.x), ",", int(at.y), " ",
+                  int(at.width), "x", int(at.height), " in the ", windowSize.width, "x", windowSize.height,
+                  " window");
 }
 
 std::function<std::unique_ptr<SweepRun>()> FrameLoop::knobSweepStarter(Size2D size) {
@@ -317,7 +356,12 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
         notify("layout reset");
         saveUiSettings();
     }
-    if (keys.compare) setCompare(nextCompareMode(compare_));
+    if (keys.compare) {
+        if (picture_ && onExerciseStep())
+            setExerciseView(nextExerciseView(exerciseView_));
+        else
+            setCompare(nextCompareMode(compare_));
+    }
     if (keys.pictureScale) notify(pictureScale_.cycle());
     if (keys.findSpecial && overlay_) {
         overlay_->inspector().setOpen(true);
@@ -503,7 +547,9 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     if (clock_.paused() && !clock_.held())
         model.clock =
             cat("paused at ", secondsText(clock_.seconds()), " s (space resumes, . steps one frame)");
-    if (compare_ != CompareMode::Off) {
+    if (exerciseView_ != ExerciseView::Off && onExerciseStep()) {
+        model.compare = s_.exercise->describeView(exerciseView_);
+    } else if (compare_ != CompareMode::Off) {
         model.compare =
             picture_ && picture_->previousStep()
                 ? cat("compare: ", describeCompareMode(compare_), " (step ", *picture_->previousStep() + 1,

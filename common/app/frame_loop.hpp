@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/exercise_session.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/lesson_clock.hpp"
 #include "app/lesson_text_files.hpp"
@@ -59,6 +60,10 @@ public:
     // overlay: nullptr when the run draws none.
     FrameLoop(RunSession& session, const RunPlan& plan, Context& context, FrameRenderer& renderer,
               WindowInput& input, Overlay* overlay, gl::ProgramRegistry& programs);
+    // Frees the exercise's pictures while the context is still current.
+    ~FrameLoop();
+    FrameLoop(const FrameLoop&) = delete;
+    FrameLoop& operator=(const FrameLoop&) = delete;
 
     // Runs plan.frames frames, or until the window closes when that is 0.
     void run();
@@ -86,6 +91,11 @@ private:
     // False when the run should end (Esc, or another lesson asked for).
     bool takeKeys(Clock::time_point now, std::uint64_t index);
     void setCompare(CompareMode mode);
+    // On a probe exercise's step F3 shows the student's result, the reference's and their difference
+    // (app/exercise_session.hpp) instead of comparing steps.
+    bool onExerciseStep() const;
+    void setExerciseView(ExerciseView view);
+    void drawExerciseView(GLuint window, Size2D windowSize, const LayoutRect& place);
     // The step before, drawn again at this moment of the lesson clock into the compare view's kept
     // picture, so that F3 compares the two steps at one moment (not the step before as it was when left).
     void renderPreviousStepNow(const Placement& at, std::uint64_t index);
@@ -120,7 +130,9 @@ private:
     PictureScale pictureScale_;
     std::unique_ptr<PictureView> picture_;  // windows and headless overlays: the picture has its place
     CompareMode compare_ = CompareMode::Off;
-    int renderedStep_ = -1;          // the step the picture now in picture_ shows
+    ExerciseView exerciseView_ = ExerciseView::Off;
+    ExerciseView loggedExerciseView_ = ExerciseView::Off;  // the view whose place the log has said
+    int renderedStep_ = -1;                                // the step the picture now in picture_ shows
     double previousSeconds_ = -1.0;  // the lesson clock's time of the kept picture of the step before
     bool refreshPrevious_ = false;   // draw the step before again, at this moment, before this frame
     Size2D lastPlace_;               // the picture's place last frame (the scale restarts on a change)

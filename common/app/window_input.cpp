@@ -26,7 +26,9 @@ constexpr WindowKey kWindowKeys[] = {
      &KeyPresses::nextLesson},
     {GLFW_KEY_SPACE, 0, "space", "space", "pause or resume the clock", &KeyPresses::pause},
     {GLFW_KEY_PERIOD, 0, ".", "period", "one frame forward (pauses the clock)", &KeyPresses::advanceFrame},
-    {GLFW_KEY_F3, 0, "F3", "F3", "compare with the previous step: split, difference x8, off",
+    {GLFW_KEY_F3, 0, "F3", "F3",
+     "compare with the previous step: split, difference x8, off (an exercise's step: yours, reference, "
+     "difference)",
      &KeyPresses::compare},
     {GLFW_KEY_F4, 0, "F4", "F4", "inspector: go to the next NaN or Inf texel and pin the probe",
      &KeyPresses::findSpecial},

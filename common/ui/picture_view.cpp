@@ -1,5 +1,6 @@
 #include "ui/picture_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "base/log.hpp"
@@ -11,7 +12,10 @@ namespace fx {
 namespace {
 
 // The uniform locations of shaders/ui/compare.frag.
-enum Uniform : GLint { kMode = 0, kPlace, kGain };
+enum Uniform : GLint { kMode = 0, kPicture, kGain, kDisplay, kGround };
+
+// Around a picture that keeps its aspect: the window's dark ground (app/frame_loop.cpp).
+constexpr float kGroundColour[3] = {0.08f, 0.08f, 0.09f};
 
 }  // namespace
 
@@ -37,6 +41,16 @@ const char* describeCompareMode(CompareMode mode) {
             return "difference with the previous step, x8";
     }
     return "";
+}
+
+LayoutRect fitPicture(Size2D picture, const LayoutRect& place) {
+    if (picture.empty() || place.width < 1 || place.height < 1) return place;
+    const double fit = std::min(double(place.width) / picture.width, double(place.height) / picture.height);
+    const double scale = fit >= 1.0 ? std::floor(fit) : fit;
+    const float width = std::max(1.0f, float(std::floor(picture.width * scale)));
+    const float height = std::max(1.0f, float(std::floor(picture.height * scale)));
+    return {place.x + std::floor((place.width - width) / 2),
+            place.y + std::floor((place.height - height) / 2), width, height};
 }
 
 PictureView::PictureView() {
@@ -86,19 +100,41 @@ void PictureView::present(GLuint window, int windowHeight, const LayoutRect& pla
                                x + width, y + height, GL_COLOR_BUFFER_BIT, exact ? GL_NEAREST : GL_LINEAR);
         return;
     }
+    (void)drawPair(window, windowHeight, place,
+                   mode == CompareMode::Split ? PairView::Split : PairView::Difference, previous_,
+                   target_.color, PairDisplay{});
+}
+
+LayoutRect PictureView::drawPair(GLuint window, int windowHeight, const LayoutRect& place, PairView view,
+                                 const gl::Texture& first, const gl::Texture& second,
+                                 const PairDisplay& display) const {
+    if (!program_ || place.width < 1 || place.height < 1) return place;
+    const LayoutRect picture =
+        display.keepAspect && first ? fitPicture({first.width(), first.height()}, place) : place;
+    GlStateScope keep;
+    gl::DebugGroup group("picture view: two pictures");
+    // GL's bottom-left window coordinates: the whole place is drawn (the ground around the picture too).
+    const auto glY = [&](const LayoutRect& r) { return float(windowHeight) - r.bottom(); };
     const GLuint p = program_.name();
-    glProgramUniform1i(p, kMode, mode == CompareMode::Split ? 1 : 2);
-    glProgramUniform4f(p, kPlace, float(x), float(y), float(width), float(height));
-    glProgramUniform1f(p, kGain, kDifferenceGain);
+    // An empty first picture: every pixel is outside the (empty) picture, so the place is all ground.
+    const float pictureWidth = first ? picture.width : 0.0f;
+    glProgramUniform1i(p, kMode, view == PairView::First ? 0 : view == PairView::Split ? 1 : 2);
+    glProgramUniform4f(p, kPicture, picture.x, glY(picture), pictureWidth, picture.height);
+    glProgramUniform1f(p, kGain, display.gain);
+    glProgramUniform2f(p, kDisplay, display.scale, display.offset);
+    glProgramUniform3fv(p, kGround, 1, kGroundColour);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, window);
-    glViewport(x, y, width, height);
+    glViewport(int(place.x), int(glY(place)), int(place.width), int(place.height));
     usePlainDrawState();
     glUseProgram(p);
     glBindVertexArray(vertexArray_.name());
-    glBindTextureUnit(0, target_.color.name());
-    glBindTextureUnit(1, previous_.name());
+    // Both units always hold a texture: the second is the first where the view does not use it.
+    const GLuint firstName = first ? first.name() : target_.color.name();
+    glBindTextureUnit(0, firstName);
+    glBindTextureUnit(1, second ? second.name() : firstName);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(1, 0);
+    return picture;
 }
 
 ByteImage PictureView::read() const {

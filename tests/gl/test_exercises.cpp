@@ -14,6 +14,7 @@
 #include "gl/program.hpp"
 #include "gl/shader_substitutes.hpp"
 #include "gl_test.hpp"
+#include "image/image_compare.hpp"
 
 using namespace fx;
 namespace fs = std::filesystem;
@@ -100,6 +101,37 @@ TEST_F(Exercises, TheCentrePixelsNaNIsCountedAndNamed) {
     EXPECT_NE(starter.hint.find("0 / 0"), std::string::npos) << starter.hint;
 }
 
+// The lesson's exercise views (F3) show the probe's results of the case the verdict is decided on: the
+// pair of pictures kept in the verdict measures exactly what the verdict says, at the size it names.
+TEST_F(Exercises, TheVerdictKeepsTheWorstCasesPictures) {
+    int notTheFirstCase = 0;
+    for (const Exercise& e : shippedExercises()) {
+        if (e.kind != "probe") continue;
+        std::vector<fs::path> answers = {e.folder / e.file, exerciseRoot() / "solutions" / e.id() / e.file};
+        for (const ExerciseHint& hint : e.hints)
+            if (!hint.file.empty()) answers.push_back(hint.file);
+        for (const fs::path& answer : answers) {
+            SCOPED_TRACE(e.id() + " " + answer.filename().string());
+            const ExerciseVerdict v = checkExercise(e, answer);
+            ASSERT_TRUE(v.error.empty()) << v.error;
+            ASSERT_FALSE(v.studentImage.empty());
+            ASSERT_EQ(v.studentImage.width, v.referenceImage.width);
+            ASSERT_EQ(v.studentImage.height, v.referenceImage.height);
+            const std::string size =
+                std::to_string(v.studentImage.width) + "x" + std::to_string(v.studentImage.height);
+            EXPECT_NE(v.message.find("worst at " + size + ","), std::string::npos) << v.message;
+            auto difference = compare(v.studentImage, v.referenceImage);
+            ASSERT_TRUE(difference.ok()) << difference.error();
+            EXPECT_EQ(e.measure == "rmse" ? difference->rmse : difference->maxAbs, v.measured) << v.message;
+            if (v.studentImage.width != e.cases.front().size.width ||
+                v.studentImage.height != e.cases.front().size.height)
+                ++notTheFirstCase;
+        }
+    }
+    // Some answers are worst at a later size: the pictures follow the measure, not the first case.
+    EXPECT_GT(notTheFirstCase, 0);
+}
+
 TEST_F(Exercises, ACompileErrorNamesTheStudentsFileAndLine) {
     auto e = findExercise(shippedExercises(), 8, 1);
     ASSERT_TRUE(e.ok()) << e.error();
@@ -114,6 +146,10 @@ TEST_F(Exercises, ACompileErrorNamesTheStudentsFileAndLine) {
     EXPECT_NE(verdict.message.find("lenght"), std::string::npos) << verdict.message;
     EXPECT_EQ(verdict.error.find("probe.frag:"), std::string::npos) << "nothing blamed on the probe:\n"
                                                                     << verdict.error;
+    // No picture of theirs for the exercise views; the reference's of the first case stays.
+    EXPECT_TRUE(verdict.studentImage.empty());
+    EXPECT_EQ(verdict.referenceImage.width, e->cases.front().size.width);
+    EXPECT_EQ(verdict.referenceImage.height, e->cases.front().size.height);
 
     const ExerciseVerdict missing = checkExercise(*e, dir / "never-started.glsl");
     EXPECT_FALSE(missing.passed);

@@ -75,11 +75,13 @@ TEST(Exercises, ABadExerciseNamesTheFileTheFieldAndTheReason) {
     writeText(folder / "probe.frag", "#version 450 core\n");
     const std::string good = R"({"lesson": 4, "number": 7, "title": "t", "file": "a.glsl",
         "replaces": "shaders/effects/dof/coc.glsl", "probe": "probe.frag", "measures": "m",
-        "tolerance": 0.001, "cases": [{"size": [3, 3]}]})";
+        "tolerance": 0.001, "display": {"scale": 0.25, "offset": 0.5}, "cases": [{"size": [3, 3]}]})";
     writeText(folder / "exercise.json", good);
     auto loaded = loadExercise(folder);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_EQ(loaded->id(), "04-7");
+    EXPECT_EQ(loaded->display.scale, 0.25f);
+    EXPECT_EQ(loaded->display.offset, 0.5f);
 
     auto fails = [&](const std::string& from, const std::string& to, const std::string& field) {
         std::string text = good;
@@ -97,6 +99,13 @@ TEST(Exercises, ABadExerciseNamesTheFileTheFieldAndTheReason) {
     fails("\"number\": 7", "\"number\": 8", "folder must be named 04-8");
     fails("\"cases\": [{\"size\": [3, 3]}]", "\"cases\": []", "cases");
     fails("\"title\": \"t\"", "\"title\": \"t\", \"toleranse\": 1", "toleranse");
+    // The exercise views' colours: a scale above zero, an offset within [-1, 1], nothing else.
+    fails("\"display\": {\"scale\": 0.25, \"offset\": 0.5}, ", "", "display: missing required field");
+    fails("\"scale\": 0.25", "\"scale\": 0", "display.scale");
+    fails("\"scale\": 0.25", "\"scale\": \"big\"", "display.scale");
+    fails("\"scale\": 0.25, ", "", "display.scale");
+    fails("\"offset\": 0.5", "\"offset\": 2", "display.offset");
+    fails("\"offset\": 0.5", "\"offset\": 0.5, \"gain\": 8", "display.gain");
 }
 
 TEST(Exercises, StartCopiesTheStarterAndNeverOverwritesWork) {
