@@ -17,6 +17,7 @@
 #include "base/log.hpp"
 #include "effects/dof/depth_of_field.hpp"
 #include "effects/dof/dof_reference.hpp"
+#include "effects/dof/framebuffer_mistakes.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
@@ -77,6 +78,12 @@ private:
     Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
     float exposure_ = 1.0f;
     bool benchReference_ = false;
+    // The mistakes the chapter warns about, shown on purpose (off by default).
+    Choice<ShownTarget> shownTarget_{ShownTarget::color};                    // step 1
+    Choice<IncompleteFramebuffer> incomplete_{IncompleteFramebuffer::none};  // step 1
+    float cocNearM_ = 0.0f;  // steps 4 to 6: the CoC pass's near plane (0: the projection's)
+    FramebufferCheck incompleteCheck_;
+    IncompleteFramebuffer checkedKind_ = IncompleteFramebuffer::none;
 
     // The reference over frames (a window): its sum, what it is of, how far it is.
     gl::Texture referenceSum_;
@@ -90,6 +97,7 @@ private:
     Gpu<DepthOfField> dof_;
     Gpu<DofReference> reference_;
     Gpu<OutputTransformPass> present_;
+    Gpu<SamplingMistakes> samplingMistakes_;
     PassGroup dofGroup_ = groupNeeding(SceneFeature::depthOfField);
 };
 
@@ -119,6 +127,23 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 }
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
+    params
+        .addChoice("shown_target", &shownTarget_,
+                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"},
+                   "Step 1: what the full-screen pass samples. colour-mipmap-min-filter: the mistake of a "
+                   "glTexImage2D target with MIN_FILTER left at its mipmapped default (incomplete: black); "
+                   "depth-compare-mode: the mistake of reading depth with COMPARE_MODE on (0 or 1)")
+        .inSteps({Framebuffer});
+    params
+        .addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"},
+                   "Step 1: build a framebuffer that is incomplete on purpose (a colour format GL cannot "
+                   "render to, or nothing attached) and show what glCheckNamedFramebufferStatus says")
+        .inSteps({Framebuffer});
+    params
+        .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
+                  "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
+                  "(m; 0: the projection's): the focus moves")
+        .inSteps({PhysicalCamera, ChapterShader, Beyond});
     const std::vector<int> lensSteps = {PhysicalCamera, ChapterShader, Beyond, Reference};
     params
         .addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
@@ -221,14 +246,21 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     view_.camera = cameraFor(frame);
     HdrSceneTargets hdr = scenePass_->declare(graph, frame.world.seenThrough(view_));
     const ThinLensModel model = lensModel(frame);
-    const DofLensUniforms lens = dofLensUniforms(model);
+    DofLensUniforms lens = dofLensUniforms(model);
+    if (cocNearM_ > 0.0f) lens.nearM = cocNearM_;  // the depth is still the projection's
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
     ToneCurve curve = *toneCurve_;
     float exposure = exposure_;
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
-        if (step == Naive || step == MovedCamera) {
+        if (step == Framebuffer) {
+            shown = samplingMistakes_->declare(graph, hdr.color, hdr.depth, *shownTarget_, frame.size);
+            if (*shownTarget_ == ShownTarget::depth || *shownTarget_ == ShownTarget::depthCompareMode) {
+                curve = ToneCurve::clip;  // depth as grey, for the display
+                exposure = 1.0f;
+            }
+        } else if (step == Naive || step == MovedCamera) {
             shown = dof_->declareNaive(graph, hdr.color, hdr.depth, {}).output;
         } else if (step >= PhysicalCamera) {
             TextureHandle coc = dof_->declareCoc(graph, hdr.depth, lens).output;
@@ -257,6 +289,10 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         }
     }
     present_->declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+    if (step == Framebuffer && *incomplete_ != checkedKind_) {
+        incompleteCheck_ = checkIncompleteFramebuffer(*incomplete_);  // built, checked, deleted: no draw
+        checkedKind_ = *incomplete_;
+    }
 }
 
 TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
@@ -311,6 +347,10 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
     out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
             "vertical field of view");
+    if (step == Framebuffer && *incomplete_ != IncompleteFramebuffer::none) {
+        out.add("incompleteFboStatus", incompleteCheck_.status, "glCheckNamedFramebufferStatus");
+        out.add("incompleteFboMessage", incompleteCheck_.message, "fxlab's message");
+    }
     if (step < PhysicalCamera) {
         out.add("targetDepth",
                 cat(windowDepth(glm::length(camera.target - camera.position), camera.near, camera.far)),
@@ -325,6 +365,17 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("aperture", cat(m.apertureMm), "aperture A (mm)");
     for (double d : {1.0, 2.0, 5.0, 50.0, 250.0})
         out.add(cat("coc", int(d), "m"), cat(signedCocPixels(m, d)), cat("CoC diameter at ", d, " m (px)"));
+    if (cocNearM_ > 0.0f && step != Reference) {
+        // The depth the projection wrote at the focus distance, read back with the CoC pass's near plane.
+        const double readAs =
+            linearDepthM(windowDepth(m.focusM, camera.near, camera.far), cocNearM_, camera.far);
+        const double focusLands =
+            linearDepthM(windowDepth(m.focusM, cocNearM_, camera.far), camera.near, camera.far);
+        out.add("cocNear", cat(cocNearM_, " m (the projection's: ", camera.near, " m)"),
+                "the CoC pass's near plane");
+        out.add("focusReadAs", cat(readAs), "the focus distance's depth read as (m)");
+        out.add("focusLandsAt", cat(focusLands), "sharp at (m)");
+    }
     out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter),
             "blur radius at 1 m (px)");
     if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps), "ring kernel taps");
