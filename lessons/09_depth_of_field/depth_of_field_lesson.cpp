@@ -62,21 +62,23 @@ private:
                                              DofReferenceSettings settings, float& exposure);
 
     // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
-    float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
-    float sensorWidthMm_ = 36.0f;
-    float fNumber_ = 1.4f;
-    float focusM_ = 15.264f;
+    // A parameter bound to a scene setting takes the setting's default when it is declared
+    // (ParamSet::addSetting), so those members have no default of their own here.
+    float focalLengthMm_{};
+    float sensorWidthMm_{};
+    float fNumber_{};
+    float focusM_{};
     bool chapterCompatible_ = false;
-    float maxCoc_ = 32.0f;
-    int taps_ = 22;
+    float maxCoc_{};
+    int taps_{};
     int method_ = 1;      // step 6: 0 the chapter's 13 taps, 1 the gather
     int resolution_ = 1;  // 0 full, 1 half
     int fields_ = 1;      // 0 one average, 1 near and far
     float highlight_ =
         0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
     int referenceSamples_ = 64;
-    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
-    float exposure_ = 1.0f;
+    Choice<ToneCurve> toneCurve_{ToneCurve{}};
+    float exposure_{};
     bool benchReference_ = false;
     // The mistakes the chapter warns about, shown on purpose (off by default).
     Choice<ShownTarget> shownTarget_{ShownTarget::color};                    // step 1
@@ -127,23 +129,6 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 }
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
-    params
-        .addChoice("shown_target", &shownTarget_,
-                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"},
-                   "Step 1: what the full-screen pass samples. colour-mipmap-min-filter: the mistake of a "
-                   "glTexImage2D target with MIN_FILTER left at its mipmapped default (incomplete: black); "
-                   "depth-compare-mode: the mistake of reading depth with COMPARE_MODE on (0 or 1)")
-        .inSteps({Framebuffer});
-    params
-        .addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"},
-                   "Step 1: build a framebuffer that is incomplete on purpose (a colour format GL cannot "
-                   "render to, or nothing attached) and show what glCheckNamedFramebufferStatus says")
-        .inSteps({Framebuffer});
-    params
-        .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
-                  "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
-                  "(m; 0: the projection's): the focus moves")
-        .inSteps({PhysicalCamera, ChapterShader, Beyond});
     const std::vector<int> lensSteps = {PhysicalCamera, ChapterShader, Beyond, Reference};
     params
         .addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
@@ -161,9 +146,11 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
                     "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)")
         .inSteps(lensSteps);
     params
-        .addBool("chapter_compatible", &chapterCompatible_,
-                 "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
-                 "of view, the diameter used as a radius) instead of the corrected ones")
+        .addBool(
+            "chapter_compatible", &chapterCompatible_,
+            "Steps 4 to 7: the chapter's numbers "
+            "(fixed image distance, fov * 0.5 as the vertical field of view, the diameter used as a radius) "
+            "instead of the corrected ones")
         .inSteps(lensSteps);
     Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
                                       "Steps 4 to 6");
@@ -180,10 +167,9 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
     resolution.inSteps({Beyond});
-    Param& fields =
-        params.addChoice("fields", &fields_, {"one", "near-far"},
-                         "Step 6: near/far separation (the background does not bleed over a sharp "
-                         "foreground)");
+    Param& fields = params.addChoice("fields", &fields_, {"one", "near-far"},
+                                     "Step 6: near/far separation "
+                                     "(the background does not bleed over a sharp foreground)");
     fields.knob = Knob{{0, 1}, 1, "fields"};
     fields.inSteps({Beyond});
     params
@@ -194,6 +180,26 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         .addInt("reference_samples", &referenceSamples_, 1, 1024,
                 "Step 7: pinhole renders averaged over the aperture")
         .inSteps({Reference});
+    // The mistakes the chapter warns about, made on purpose (off by default).
+    params
+        .addChoice("shown_target", &shownTarget_,
+                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"},
+                   "Step 1: what the full-screen pass samples. "
+                   "colour-mipmap-min-filter: the mistake of a glTexImage2D target "
+                   "with MIN_FILTER left at its mipmapped default (incomplete: black); "
+                   "depth-compare-mode: the mistake of reading depth with COMPARE_MODE on (0 or 1)")
+        .inSteps({Framebuffer});
+    params
+        .addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"},
+                   "Step 1: build a framebuffer that is incomplete on purpose "
+                   "(a colour format GL cannot render to, or nothing attached) "
+                   "and show what glCheckNamedFramebufferStatus says")
+        .inSteps({Framebuffer});
+    params
+        .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
+                  "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
+                  "(m; 0: the projection's): the focus moves")
+        .inSteps({PhysicalCamera, ChapterShader, Beyond});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
                       "Not for the heat map, whose colours are for the display");
     params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
