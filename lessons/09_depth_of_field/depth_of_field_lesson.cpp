@@ -17,6 +17,7 @@
 #include "base/log.hpp"
 #include "effects/dof/depth_of_field.hpp"
 #include "effects/dof/dof_reference.hpp"
+#include "effects/dof/framebuffer_mistakes.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
@@ -61,22 +62,30 @@ private:
                                              DofReferenceSettings settings, float& exposure);
 
     // Parameters: the lens starts from the scene's camera.lens, the rest from postEffects.depthOfField.
-    float focalLengthMm_ = 31.1769f;  // 60 deg across 36 mm: the chapter's camera
-    float sensorWidthMm_ = 36.0f;
-    float fNumber_ = 1.4f;
-    float focusM_ = 15.264f;
+    // A parameter bound to a scene setting takes the setting's default when it is declared
+    // (ParamSet::addSetting), so those members have no default of their own here.
+    float focalLengthMm_{};
+    float sensorWidthMm_{};
+    float fNumber_{};
+    float focusM_{};
     bool chapterCompatible_ = false;
-    float maxCoc_ = 32.0f;
-    int taps_ = 22;
+    float maxCoc_{};
+    int taps_{};
     int method_ = 1;      // step 6: 0 the chapter's 13 taps, 1 the gather
     int resolution_ = 1;  // 0 full, 1 half
     int fields_ = 1;      // 0 one average, 1 near and far
     float highlight_ =
         0.0f;  // the reference has no such weighting: 0 by default, so the bench compares like with like
     int referenceSamples_ = 64;
-    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
-    float exposure_ = 1.0f;
+    Choice<ToneCurve> toneCurve_{ToneCurve{}};
+    float exposure_{};
     bool benchReference_ = false;
+    // The mistakes the chapter warns about, shown on purpose (off by default).
+    Choice<ShownTarget> shownTarget_{ShownTarget::color};                    // step 1
+    Choice<IncompleteFramebuffer> incomplete_{IncompleteFramebuffer::none};  // step 1
+    float cocNearM_ = 0.0f;  // steps 4 to 6: the CoC pass's near plane (0: the projection's)
+    FramebufferCheck incompleteCheck_;
+    IncompleteFramebuffer checkedKind_ = IncompleteFramebuffer::none;
 
     // The reference over frames (a window): its sum, what it is of, how far it is.
     gl::Texture referenceSum_;
@@ -90,6 +99,7 @@ private:
     Gpu<DepthOfField> dof_;
     Gpu<DofReference> reference_;
     Gpu<OutputTransformPass> present_;
+    Gpu<SamplingMistakes> samplingMistakes_;
     PassGroup dofGroup_ = groupNeeding(SceneFeature::depthOfField);
 };
 
@@ -136,9 +146,11 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
                     "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)")
         .inSteps(lensSteps);
     params
-        .addBool("chapter_compatible", &chapterCompatible_,
-                 "Steps 4 to 7: the chapter's numbers (fixed image distance, fov * 0.5 as the vertical field "
-                 "of view, the diameter used as a radius) instead of the corrected ones")
+        .addBool(
+            "chapter_compatible", &chapterCompatible_,
+            "Steps 4 to 7: the chapter's numbers "
+            "(fixed image distance, fov * 0.5 as the vertical field of view, the diameter used as a radius) "
+            "instead of the corrected ones")
         .inSteps(lensSteps);
     Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
                                       "Steps 4 to 6");
@@ -155,10 +167,9 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
     resolution.inSteps({Beyond});
-    Param& fields =
-        params.addChoice("fields", &fields_, {"one", "near-far"},
-                         "Step 6: near/far separation (the background does not bleed over a sharp "
-                         "foreground)");
+    Param& fields = params.addChoice("fields", &fields_, {"one", "near-far"},
+                                     "Step 6: near/far separation "
+                                     "(the background does not bleed over a sharp foreground)");
     fields.knob = Knob{{0, 1}, 1, "fields"};
     fields.inSteps({Beyond});
     params
@@ -169,6 +180,26 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         .addInt("reference_samples", &referenceSamples_, 1, 1024,
                 "Step 7: pinhole renders averaged over the aperture")
         .inSteps({Reference});
+    // The mistakes the chapter warns about, made on purpose (off by default).
+    params
+        .addChoice("shown_target", &shownTarget_,
+                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"},
+                   "Step 1: what the full-screen pass samples. "
+                   "colour-mipmap-min-filter: the mistake of a glTexImage2D target "
+                   "with MIN_FILTER left at its mipmapped default (incomplete: black); "
+                   "depth-compare-mode: the mistake of reading depth with COMPARE_MODE on (0 or 1)")
+        .inSteps({Framebuffer});
+    params
+        .addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"},
+                   "Step 1: build a framebuffer that is incomplete on purpose "
+                   "(a colour format GL cannot render to, or nothing attached) "
+                   "and show what glCheckNamedFramebufferStatus says")
+        .inSteps({Framebuffer});
+    params
+        .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
+                  "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
+                  "(m; 0: the projection's): the focus moves")
+        .inSteps({PhysicalCamera, ChapterShader, Beyond});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
                       "Not for the heat map, whose colours are for the display");
     params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
@@ -221,14 +252,21 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     view_.camera = cameraFor(frame);
     HdrSceneTargets hdr = scenePass_->declare(graph, frame.world.seenThrough(view_));
     const ThinLensModel model = lensModel(frame);
-    const DofLensUniforms lens = dofLensUniforms(model);
+    DofLensUniforms lens = dofLensUniforms(model);
+    if (cocNearM_ > 0.0f) lens.nearM = cocNearM_;  // the depth is still the projection's
     const bool calledFor = !lacks(graph, SceneFeature::depthOfField);
     TextureHandle shown = hdr.color;
     ToneCurve curve = *toneCurve_;
     float exposure = exposure_;
     {
         PassGroup::Scope in(graph, dofGroup_);  // not called for when the scene has no depth of field
-        if (step == Naive || step == MovedCamera) {
+        if (step == Framebuffer) {
+            shown = samplingMistakes_->declare(graph, hdr.color, hdr.depth, *shownTarget_, frame.size);
+            if (*shownTarget_ == ShownTarget::depth || *shownTarget_ == ShownTarget::depthCompareMode) {
+                curve = ToneCurve::clip;  // depth as grey, for the display
+                exposure = 1.0f;
+            }
+        } else if (step == Naive || step == MovedCamera) {
             shown = dof_->declareNaive(graph, hdr.color, hdr.depth, {}).output;
         } else if (step >= PhysicalCamera) {
             TextureHandle coc = dof_->declareCoc(graph, hdr.depth, lens).output;
@@ -257,6 +295,10 @@ void DepthOfFieldLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         }
     }
     present_->declare(graph, calledFor ? shown : hdr.color, std::nullopt, curve, exposure);
+    if (step == Framebuffer && *incomplete_ != checkedKind_) {
+        incompleteCheck_ = checkIncompleteFramebuffer(*incomplete_);  // built, checked, deleted: no draw
+        checkedKind_ = *incomplete_;
+    }
 }
 
 TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, const FrameInfo& frame,
@@ -311,6 +353,10 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
     out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
             "vertical field of view");
+    if (step == Framebuffer && *incomplete_ != IncompleteFramebuffer::none) {
+        out.add("incompleteFboStatus", incompleteCheck_.status, "glCheckNamedFramebufferStatus");
+        out.add("incompleteFboMessage", incompleteCheck_.message, "fxlab's message");
+    }
     if (step < PhysicalCamera) {
         out.add("targetDepth",
                 cat(windowDepth(glm::length(camera.target - camera.position), camera.near, camera.far)),
@@ -325,6 +371,17 @@ void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("aperture", cat(m.apertureMm), "aperture A (mm)");
     for (double d : {1.0, 2.0, 5.0, 50.0, 250.0})
         out.add(cat("coc", int(d), "m"), cat(signedCocPixels(m, d)), cat("CoC diameter at ", d, " m (px)"));
+    if (cocNearM_ > 0.0f && step != Reference) {
+        // The depth the projection wrote at the focus distance, read back with the CoC pass's near plane.
+        const double readAs =
+            linearDepthM(windowDepth(m.focusM, camera.near, camera.far), cocNearM_, camera.far);
+        const double focusLands =
+            linearDepthM(windowDepth(m.focusM, cocNearM_, camera.far), camera.near, camera.far);
+        out.add("cocNear", cat(cocNearM_, " m (the projection's: ", camera.near, " m)"),
+                "the CoC pass's near plane");
+        out.add("focusReadAs", cat(readAs), "the focus distance's depth read as (m)");
+        out.add("focusLandsAt", cat(focusLands), "sharp at (m)");
+    }
     out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter),
             "blur radius at 1 m (px)");
     if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps), "ring kernel taps");

@@ -16,6 +16,7 @@
 #include "effects/deferred/gbuffer_pass.hpp"
 #include "effects/deferred/lecture_mrt.hpp"
 #include "effects/deferred/light_evaluations.hpp"
+#include "effects/deferred/per_vertex_lighting.hpp"
 #include "effects/deferred/planar_reflection.hpp"
 #include "effects/deferred/point_light_buffer.hpp"
 #include "effects/deferred/render_to_texture.hpp"
@@ -41,6 +42,12 @@ public:
     std::string benchTexture() const override { return "deferred.color"; }
 
     enum Step { RenderToTexture, ThreeTargets, Sharpen, Deferred, Layout, ManyLights, Reflection };
+    // The choices' meanings, in the order of their names.
+    enum class OriginOffset { none, km1, km10 };
+    enum class Culling { none, tiled };
+    enum class ReflectionSize { full, half, quarter };
+    enum class Lighting { deferred, perVertex };
+    enum class ReflectionClear { sky, chapter };
 
 private:
     // The G-buffer layout, light count and culling the step uses.
@@ -53,14 +60,18 @@ private:
                          std::optional<SplitView>& split);
 
     // Parameters.
-    int rttDepth_ = 0;         // RttDepth
+    Choice<RttDepth> rttDepth_{RttDepth::renderbuffer};
     bool slidesOrder_ = true;  // step 2: the slides' glDrawBuffer(GL_BACK) with the FBO bound
     Choice<GBufferLayout> layout_{GBufferLayout::compact};
-    int originOffset_ = 0;    // index into kOriginOffsets
-    int lightCount_ = 0;      // 0: the step's own (lightCountFor)
-    int culling_ = 1;         // 0 none, 1 tiled
-    int reflectionSize_ = 1;  // index into kReflectionFractions
+    Choice<OriginOffset> originOffset_{OriginOffset::none};
+    int lightCount_ = 0;  // 0: the step's own (lightCountFor)
+    Choice<Culling> culling_{Culling::tiled};
+    Choice<ReflectionSize> reflectionSize_{ReflectionSize::half};
     float divider_ = 0.5f;
+    // The mistakes the chapter warns about, shown on purpose (off by default).
+    Choice<Lighting> lightingModel_{Lighting::deferred};             // step 4
+    bool mirrorObjects_ = false;                                     // step 7
+    Choice<ReflectionClear> reflectionClear_{ReflectionClear::sky};  // step 7
 
     std::vector<Light> allLights_;
     int pointLightsInScene_ = 0;
@@ -76,6 +87,7 @@ private:
     Gpu<DeferredLighting> lighting_;
     Gpu<TiledCulling> culling_pass_;
     Gpu<PlanarReflection> reflection_;
+    Gpu<PerVertexLighting> perVertex_;
     Gpu<OutputTransformPass> present_;
     std::string rttAttachments_[2];
     PassGroup cullingGroup_;
@@ -86,9 +98,36 @@ private:
 namespace {
 
 // Step 5 moves the whole world (scene and camera) this far along X: where half floats run out.
-const float kOriginOffsets[] = {0.0f, 1000.0f, 10000.0f};
+float originOffsetM(DeferredShadingLesson::OriginOffset offset) {
+    using enum DeferredShadingLesson::OriginOffset;
+    switch (offset) {
+        case km1:
+            return 1000.0f;
+        case km10:
+            return 10000.0f;
+        case none:
+            break;
+    }
+    return 0.0f;
+}
+
 // Step 7's reflection target as a fraction of the output: 1/1, 1/2, 1/4.
-const int kReflectionFractions[] = {1, 2, 4};
+int reflectionFraction(DeferredShadingLesson::ReflectionSize size) {
+    using enum DeferredShadingLesson::ReflectionSize;
+    switch (size) {
+        case half:
+            return 2;
+        case quarter:
+            return 4;
+        case full:
+            break;
+    }
+    return 1;
+}
+
+// The chapter's clear colour (the companion repository's), which its reflection target is cleared to:
+// where nothing is reflected the floor gets strength x this, a bluish tint.
+constexpr glm::vec3 kChapterClearColor(0.1f, 0.2f, 0.3f);
 // Steps 4 and 5 light the yard with every other lamp each way: they show one pass over many lights
 // (and the G-buffer's layout), and a software renderer pays for every light at every pixel there.
 // Step 6 is where the thousand become affordable.
@@ -161,9 +200,10 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
                  "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
                  "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all")
         .inSteps({ThreeTargets});
-    Param& layout = params.addChoice("layout", &layout_, gbufferLayoutNames(),
-                                     "Steps 5 to 7: the G-buffer's layout (fat32 is the reference; rgba8Raw "
-                                     "stores normals in RGBA8 without a remap)");
+    Param& layout =
+        params.addChoice("layout", &layout_, gbufferLayoutNames(),
+                         "Steps 5 to 7: the G-buffer's layout "
+                         "(fat32 is the reference; rgba8Raw stores normals in RGBA8 without a remap)");
     layout.knob = Knob{{0, 1, 2}, 2, "layout"};
     layout.inSteps({Layout, ManyLights, Reflection});
     params
@@ -186,6 +226,24 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
                          "Step 7: the reflection target's size as a fraction of the window's");
     reflection.knob = Knob{{0, 1, 2}, 0, "reflection size"};
     reflection.inSteps({Reflection});
+    params
+        .addChoice("lighting", &lightingModel_, {"deferred", "per-vertex"},
+                   "Step 4: per-vertex shows the mistake deferred shading removes: "
+                   "the light computed at the vertices and interpolated, "
+                   "so the floor's 4 corners lose the highlights between them")
+        .inSteps({Deferred});
+    params
+        .addBool("mirror_objects", &mirrorObjects_,
+                 "Step 7: the raw-GL mistake of mirroring the objects "
+                 "(model matrix times the reflection, determinant -1) instead of the camera: "
+                 "normals mirrored, the moon not, the reflection lit from below")
+        .inSteps({Reflection});
+    params
+        .addChoice("reflection_clear", &reflectionClear_, {"sky", "chapter"},
+                   "Step 7: what the reflection target is cleared to; "
+                   "chapter: the chapter's clear colour (0.1, 0.2, 0.3), "
+                   "which tints the mirror wherever nothing is reflected")
+        .inSteps({Reflection});
     params
         .addFloat("divider", &divider_, 0.0f, 1.0f,
                   "Steps 3, 5 and 6: where the split view's divider is (left: the diagnostic view)")
@@ -213,7 +271,7 @@ int DeferredShadingLesson::lightCountFor(int step) const {
 
 glm::vec3 DeferredShadingLesson::worldOffsetFor(int step) const {
     if (step != Layout) return glm::vec3(0.0f);
-    return glm::vec3(kOriginOffsets[std::clamp(originOffset_, 0, 2)], 0.0f, 0.0f);
+    return glm::vec3(originOffsetM(*originOffset_), 0.0f, 0.0f);
 }
 
 void DeferredShadingLesson::uploadLights(const FrameInfo& frame) {
@@ -244,7 +302,7 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
     if (culls(step)) {
         PassGroup::Scope in(graph, cullingGroup_);
         CulledTiles culled = culling_pass_->declare(graph, scene, g, *lights_);
-        if (culling_ == 0) culling_pass_->lastPass()->disable("culling: none (the parameter)");
+        if (*culling_ == Culling::none) culling_pass_->lastPass()->disable("culling: none (the parameter)");
         // Without many lights the culling pass is not called for (the scene's reason is in the pass
         // table), and every light is evaluated: a handful costs less than a pass that sorts them.
         else if (!lacks(graph, SceneFeature::manyLights))
@@ -256,10 +314,16 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
         lit = lighting_->declare(graph, scene, g, *lights_, shadow, tiles);
     }
     shown = lit;
+    if (step == Deferred && *lightingModel_ == Lighting::perVertex) {
+        shown = perVertex_->declare(graph, frame.world, *lights_);
+        return;
+    }
     if (step == Reflection) {
         PassGroup::Scope in(graph, reflectionGroup_);
-        reflection_->declare(graph, frame.world, *lights_, g, lit,
-                             kReflectionFractions[std::clamp(reflectionSize_, 0, 2)]);
+        ReflectionMistakes mistakes{mirrorObjects_, std::nullopt};
+        if (*reflectionClear_ == ReflectionClear::chapter) mistakes.clearColor = kChapterClearColor;
+        reflection_->declare(graph, frame.world, *lights_, g, lit, reflectionFraction(*reflectionSize_),
+                             mistakes);
         return;
     }
     if (step == Layout && options.referencePosition)
@@ -277,7 +341,7 @@ void DeferredShadingLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame
     std::optional<SplitView> split;
     switch (frame.step) {
         case RenderToTexture: {
-            TextureHandle color = rtt_->declare(graph, frame.world, static_cast<RttDepth>(rttDepth_ != 0));
+            TextureHandle color = rtt_->declare(graph, frame.world, *rttDepth_);
             // The 512 x 512 texture, stretched over the window: sampled in [0, 1], whatever the sizes.
             const FullscreenPass* copy = &*rttToScreen_;
             Pass& pass = rttToScreen_->addPass(
@@ -311,7 +375,7 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     out.check("expectErrorsInStep", step == ThreeTargets && slidesOrder_);
     if (step == RenderToTexture) {
-        out.add("rttAttachments", rttAttachments_[rttDepth_ != 0 ? 1 : 0],
+        out.add("rttAttachments", rttAttachments_[*rttDepth_ == RttDepth::texture ? 1 : 0],
                 "framebuffer (asked back from GL)");
         return;
     }
@@ -333,6 +397,11 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
             "G-buffer at this size (MiB)");
     out.add("pointLights", std::to_string(lights_->count()),
             cat("point lights (of ", pointLightsInScene_, ")"));
+    if (step == Deferred)
+        out.add("lighting",
+                *lightingModel_ == Lighting::perVertex ? "per vertex (forward, interpolated)"
+                                                       : "per pixel (deferred)",
+                "lighting");
     if (step == Layout) {
         float at = std::abs(worldOffsetFor(step).x) + 10.0f;
         out.add("halfFloatStep", cat(halfFloatSpacing(at)), cat("a half float's step at ", at, " m (m)"));
@@ -341,7 +410,13 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         auto mirror = findMirror(frame.world.scene(), frame.seconds);
         out.add("mirror", mirror ? frame.world.scene().objects[mirror->object].name : std::string("none"),
                 "mirror");
-        int fraction = kReflectionFractions[std::clamp(reflectionSize_, 0, 2)];
+        int fraction = reflectionFraction(*reflectionSize_);
+        out.add("reflectionMirrors",
+                mirrorObjects_ ? "the objects (model x reflection, det -1)" : "the camera",
+                "the mirror pass mirrors");
+        out.add("reflectionClear",
+                *reflectionClear_ == ReflectionClear::chapter ? "the chapter's (0.1, 0.2, 0.3)" : "the sky",
+                "reflection target cleared to");
         out.add("reflectionSize",
                 cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),
                 "reflection target");
@@ -371,33 +446,36 @@ void DeferredShadingLesson::drawPanel(const FrameInfo& frame) {
             break;
         case ThreeTargets:
             ImGui::TextWrapped(
-                "Inspect mrt.diffuse, mrt.specular and mrt.ambient. Switch slides_order off: "
-                "the errors stop and the picture stays the same.");
+                "Inspect mrt.diffuse, mrt.specular and mrt.ambient. "
+                "Switch slides_order off: the errors stop and the picture stays the same.");
             break;
         case Sharpen:
             ImGui::TextWrapped(
-                "Left: red where the float target holds more than 1, blue below 0; the RGBA8 "
-                "target (right) holds neither.");
+                "Left: red where the float target holds more than 1, blue below 0; "
+                "the RGBA8 target (right) holds neither.");
             break;
         case Deferred:
             ImGui::TextWrapped(
-                "Inspect gbuffer.albedo, gbuffer.normal and gbuffer.depth, or gbuffer.view_normal "
-                "(normals as colours) and gbuffer.view_depth (linear distance).");
+                "Inspect gbuffer.albedo, gbuffer.normal and gbuffer.depth, "
+                "or gbuffer.view_normal (normals as colours) and gbuffer.view_depth (linear distance).");
             break;
         case Layout:
             ImGui::TextWrapped(
-                "Left: the position error (blue 1 mm, green 1 cm, yellow 10 cm, red 1 m). Try "
-                "layout fat with origin_offset 10000 m.");
+                "Left: the position error (blue 1 mm, green 1 cm, yellow 10 cm, red 1 m). "
+                "Try layout fat with origin_offset 10000 m.");
             break;
         case ManyLights:
             ImGui::TextWrapped("Left: lights per tile. Set culling to none to compare the lighting time.");
             break;
         default:
             ImGui::TextWrapped(
-                "Inspect reflection.color: the scene from the mirrored camera, nothing below the "
-                "pond.");
+                "Inspect reflection.color: the scene from the mirrored camera, nothing below the pond.");
             break;
     }
+    // light_count's slider shows 0 for "the step's own": say what that is, in lights.
+    if (frame.step >= Deferred && lightCount_ == 0)
+        ImGui::TextWrapped("light_count 0 is the step's own count: %d point lights.",
+                           lightCountFor(frame.step));
 }
 
 }  // namespace lesson10

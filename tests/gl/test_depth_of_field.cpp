@@ -3,11 +3,16 @@
 // or inside the focal length, f-number 0, extreme fields of view, the sky, the focus plane itself,
 // depths beyond far, a CoC far larger than the kernel, and odd and tiny sizes.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+
+#include <unistd.h>
 
 #include <glm/geometric.hpp>
 
 #include "effects/dof/depth_of_field.hpp"
+#include "effects/dof/dof_bindings.hpp"
 #include "effects/dof/dof_reference.hpp"
 #include "gl_test.hpp"
 #include "test_fullscreen_harness.hpp"
@@ -411,4 +416,84 @@ TEST_F(DepthOfFieldOnGl, NearAndFarThatDisagreeWithTheProjectionMoveTheFocus) {
     EXPECT_GT(std::abs(right.texel(1, 0, 0)), 0.5f) << "and blurred at " << movedFocus << " m";
     EXPECT_GT(std::abs(wrong.texel(2, 0, 0)), 0.5f) << "with the wrong near plane the object at 5 m blurs";
     EXPECT_LT(std::abs(wrong.texel(1, 0, 0)), 1e-2f) << "and the one at " << movedFocus << " m is sharp";
+}
+
+TEST_F(DepthOfFieldOnGl, ALinearlyFilteredDepthGivesASilhouetteACocOfNeitherObject) {
+    // Hard case 10's other half, filtered-depth halos: a half-resolution CoC computed from one bilinear
+    // tap of the depth (the tap between the 2 x 2 texels it stands for) mixes the depths of a silhouette,
+    // and the mixed depth is a distance where neither object is (about 2 m between a foreground at 1 m
+    // and a background at 50 m): a ring with a CoC of neither, a halo in the blur. fxlab's CoC pass reads
+    // every depth texel with texelFetch, and the same half-resolution pass with a NEAREST sampler reads one
+    // of the four: each CoC is one object's.
+    const int w = 64, h = 4;
+    ThinLensInput in = chapterCamera(CocConvention::corrected, 32.0f);
+    in.lens.focusDistanceM = 5.0f;
+    const ThinLensModel model = thinLensModel(in);
+    const DofLensUniforms lens = dofLensUniforms(model);
+    const float nearDepth = float(windowDepth(1.0, 0.5, 500.0));
+    const float farDepth = float(windowDepth(50.0, 0.5, 500.0));
+    const float nearCoc = float(signedCocPixels(model, 1.0)), farCoc = float(signedCocPixels(model, 50.0));
+    ASSERT_LT(nearCoc, -4.0f);
+    ASSERT_GT(farCoc, 1.0f);
+    // The silhouette between texels 32 and 33: half-resolution texel 16 stands for columns 32 and 33.
+    auto depth = [&](int x, int) { return x <= 32 ? nearDepth : farDepth; };
+
+    // A CoC pass at half resolution whose depth comes through `sampler` at the 2 x 2 block's centre.
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("fx_dof_halo_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "filtered_coc.frag")
+        << "#version 450 core\n"
+           "#include \"effects/dof/coc.glsl\"\n"
+           "layout(binding = 0) uniform sampler2D depth;\n"
+           "layout(location = 1) in vec2 uv;\n"
+           "layout(location = 0) out float coc;\n"
+           "void main() { coc = signedCocPixels(texture(depth, uv).r); }\n";
+    FullscreenPass filtered((dir / "filtered_coc.frag").string(), "test coc from a filtered depth");
+    std::filesystem::remove_all(dir);
+    ASSERT_TRUE(programsBuilt());
+    auto halfResolutionCoc = [&](GLenum filter) {
+        gl::SamplerName sampler = gl::createLinearClampSampler("test depth sampler");
+        glSamplerParameteri(sampler.name(), GL_TEXTURE_MIN_FILTER, GLint(filter));
+        glSamplerParameteri(sampler.name(), GL_TEXTURE_MAG_FILTER, GLint(filter));
+        const FullscreenPass* program = &filtered;
+        const GLuint s = sampler.name();
+        return run(w, h, uniformColour(w, h, {0, 0, 0, 1}), depth,
+                   [&](FrameGraph& g, TextureHandle, TextureHandle d) {
+                       Pass& pass =
+                           filtered.addPass(g, "test filtered coc", [program, d, lens, s](PassContext& ctx) {
+                               glProgramUniform2f(program->program(), glsl::kDofDepthRangeLocation,
+                                                  lens.nearM, lens.farM);
+                               glProgramUniform4f(program->program(), glsl::kDofLensLocation,
+                                                  lens.inverseFocusM, lens.scalePixelsM, lens.maxCocPixels,
+                                                  lens.radiusPerDiameter);
+                               glBindSampler(0, s);
+                               program->draw({ctx.native(d)});
+                               glBindSampler(0, 0);
+                           });
+                       pass.read(d).setTaps(1);
+                       return pass.create("test.coc_half",
+                                          {TextureSize::outputFraction(1, 2), TextureFormat::R32F, 1},
+                                          TextureUsage::ColorAttachment);
+                   });
+    };
+    auto ofOneObject = [&](float c) { return std::abs(c - nearCoc) < 1e-3f || std::abs(c - farCoc) < 1e-3f; };
+
+    FloatImage linear = halfResolutionCoc(GL_LINEAR);
+    ASSERT_FALSE(linear.empty()) << lastErrors;
+    ASSERT_EQ(linear.width, w / 2);
+    const float halo = linear.texel(16, 1, 0);
+    std::printf("near %.3f px, far %.3f px; the silhouette's CoC from a filtered depth %.3f px\n", nearCoc,
+                farCoc, halo);
+    EXPECT_GT(halo, nearCoc + 1.0f) << "the filtered depth's CoC should belong to neither object";
+    EXPECT_LT(halo, farCoc - 0.5f) << "the filtered depth's CoC should belong to neither object";
+    EXPECT_TRUE(ofOneObject(linear.texel(15, 1, 0)) && ofOneObject(linear.texel(17, 1, 0)));
+
+    FloatImage nearest = halfResolutionCoc(GL_NEAREST);
+    ASSERT_FALSE(nearest.empty()) << lastErrors;
+    for (int x = 0; x < w / 2; ++x) EXPECT_TRUE(ofOneObject(nearest.texel(x, 1, 0))) << "NEAREST, x " << x;
+    FloatImage fetched = coc(w, h, model, depth);
+    ASSERT_FALSE(fetched.empty()) << lastErrors;
+    for (int x = 0; x < w; ++x)
+        EXPECT_NEAR(fetched.texel(x, 1, 0), x <= 32 ? nearCoc : farCoc, 1e-3f) << "texelFetch, x " << x;
 }

@@ -63,7 +63,7 @@ protected:
         FloatImage reflected;  // reflection.color
         FloatImage shown;      // deferred.color after the mirror's surface
     };
-    Frame render(Size2D size, int fraction) {
+    Frame render(Size2D size, int fraction, const ReflectionMistakes& mistakes = {}) {
         GlFrameRunner runner(size);
         Frame f;
         for (bool wantReflection : {true, false}) {
@@ -72,7 +72,7 @@ protected:
                 GBufferTargets g = gbuffer.declare(graph, world, {GBufferLayout::compact, false, {}});
                 TextureHandle lit =
                     lighting.declare(graph, scene, g, lights, DeclaredShadowMap{}, std::nullopt);
-                TextureHandle color = reflection->declare(graph, world, lights, g, lit, fraction);
+                TextureHandle color = reflection->declare(graph, world, lights, g, lit, fraction, mistakes);
                 return wantReflection ? color : lit;
             });
             (wantReflection ? f.reflected : f.shown) = std::move(image);
@@ -181,6 +181,49 @@ TEST_F(PlanarReflectionOnGl, TheReflectionIsLitByTheSunAsTheBoxIs) {
     const float lambert = std::sqrt(0.5f);
     expectNear(side, kRed * (kAmbient + lambert), "the face towards the sun");
     expectNear(bottom, kRed * kAmbient, "the bottom, away from the sun");
+}
+
+// Hard cases 16 and 18, the raw-GL alternative (lesson 10's mirror_objects): the objects mirrored
+// (model matrix times the reflection, determinant -1) under the unmirrored camera. The box lands where
+// it does when the camera is mirrored, but its normals are mirrored and the sun is not: the face away
+// from the sun (the bottom, normal -y, mirrored to +y) is lit as if the sun shone from below, and the
+// face towards it keeps its light only because the sun's x is not mirrored in y = 0. The winding turns
+// round in both (determinant -1): the pass culls front faces either way, and the box is drawn.
+TEST_F(PlanarReflectionOnGl, MirroringTheObjectsInsteadLightsTheReflectionFromBelow) {
+    load();
+    const Size2D size{160, 90};
+    Frame camera = render(size, 1);
+    Frame objects = render(size, 1, {.mirrorObjects = true, .clearColor = std::nullopt});
+    ASSERT_FALSE(camera.reflected.empty() || objects.reflected.empty());
+    const glm::vec2 sideAt = projected({-0.99f, 1.0f, -1.0f}, size, true);
+    const glm::vec2 bottomAt = projected({-1.5f, 0.51f, -1.0f}, size, true);
+    const float lambert = std::sqrt(0.5f);
+    expectNear(at(camera.reflected, bottomAt), kRed * kAmbient,
+               "mirrored camera: the bottom, away from the sun");
+    expectNear(at(objects.reflected, bottomAt), kRed * (kAmbient + lambert),
+               "mirrored objects: the bottom, lit from below");
+    expectNear(at(objects.reflected, sideAt), at(camera.reflected, sideAt), "the side towards the sun");
+    // The same geometry in the same place: as many red texels either way.
+    EXPECT_NEAR(countDominant(objects.reflected, 0), countDominant(camera.reflected, 0), 2);
+    EXPECT_GT(countDominant(objects.reflected, 0), 20);
+}
+
+// The chapter's "background in the reflection": the reflection target is cleared, and wherever nothing
+// is reflected the mirror shows strength x the clear colour. fxlab clears it to the scene's sky (a
+// mirror there shows the sky); lesson 10's reflection_clear=chapter clears it to the chapter's
+// (0.1, 0.2, 0.3), and the mirror (strength 1, black itself) turns that colour where it is empty.
+TEST_F(PlanarReflectionOnGl, TheClearColourTintsTheMirrorWhereNothingIsReflected) {
+    load();
+    const Size2D size{160, 90};
+    const glm::vec2 empty = projected({4.0f, 0.0f, 2.0f}, size, false);  // reflects the sky above +X
+    Frame sky = render(size, 1);
+    Frame tinted = render(size, 1, {.mirrorObjects = false, .clearColor = glm::vec3(0.1f, 0.2f, 0.3f)});
+    ASSERT_FALSE(sky.shown.empty() || tinted.shown.empty());
+    expectNear(at(sky.shown, empty), glm::vec3(0.02f, 0.02f, 0.05f), "cleared to the sky");
+    expectNear(at(tinted.shown, empty), glm::vec3(0.1f, 0.2f, 0.3f), "cleared to the chapter's colour");
+    // Where the box is reflected the clear colour is covered.
+    const glm::vec2 side = projected({-0.99f, 1.0f, -1.0f}, size, true);
+    expectNear(at(tinted.shown, side), at(sky.shown, side), "the box's reflection");
 }
 
 // Hard case 14: at every reflection_size the red box's reflection lands where it does at full size

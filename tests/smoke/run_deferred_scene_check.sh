@@ -2,8 +2,8 @@
 # Lesson 10: the scene decides. With three point lights and the moon (not "many") the light culling pass is not
 # called for, with the scene's reason, and every light is still lit; without a mirror neither
 # reflection pass runs. A camera in the mirror's plane (edge-on) and the sizes the smoke test does not
-# cover (63x63, 1279x719) run with no GL error and no NaN or infinity in any texture. And the bench's
-# light count reaches the picture.
+# cover (63x63, 1279x719) run with no GL error and no NaN or infinity in any texture; so do the
+# mistakes steps 4 and 7 show on purpose. And the bench's light count reaches the picture.
 #   run_deferred_scene_check.sh <fxlab-10-deferred-shading> <shipped scene 10_deferred_shading.json> <work dir>
 set -uo pipefail
 exe="$1" shipped="$2" work="$3"
@@ -38,6 +38,12 @@ for step in 1 2 3 4 5 6 7; do
   run "big-$step" 1 --step "$step" --size 1279x719 --param light_count=16 --capture "$work/big-$step"
   check "$work/big-$step.json" 'r["glErrors"] == 0 and finite'
 done
+# The mistakes shown on purpose (tests/gl/test_planar_reflection.cpp and test_per_vertex_lighting.cpp
+# read their pictures back): each runs in the lesson without a GL error and says what it draws.
+run per-vertex 2 --step 4 --size 160x90 --param lighting=per-vertex
+check "$work/per-vertex.json" 'passes["per-vertex lighting"]["status"] == "runs" and r["glErrors"] == 0 and finite and r["facts"]["lighting"].startswith("per vertex")'
+run mirror-objects 2 --step 7 --size 160x90 --param mirror_objects=true --param reflection_clear=chapter
+check "$work/mirror-objects.json" 'passes["planar reflection"]["status"] == "runs" and r["glErrors"] == 0 and finite and r["facts"]["reflectionMirrors"].startswith("the objects") and r["facts"]["reflectionClear"].startswith("the chapter")'
 # The bench changes the light count between frames without an update(): one light must give another
 # picture than the reference's 1024 (the list is uploaded where the frame is built).
 "$exe" --bench --size 64x36 --bench-frames 1 --bench-values 1 --knob light_count --bench-out "$work/bench" \

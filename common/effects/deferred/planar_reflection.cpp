@@ -52,40 +52,57 @@ PlanarReflection::PlanarReflection(const Scene& scene) {
 }
 
 TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
-                                        const GBufferTargets& g, TextureHandle lit, int fraction) const {
+                                        const GBufferTargets& g, TextureHandle lit, int fraction,
+                                        const ReflectionMistakes& mistakes) const {
     std::optional<MirrorPlane> mirror = findMirror(world.scene(), world.seconds());
     const gl::ReloadableProgram* reflect = &reflect_;
     const PointLightBuffer* buffer = &lights;
     const MirrorPlane m = mirror.value_or(MirrorPlane{});
-    Pass& pass = graph.addPass("planar reflection", [reflect, buffer, world, m](PassContext& ctx) {
-        const Scene& scene = world.scene();
-        // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
-        // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
-        // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
-        Size2D size = ctx.outputSize();
-        CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
-        glm::mat4 r = reflectionMatrix(m.plane);
-        camera.view = camera.view * r;
-        camera.viewProjection = camera.projection * camera.view;
-        camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
-        GLuint program = reflect->name();
-        SceneMeshes::setFrameUniforms(program, scene, camera);
-        glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
-        glProgramUniform4fv(program, glsl::kClipPlaneLocation, 1, glm::value_ptr(clip));
-        glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
-        glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
-        buffer->bind();
-        glEnable(GL_CLIP_DISTANCE0);
-        world.draw(program);
-        glDisable(GL_CLIP_DISTANCE0);
-    });
+    const bool mirrorObjects = mistakes.mirrorObjects;
+    Pass& pass =
+        graph.addPass("planar reflection", [reflect, buffer, world, m, mirrorObjects](PassContext& ctx) {
+            const Scene& scene = world.scene();
+            // The same projection as the camera's, the view mirrored in the plane. The output's aspect, not
+            // the target's: a fraction of an output that is not its multiple (98 x 54 / 4 = 24 x 13) has an
+            // aspect of its own, and a reflection projected with it slides against the mirror (hard case 14).
+            Size2D size = ctx.outputSize();
+            CameraMatrices camera = cameraMatrices(scene.camera, size.width, size.height);
+            glm::mat4 r = reflectionMatrix(m.plane);
+            glm::mat4 objectMirror(1.0f);
+            glm::vec4 clip(glm::vec3(m.plane), m.plane.w - kClipAbove);
+            if (!mirrorObjects) {
+                camera.view = camera.view * r;
+                camera.viewProjection = camera.projection * camera.view;
+                camera.position = glm::vec3(r * glm::vec4(camera.position, 1.0f));
+            } else {
+                // The raw-GL alternative: the objects mirrored below the plane, so the clip keeps what is
+                // below it.
+                objectMirror = r;
+                clip = -glm::vec4(glm::vec3(m.plane), m.plane.w + kClipAbove);
+            }
+            GLuint program = reflect->name();
+            SceneMeshes::setFrameUniforms(program, scene, camera);
+            glProgramUniformMatrix4fv(program, glsl::kObjectMirrorLocation, 1, GL_FALSE,
+                                      glm::value_ptr(objectMirror));
+            glProgramUniform4fv(program, glsl::kClipPlaneLocation, 1, glm::value_ptr(clip));
+            glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
+            glProgramUniform1i(program, glsl::kPointLightCountLocation, buffer->count());
+            buffer->bind();
+            glEnable(GL_CLIP_DISTANCE0);
+            world.draw(program);
+            glDisable(GL_CLIP_DISTANCE0);
+        });
     const TextureSize at = TextureSize::outputFraction(1, std::clamp(fraction, 1, 8));
     TextureHandle color =
         pass.create("reflection.color", {at, TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
     pass.create("reflection.depth", {at, TextureFormat::Depth32F, 1}, TextureUsage::DepthAttachment);
     PassState state = hdrSceneState(world.scene());
-    state.cullFace = CullFace::Front;  // the mirrored view turns every triangle's winding round
-    pass.setState(state).setTaps(1);   // the base colour; the lights come from a buffer
+    // The mirrored view turns every triangle's winding round; so do mirrored objects (determinant -1).
+    state.cullFace = CullFace::Front;
+    if (mistakes.clearColor)
+        state.clearColor =
+            ClearColor{mistakes.clearColor->r, mistakes.clearColor->g, mistakes.clearColor->b, 1.0f};
+    pass.setState(state).setTaps(1);  // the base colour; the lights come from a buffer
     needs(pass, SceneFeature::mirror);
     runsWith(pass, reflect_);
 

@@ -33,6 +33,17 @@ std::optional<MirrorPlane> findMirror(const Scene& scene, double seconds);
 // The reflection in `plane` as a matrix: p - 2 (n.p + d) n. Its determinant is -1.
 glm::mat4 reflectionMatrix(glm::vec4 plane);
 
+// The raw-GL mistakes lesson 10 step 7 shows beside the way fxlab does it (off by default).
+struct ReflectionMistakes {
+    // Mirror the objects (model matrix times the reflection, determinant -1) under the unmirrored
+    // camera, instead of mirroring the camera: the geometry lands where it does either way, but every
+    // normal is mirrored and the sun is not, so the reflection is lit from below (hard cases 16, 18).
+    bool mirrorObjects = false;
+    // The colour the reflection target is cleared to (nullopt: the scene's sky, which is what a mirror
+    // shows where nothing is reflected). The chapter's clear colour tints the empty mirror.
+    std::optional<glm::vec3> clearColor;
+};
+
 class PlanarReflection {
 public:
     // Builds the programs, and the mirror's mesh when `scene` has a mirror.
@@ -41,7 +52,8 @@ public:
     // "planar reflection" at `fraction` of the output (1, 2 or 4: full, half, quarter size), then
     // "mirror surface" over `lit` (modified in place). Returns reflection.color.
     TextureHandle declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
-                          const GBufferTargets& g, TextureHandle lit, int fraction) const;
+                          const GBufferTargets& g, TextureHandle lit, int fraction,
+                          const ReflectionMistakes& mistakes = {}) const;
 
 private:
     gl::ReloadableProgram reflect_{{"effects/deferred/mirrored_scene.vert",

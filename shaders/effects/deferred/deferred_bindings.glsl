@@ -7,6 +7,7 @@ const int kSkyLocation = 23;                    // vec3: deferred_lighting.frag
 const int kTilesXLocation = 24;                 // int: deferred_lighting.frag, tiled
 const int kWorldOffsetLocation = 25;            // vec3: deferred_lighting.frag
 const int kClipPlaneLocation = 26;              // vec4: mirrored_scene.vert
+const int kObjectMirrorLocation = 32;           // mat4 (32 to 35): mirrored_scene.vert
 const int kMirrorStrengthLocation = 27;         // float: mirror_surface.frag
 const int kMirrorOutputSizeLocation = 28;       // vec2: mirror_surface.frag
 const int kMirrorReflectionBinding = 0;         // sampler2D: mirror_surface.frag

@@ -11,6 +11,9 @@ layout(location = 1) in vec2 texcoord;
 layout(location = 2) in vec3 normal;
 
 layout(location = kClipPlaneLocation) uniform vec4 clipPlane;  // n.p + d >= 0 is kept
+// The identity: fxlab mirrors the camera. Lesson 10's mirror_objects shows the raw-GL alternative, the
+// reflection here (model matrix times it, determinant -1) and the camera as it is.
+layout(location = kObjectMirrorLocation) uniform mat4 objectMirror;
 
 layout(location = 1) out vec2 outTexcoord;
 layout(location = 2) out vec3 worldNormal;
@@ -18,8 +21,9 @@ layout(location = 3) out vec3 worldPosition;
 
 void main() {
     outTexcoord = texcoord;
-    worldNormal = mat3(modelMatrix) * normal;
-    vec4 world = modelMatrix * vec4(position, 1.0);
+    mat4 model = objectMirror * modelMatrix;
+    worldNormal = mat3(model) * normal;
+    vec4 world = model * vec4(position, 1.0);
     worldPosition = world.xyz;
     gl_ClipDistance[0] = dot(clipPlane.xyz, world.xyz) + clipPlane.w;
     gl_Position = viewProjectionMatrix * world;
