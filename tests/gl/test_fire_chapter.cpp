@@ -182,6 +182,33 @@ TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThe
     }
 }
 
+TEST_F(FireChapter, ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown) {
+    // Opaque in the picture's bottom half (the image's rows run bottom-up): upright, the mass lies below
+    // the particle's centre; uploaded in the file's order (lesson 07's flip_sprite), above it.
+    const auto sprite = writeSprite("bottom-half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; });
+    ParticleEmitter e = chapterFire();
+    e.riseSpeed = 0.0f;
+    e.startColor.a = e.endColor.a = 1.0f;
+    e.startSize = e.endSize = 2.0f;
+    EmitterSetup setup = setupOf(e, false);
+    setup.textured = true;
+    ParticleSystem system({setup});
+    auto massRow = [&](ParticleRenderer::SpriteRows rows) {
+        EXPECT_TRUE(renderer.loadSprite(sprite, rows));
+        FloatImage image = draw(system, {at(e, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64);
+        double sy = 0, sum = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                sy += image.texel(x, y, 3) * (y + 0.5 - 32.0);
+                sum += image.texel(x, y, 3);
+            }
+        EXPECT_GT(sum, 100.0);
+        return sy / std::max(sum, 1.0);  // pixels above the centre (rows bottom-up)
+    };
+    EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::bottomFirst), -8.0, 1.0) << "upright: a quarter down";
+    EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::topFirst), 8.0, 1.0) << "top row first: upside down";
+}
+
 TEST_F(FireChapter, SpawnOrderBlendsTheFarParticleOverTheNearOneAndBackToFrontDoesNot) {
     // The colour says which particle is on top: red when young, blue when old, alpha 0.8 throughout.
     ParticleEmitter e = chapterFire();
