@@ -44,7 +44,8 @@ ParticleDrawSettings orthographic(float left, float right, float bottom, float t
     return s;
 }
 
-// A sprite file whose alpha is `alpha(x, y)` (y: the file's row, 0 first).
+// A sprite file whose alpha is `alpha(x, y)` (y: the picture's row, 0 at the bottom, as fx images count;
+// writePng stores it last).
 template <class F>
 std::filesystem::path writeSprite(const std::string& name, int size, F alpha) {
     ByteImage image = makeByteImage(size, size, 4, 255);
@@ -143,7 +144,7 @@ TEST_F(FireChapter, OneParticleRisesTwoMetresGrowsFourfoldAndFadesOverItsSecond)
 }
 
 TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThePicture) {
-    // A sprite opaque in the first half of the file's rows only: where its mass lies says its angle.
+    // A sprite opaque in the bottom half of the picture only: where its mass lies says its angle.
     ASSERT_TRUE(
         renderer.loadSprite(writeSprite("half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; })));
     ParticleEmitter e = chapterFire();
@@ -172,8 +173,9 @@ TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThe
         return std::atan2(sy, sx);
     };
     const double start = angleAt(0.0f);
-    // The file's first row is the sprite's v = 0, the bottom of the quad (the texture's origin): the
-    // chapter's sprite is stored so (docs/assets.md), and a loader that flips it turns the flame over.
+    // The picture's bottom row is the sprite's v = 0, the bottom of the quad (the texture's origin): the
+    // chapter's sprite is stored the right way up (docs/assets.md), and a loader that uploads the file's
+    // top row first turns the flame over (ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown).
     EXPECT_NEAR(start, -std::numbers::pi / 2, 0.02);
     for (float age : {0.25f, 0.5f, 0.75f, 1.0f, 1.5f}) {
         double turned = std::remainder(angleAt(age) - start, 2.0 * std::numbers::pi);
