@@ -96,6 +96,23 @@ Box coverage(const FloatImage& image) {
     return b;
 }
 
+// The alpha's mass and its first moments about the picture's centre (in pixels, rows bottom-up): where
+// a half-opaque sprite's mass lies says which way it points.
+struct AlphaMass {
+    double x = 0, y = 0, sum = 0;
+};
+AlphaMass alphaMass(const FloatImage& image) {
+    AlphaMass m;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double a = image.texel(x, y, 3);
+            m.x += a * (x + 0.5 - 0.5 * image.width);
+            m.y += a * (y + 0.5 - 0.5 * image.height);
+            m.sum += a;
+        }
+    return m;
+}
+
 }  // namespace
 
 TEST_F(FireChapter, OneParticleRisesTwoMetresGrowsFourfoldAndFadesOverItsSecond) {
@@ -160,17 +177,9 @@ TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThe
 
     const ParticleDrawSettings view = orthographic(-2, 2, -2, 2);
     auto angleAt = [&](float age) {
-        FloatImage image = draw(system, {at(e, {0, 0, -10}, age)}, view, 64, 64);
-        double sx = 0, sy = 0, sum = 0;
-        for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) {
-                double a = image.texel(x, y, 3);
-                sx += a * (x + 0.5 - 32.0);
-                sy += a * (y + 0.5 - 32.0);
-                sum += a;
-            }
-        EXPECT_GT(sum, 100.0) << "age " << age;
-        return std::atan2(sy, sx);
+        const AlphaMass m = alphaMass(draw(system, {at(e, {0, 0, -10}, age)}, view, 64, 64));
+        EXPECT_GT(m.sum, 100.0) << "age " << age;
+        return std::atan2(m.y, m.x);
     };
     const double start = angleAt(0.0f);
     // The picture's bottom row is the sprite's v = 0, the bottom of the quad (the texture's origin): the
@@ -197,15 +206,10 @@ TEST_F(FireChapter, ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown) {
     ParticleSystem system({setup});
     auto massRow = [&](ParticleRenderer::SpriteRows rows) {
         EXPECT_TRUE(renderer.loadSprite(sprite, rows));
-        FloatImage image = draw(system, {at(e, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64);
-        double sy = 0, sum = 0;
-        for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) {
-                sy += image.texel(x, y, 3) * (y + 0.5 - 32.0);
-                sum += image.texel(x, y, 3);
-            }
-        EXPECT_GT(sum, 100.0);
-        return sy / std::max(sum, 1.0);  // pixels above the centre (rows bottom-up)
+        const AlphaMass m =
+            alphaMass(draw(system, {at(e, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64));
+        EXPECT_GT(m.sum, 100.0);
+        return m.y / std::max(m.sum, 1.0);  // pixels above the centre
     };
     EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::bottomFirst), -8.0, 1.0) << "upright: a quarter down";
     EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::topFirst), 8.0, 1.0) << "top row first: upside down";

@@ -23,24 +23,15 @@ run step9-half-bug --step 9 --param resolution=half --param depth_lookup_bug=tru
 run step3 --step 3
 run step3-mipmaps --step 3 --param mipmaps=true
 PYTHONPATH="$here" python3 - "$work" <<'PY'
-import json, sys
-from png_pixels import read_png
-work = sys.argv[1]
-failures = []
-def report(name):
-    with open(f"{work}/{name}.json") as f:
-        return json.load(f)
-def picture(name, texture="final"):
-    return read_png(f"{work}/{name}/{texture}.png")
-names = ("step5", "step5-sky", "step9-half", "step9-half-bug", "step3", "step3-mipmaps")
-for name in names:
-    if report(name)["glErrors"] != 0:
-        failures.append(f"{name}: GL errors")
+import sys
+from lesson_captures import Captures
+runs = Captures(sys.argv[1])
+failures = runs.gl_error_failures(("step5", "step5-sky", "step9-half", "step9-half-bug", "step3", "step3-mipmaps"))
 
 # sky_distance: scene.depth as stored (a depth PNG is written directly: 255 is depth 1).
-if not float(report("step5-sky")["facts"].get("skyDepth", "1")) < 1.0:
-    failures.append(f"sky_distance: skyDepth is {report('step5-sky')['facts'].get('skyDepth')}, not below 1")
-depth, fine, sky = picture("step5", "scene.depth"), picture("step5"), picture("step5-sky")
+if not float(runs.fact("step5-sky", "skyDepth") or "1") < 1.0:
+    failures.append(f"sky_distance: skyDepth is {runs.fact('step5-sky', 'skyDepth')}, not below 1")
+depth, fine, sky = runs.picture("step5", "scene.depth"), runs.picture("step5"), runs.picture("step5-sky")
 sky_pixels = changed = darker = 0
 for y, row in enumerate(depth):
     for x, d in enumerate(row):
@@ -58,11 +49,11 @@ if changed < 0.01 * sky_pixels or darker < 0.9 * changed:
                     "the clouds behind the sky should go")
 
 # depth_lookup_bug
-facts = report("step9-half")["facts"], report("step9-half-bug")["facts"]
+facts = runs.report("step9-half")["facts"], runs.report("step9-half-bug")["facts"]
 if facts[0].get("depthTexelsPerPixel") != "2" or not facts[1].get("depthTexelsPerPixel", "").startswith("1"):
     failures.append(f"depth_lookup_bug: depthTexelsPerPixel {facts[0].get('depthTexelsPerPixel')} and "
                     f"{facts[1].get('depthTexelsPerPixel')}")
-fine, bug = picture("step9-half"), picture("step9-half-bug")
+fine, bug = runs.picture("step9-half"), runs.picture("step9-half-bug")
 moved = sum(1 for a, b in zip(fine, bug) for p, q in zip(a, b) if max(abs(u - v) for u, v in zip(p, q)) > 30)
 if moved < 0.01 * len(fine) * len(fine[0]):
     failures.append(f"depth_lookup_bug: only {moved} pixels changed by more than 30")
@@ -75,7 +66,7 @@ def energy(rows):
             a = sum(rows[y][x])
             e += abs(a - sum(rows[y][x + 1])) + abs(a - sum(rows[y + 1][x]))
     return e
-one_level, mipmapped = energy(picture("step3")), energy(picture("step3-mipmaps"))
+one_level, mipmapped = energy(runs.picture("step3")), energy(runs.picture("step3-mipmaps"))
 if not mipmapped < 0.9 * one_level:
     failures.append(f"mipmaps: high-frequency energy near the horizon {mipmapped} against {one_level} with one level")
 for f in failures:

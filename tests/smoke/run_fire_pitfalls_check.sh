@@ -21,41 +21,26 @@ run held-upright --param hold_alpha=1
 run held-flipped --param hold_alpha=1 --param flip_sprite=true
 run no-bloom --param intensity=0
 PYTHONPATH="$here" python3 - "$work" <<'PY'
-import json, struct, sys
-from png_pixels import read_png
-work = sys.argv[1]
-failures = []
-def report(name):
-    with open(f"{work}/{name}.json") as f:
-        return json.load(f)
-def pfm(path):  # (width, height, channels, values), rows bottom-up
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        channels = 3 if kind == b"PF" else 1
-        count = width * height * channels
-        values = struct.unpack(("<" if scale < 0 else ">") + f"{count}f", f.read(4 * count))
-    return width, height, channels, values
-for name in ("held-0.30", "held-0.40", "held-upright", "held-flipped", "no-bloom"):
-    if report(name)["glErrors"] != 0:
-        failures.append(f"{name}: GL errors")
+import sys
+from lesson_captures import Captures
+runs = Captures(sys.argv[1])
+failures = runs.gl_error_failures(("held-0.30", "held-0.40", "held-upright", "held-flipped", "no-bloom"))
 for name, glows in (("held-0.30", False), ("held-0.40", True)):
-    brightest = max(pfm(f"{work}/{name}/bloom.down-0.pfm")[3])
+    brightest = max(runs.floats(name, "bloom.down-0")[3])
     if (brightest > 0) != glows:
         failures.append(f"{name}: the bright pass's largest value is {brightest}; it should {'' if glows else 'not '}glow")
-    if report(name)["facts"].get("heldGlows") != ("yes" if glows else "no"):
-        failures.append(f"{name}: heldGlows is {report(name)['facts'].get('heldGlows')}")
+    if runs.fact(name, "heldGlows") != ("yes" if glows else "no"):
+        failures.append(f"{name}: heldGlows is {runs.fact(name, 'heldGlows')}")
 def core_centre_y(name):  # the mean row of the pixels the held particle makes brighter than 1 in red
-    width, height, channels, v = pfm(f"{work}/{name}/scene.color.pfm")
+    width, height, channels, v = runs.floats(name, "scene.color")
     rows = [y for y in range(height) for x in range(width) if v[(y * width + x) * channels] > 1.0]
     return sum(rows) / len(rows) if rows else None
 upright, flipped = core_centre_y("held-upright"), core_centre_y("held-flipped")
 if upright is None or flipped is None or not flipped > upright + 2:
     failures.append(f"flip_sprite: the particle's mass should move up (rows bottom-up): upright {upright}, flipped {flipped}")
-fact = report("no-bloom")["facts"].get("opaqueFlame", "")
+fact = runs.fact("no-bloom", "opaqueFlame") or ""
 expected = tuple(int(v) for v in fact.strip("()").split(", ")) if fact.startswith("(") else None
-shown = max((p for row in read_png(f"{work}/no-bloom/final.png") for p in row), key=lambda p: (p[0], p[1], p[2]))
+shown = max((p for row in runs.picture("no-bloom") for p in row), key=lambda p: (p[0], p[1], p[2]))
 if expected is None or any(abs(a - b) > 1 for a, b in zip(shown, expected)):
     failures.append(f"intensity 0: the most opaque flame pixel is {shown}, the fact opaqueFlame says {fact}")
 for f in failures:
