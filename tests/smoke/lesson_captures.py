@@ -1,9 +1,9 @@
-"""What a smoke check reads from a lesson run with --capture DIR/NAME --report DIR/NAME.json: the
-report, the captured pictures (rows top first, png_pixels) and float textures (--capture-float). The
-standard library only."""
-import json
+"""What a smoke check reads from lesson runs made with --capture DIR/NAME --report DIR/NAME.json: the
+report (through report.py), the captured pictures (rows top first, png_pixels.py) and the float
+textures of --capture-float. The standard library only."""
 import struct
 
+import report as reports
 from png_pixels import read_png
 
 
@@ -12,11 +12,10 @@ class Captures:
         self.work = work
 
     def report(self, name):
-        with open(f"{self.work}/{name}.json") as f:
-            return json.load(f)
+        return reports.load(f"{self.work}/{name}.json")
 
     def fact(self, name, fact):
-        return self.report(name)["facts"].get(fact)
+        return reports.facts(self.report(name)).get(fact)
 
     def picture(self, name, texture="final"):
         return read_png(f"{self.work}/{name}/{texture}.png")
