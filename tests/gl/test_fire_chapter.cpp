@@ -96,6 +96,16 @@ Box coverage(const FloatImage& image) {
     return b;
 }
 
+// One particle that stays where it is born, opaque and 2 m wide, drawn with the loaded sprite.
+EmitterSetup stillSprite(ParticleEmitter e) {
+    e.riseSpeed = 0.0f;
+    e.startColor.a = e.endColor.a = 1.0f;
+    e.startSize = e.endSize = 2.0f;
+    EmitterSetup setup = setupOf(e, false);
+    setup.textured = true;
+    return setup;
+}
+
 // The alpha's mass and its first moments about the picture's centre (in pixels, rows bottom-up): where
 // a half-opaque sprite's mass lies says which way it points.
 struct AlphaMass {
@@ -166,18 +176,14 @@ TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThe
         renderer.loadSprite(writeSprite("half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; })));
     ParticleEmitter e = chapterFire();
     e.spinDegreesPerSecond = 120.0f;
-    e.riseSpeed = 0.0f;  // stays at the centre
     e.lifetimeSeconds = 4.0f;
-    e.startColor.a = e.endColor.a = 1.0f;
-    e.startSize = e.endSize = 2.0f;
-    EmitterSetup setup = setupOf(e, false);
-    setup.textured = true;
-    ParticleSystem system({setup});
+    const EmitterSetup still = stillSprite(e);  // stays at the centre
+    ParticleSystem system({still});
     EXPECT_NEAR(system.emitters()[0].motion.x, 2.0944f, 1e-4f) << "radians a second";
 
     const ParticleDrawSettings view = orthographic(-2, 2, -2, 2);
     auto angleAt = [&](float age) {
-        const AlphaMass m = alphaMass(draw(system, {at(e, {0, 0, -10}, age)}, view, 64, 64));
+        const AlphaMass m = alphaMass(draw(system, {at(still.emitter, {0, 0, -10}, age)}, view, 64, 64));
         EXPECT_GT(m.sum, 100.0) << "age " << age;
         return std::atan2(m.y, m.x);
     };
@@ -197,17 +203,12 @@ TEST_F(FireChapter, ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown) {
     // Opaque in the picture's bottom half (the image's rows run bottom-up): upright, the mass lies below
     // the particle's centre; uploaded in the file's order (lesson 07's flip_sprite), above it.
     const auto sprite = writeSprite("bottom-half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; });
-    ParticleEmitter e = chapterFire();
-    e.riseSpeed = 0.0f;
-    e.startColor.a = e.endColor.a = 1.0f;
-    e.startSize = e.endSize = 2.0f;
-    EmitterSetup setup = setupOf(e, false);
-    setup.textured = true;
-    ParticleSystem system({setup});
+    const EmitterSetup still = stillSprite(chapterFire());
+    ParticleSystem system({still});
     auto massRow = [&](ParticleRenderer::SpriteRows rows) {
         EXPECT_TRUE(renderer.loadSprite(sprite, rows));
-        const AlphaMass m =
-            alphaMass(draw(system, {at(e, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64));
+        const AlphaMass m = alphaMass(
+            draw(system, {at(still.emitter, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64));
         EXPECT_GT(m.sum, 100.0);
         return m.y / std::max(m.sum, 1.0);  // pixels above the centre
     };
