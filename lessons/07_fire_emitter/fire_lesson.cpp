@@ -10,6 +10,7 @@
 #include "base/log.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/scene/camera_matrices.hpp"
+#include "image/view_transform.hpp"
 #include "scene/scene_enums.hpp"
 #include "scene/scene_settings.hpp"
 
@@ -19,7 +20,18 @@ using namespace fx;
 
 namespace {
 
-const int kOffscreenDivisors[] = {1, 2, 4};
+// Step 5's off-screen target: the output's size divided by this.
+int divisorOf(FireLesson::Offscreen resolution) {
+    switch (resolution) {
+        case FireLesson::Offscreen::full:
+            return 1;
+        case FireLesson::Offscreen::half:
+            return 2;
+        case FireLesson::Offscreen::quarter:
+            return 4;
+    }
+    return 1;
+}
 
 std::vector<std::string> workloadNames() {
     std::vector<std::string> names{"params"};
@@ -42,17 +54,16 @@ std::vector<std::string> FireLesson::steps() const {
 
 void FireLesson::declareParams(ParamSet& params) {
     params.addChoice("path", &path_, {"step", "objects", "instanced", "gpu"},
-                     "The simulation path: the step's own, one object per particle, one instanced draw, or "
-                     "the GPU (compute and an indirect draw)");
-    params.addInt(
-        "count", &count_, 0, 100000,
-        "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, 2000 in "
-        "step 3, 100000 in step 4)");
+                     "The simulation path: the step's own, one object per particle, one instanced draw, "
+                     "or the GPU (compute and an indirect draw)");
+    params.addInt("count", &count_, 0, 100000,
+                  "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, "
+                  "2000 in step 3, 100000 in step 4)");
     // Not a quality knob but the bench's sweep of the three paths at 100 to 100000 particles: one knob,
     // so every row is timed in the same run against the same full-screen copy.
-    Param& workload = params.addChoice("workload", &workload_, workloadNames(),
-                                       "The bench: a simulation path and a particle count together "
-                                       "(params: the path and count parameters)");
+    Param& workload = params.addChoice(
+        "workload", &workload_, workloadNames(),
+        "The bench: a simulation path and a particle count together (params: the path and count parameters)");
     workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
     params.addFloat("spin", &spin_, -720.0f, 720.0f,
                     "Degrees per second the fire's sprites turn (the chapter's exercise: 120)");
@@ -70,6 +81,14 @@ void FireLesson::declareParams(ParamSet& params) {
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     offscreen.inSteps({Beyond});
     params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
+    params.addBool("flip_sprite", &flipSprite_,
+                   "Uploads the sprite's rows in the file's order, top row first, as raw GL code often does: "
+                   "a deliberate mistake that turns the flame upside down");
+    params
+        .addFloat("hold_alpha", &holdAlpha_, 0.0f, 1.0f,
+                  "Step 1: one particle standing at the emitter with its alpha held here, "
+                  "to watch its glow vanish below 1/3 (0: the chapter's fire)")
+        .inSteps({Objects});
     params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
     params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
                       "Bloom, the Shader effects chapter's");
@@ -84,7 +103,8 @@ Status FireLesson::init(const Scene& scene) {
         if (e.sprite.empty()) continue;
         if (!first) {
             first = &e;
-            if (Status s = renderer_->loadSprite(e.sprite.resolved); !s) return s;
+            spritePath_ = e.sprite.resolved;
+            if (Status s = renderer_->loadSprite(spritePath_, spriteRows_); !s) return s;
         } else if (e.sprite.resolved != first->sprite.resolved) {
             log::warning("emitter '", e.name, "' asks for sprite ", e.sprite.path,
                          "; lesson 07 draws every emitter with ", first->sprite.path);
@@ -102,6 +122,14 @@ void FireLesson::update(const FrameInfo& frame) {
 void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
     HdrSceneTargets hdr = scenePass_->declare(graph, frame.world);
+    // flip_sprite: the same file uploaded again, in the other row order.
+    const auto spriteRows =
+        flipSprite_ ? ParticleRenderer::SpriteRows::topFirst : ParticleRenderer::SpriteRows::bottomFirst;
+    if (spriteRows != spriteRows_ && !spritePath_.empty()) {
+        spriteRows_ = spriteRows;
+        if (Status s = renderer_->loadSprite(spritePath_, spriteRows); !s)
+            log::error("lesson 07: ", s.error());
+    }
     const bool particles = !lacks(graph, SceneFeature::particles);
 
     // The simulation's setup follows the step and the parameters; a change starts it over. Without an
@@ -165,7 +193,7 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
             // by scene.depth read as a texture (no depth attachment: no feedback loop), then laid over
             // scene.color. The target is 32-bit float: additive light sums without limit there, and the
             // composite clamps it before the 16-bit scene.color.
-            const int divisor = kOffscreenDivisors[std::clamp(offscreen_, 0, 2)];
+            const int divisor = divisorOf(*offscreen_);
             const float soft = std::max(soft_, 0.01f);  // 0 would divide by 0: refused
             const TextureHandle depth = hdr.depth;
             Pass& off = graph.addPass("particles.offscreen", [this, cam, depth, soft](PassContext& ctx) {
@@ -234,8 +262,8 @@ void FireLesson::drawPanel(const FrameInfo& frame) {
             break;
         case Hitch:
             ImGui::TextWrapped(
-                "Left: the chapter's rules. Right: the fixes. Every 120th frame is %.2f s long; watch the "
-                "left flame flash dark and then spawn a burst.",
+                "Left: the chapter's rules. Right: the fixes. Every 120th frame is %.2f s long; "
+                "watch the left flame flash dark and then spawn a burst.",
                 double(hitch_));
             break;
         case Instanced:
@@ -277,13 +305,13 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
     std::uint64_t bytes = setup_.path == Path::gpu ? (gpu_ ? gpu_->bytes() : 0) : renderer_->instanceBytes();
     out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");
-    out.add("buffers",
-            setup_.path == Path::gpu
-                ? "particles.pool, particles.live, particles.draw_command, particles.stats, "
-                  "particles.emitters"
-            : setup_.path == Path::instanced ? "particles.instances, particles.emitters"
-                                             : "particles.emitters (and one set of uniforms per particle)",
-            "particle buffers (GL labels)");
+    out.add(
+        "buffers",
+        setup_.path == Path::gpu
+            ? "particles.pool, particles.live, particles.draw_command, particles.stats, particles.emitters"
+        : setup_.path == Path::instanced ? "particles.instances, particles.emitters"
+                                         : "particles.emitters (and one set of uniforms per particle)",
+        "particle buffers (GL labels)");
     if (frame.step == Hitch) {
         out.add("hitch", hitchNow_, "this frame was long");
         out.add("negativeAlpha", std::to_string(negativeAlpha_), "particles drawn with alpha below 0 (left)");
@@ -295,6 +323,25 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
         }
         out.add("chapterBacklog", std::to_string(chapterBacklog),
                 "spawns the chapter's timer still owes (left)");
+    }
+    if (frame.step == Objects) {
+        for (const EmitterSetup& s : setup_.emitters) {
+            const glm::vec4 c = s.emitter.startColor;
+            // An opaque particle shows its emission, clipped at 1 and encoded as sRGB bytes (what step 1
+            // displays where the flame is opaque, with the bloom's intensity at 0).
+            auto shown = [](float v) { return int(toDisplayValue(v, ViewTransform::LinearToSrgb)); };
+            out.add("opaqueFlame", cat("(", shown(c.r), ", ", shown(c.g), ", ", shown(c.b), ")"),
+                    "an opaque particle, clipped and encoded (bloom off)");
+            if (holdingAlpha(frame)) {
+                // The bright pass keeps what its brightest channel has above the threshold.
+                const float brightest = std::max({c.r, c.g, c.b}) * holdAlpha_;
+                out.add("heldBrightest", cat(brightest),
+                        "the held particle's brightest channel (emission x alpha)");
+                out.add("heldGlows", brightest > threshold_ ? "yes" : "no",
+                        "above the bloom threshold: it glows");
+            }
+            break;
+        }
     }
     if (frame.step <= Instanced)
         out.add("outOfOrder", std::to_string(outOfOrder_), "pairs drawn front before back");

@@ -8,6 +8,7 @@
 // the chapter leaves out: premultiplied alpha, soft particles, off-screen particles, smoke and sparks.
 // Lesson 06's bloom makes the fire glow.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,7 @@ public:
 
     enum Step { Objects, Hitch, Instanced, Gpu, Beyond };
     enum class Path { objects, instanced, gpu };
+    enum class Offscreen { full, half, quarter };  // step 5's particle target against the output
 
     // What a step simulates and how: the emitters (with their rules), the path and the blend.
     struct Setup {
@@ -67,20 +69,24 @@ private:
     void simulate(double dt, const fx::Camera& sceneCamera);  // the "particles.simulate" pass body
     int draw(const fx::ParticleDrawSettings& settings);       // the draw pass bodies: draw calls made
     bool anyEmitterInView(const fx::FrameInfo& frame) const;
+    bool holdingAlpha(const fx::FrameInfo& frame) const { return frame.step == Objects && holdAlpha_ > 0.0f; }
     void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
 
     // Parameters.
-    int path_ = 0;            // 0: the step's own path; else objects, instanced, gpu
-    int count_ = 0;           // particles alive in the fire (0: the step's own)
-    float spin_ = 0.0f;       // deg/s added to the fire (the chapter's exercise: 120)
-    float hitch_ = 0.5f;      // step 2: the long frame (s)
-    bool sort_ = true;        // steps 2 (fixed side) and 3: back to front
-    float soft_ = 0.3f;       // step 5: soft-fade distance (m)
-    int offscreen_ = 1;       // step 5: particles at full, half or quarter resolution
-    int pool_ = 0;            // slots per emitter (0: from rate x lifetime)
-    int workload_ = 0;        // the bench: a path and a count together (0: the parameters above)
-    float threshold_ = 1.0f;  // the chapter's bloom (lesson 06, step 3)
-    float intensity_ = 2.0f;
+    int path_ = 0;        // 0: the step's own path; else objects, instanced, gpu
+    int count_ = 0;       // particles alive in the fire (0: the step's own)
+    float spin_ = 0.0f;   // deg/s added to the fire (the chapter's exercise: 120)
+    float hitch_ = 0.5f;  // step 2: the long frame (s)
+    bool sort_ = true;    // steps 2 (fixed side) and 3: back to front
+    float soft_ = 0.3f;   // step 5: soft-fade distance (m)
+    fx::Choice<Offscreen> offscreen_{Offscreen::half};  // step 5: the particles' target's resolution
+    int pool_ = 0;                                      // slots per emitter (0: from rate x lifetime)
+    int workload_ = 0;             // the bench: a path and a count together (0: the parameters above)
+    float threshold_, intensity_;  // the chapter's bloom (lesson 06, step 3): the scene's settings
+    bool flipSprite_ = false;      // the raw-GL mistake: the sprite's file rows uploaded top first
+    float holdAlpha_ = 0.0f;       // step 1: one particle with this alpha (0: the chapter's fire)
+    fx::ParticleRenderer::SpriteRows spriteRows_ = fx::ParticleRenderer::SpriteRows::bottomFirst;
+    std::filesystem::path spritePath_;  // the sprite loaded, loaded again when flip_sprite changes
 
     fx::Gpu<fx::HdrScenePass> scenePass_;
     fx::Gpu<fx::ParticleRenderer> renderer_;

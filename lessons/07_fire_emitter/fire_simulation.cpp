@@ -30,6 +30,20 @@ EmitterSetup swarm(EmitterSetup s, int count) {
     return s;
 }
 
+// hold_alpha: one particle as the chapter's is at half its life (1 m up, 1.25 m wide), standing still
+// with its alpha held. One slot: each spawn replaces the particle with its twin, so the picture holds.
+EmitterSetup heldParticle(EmitterSetup s, float alpha) {
+    ParticleEmitter& e = s.emitter;
+    e.position.y += 0.5f * e.riseSpeed * e.lifetimeSeconds;
+    e.startSize = e.endSize = 0.5f * (e.startSize + e.endSize);
+    e.riseSpeed = 0.0f;
+    e.spread = 0.0f;
+    e.startColor.a = e.endColor.a = alpha;
+    s.capacity = 1;
+    s.sizeScale = 1.0f;
+    return s;
+}
+
 float emitterRadius(const ParticleEmitter& e) {
     return 0.5f * std::abs(e.riseSpeed) * e.lifetimeSeconds * 1.5f + e.spread * e.lifetimeSeconds +
            std::max(e.startSize, e.endSize);
@@ -57,6 +71,7 @@ FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
         int count = count_ > 0 ? count_ : step == Instanced ? kInstancedCount : step == Gpu ? kGpuCount : 0;
         if (workload_ > 0) count = kWorkloadCounts[(workload_ - 1) % 4];
         if (count > 0 && e.kind == EmitterKind::fire) s = swarm(s, count);
+        if (holdingAlpha(frame) && e.kind == EmitterKind::fire) s = heldParticle(s, holdAlpha_);
         setup.emitters.push_back(s);
     }
     if (step == Hitch) {

@@ -16,12 +16,17 @@
 #include "effects/clouds/cloud_pass.hpp"
 #include "effects/clouds/cloud_shadow_pass.hpp"
 #include "effects/clouds/cloud_temporal.hpp"
+#include "effects/post/fullscreen_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/scene_meshes.hpp"
 #include "effects/shadow/shadow_lit_pass.hpp"
 #include "effects/shadow/shadow_map.hpp"
 #include "scene/scene_settings.hpp"
+
+namespace fx::glsl {
+#include "shaders/lessons/08_clouds/sky_depth_bindings.glsl"
+}  // namespace fx::glsl
 
 namespace lesson08 {
 
@@ -68,13 +73,11 @@ public:
     CloudFrameSettings settingsForStep(int step, int frameIndex) const;
 
 private:
-    // Parameters; the slab, scales, threshold and samples start at the scene's first cloud layer.
-    float bottom_ = 0.0f;
-    float top_ = 2.0f;
-    float scale0_ = 1.0f / 311.0f;
-    float scale1_ = 1.0f / 127.0f;
-    float threshold_ = 0.5f;
-    float steps_ = 8.0f;  // a float on purpose: the overlay can ask for 8.5 (hard case 10)
+    // Parameters; the slab, scales, threshold and samples are the scene's first cloud layer's settings.
+    float bottom_, top_;
+    float scale0_, scale1_;
+    float threshold_;
+    float steps_;  // a float on purpose: the overlay can ask for 8.5 (hard case 10)
     bool rejectBehind_ = true;
     float cameraLift_ = 0.0f;
     Choice<CloudDither> dither_{CloudDither::ign};
@@ -85,6 +88,10 @@ private:
     int resolution_ = 0;        // step 9: 0 full, 1 half
 
     int quality_ = 0;  // step 9: 0 the knobs above, else one of kQualityPresets
+    // Pitfalls shown on purpose, each off by default.
+    float skyDistance_ = 0.0f;     // steps 4 to 9: a sky at this distance writes depth (0: none)
+    bool depthLookupBug_ = false;  // step 9 at half resolution: depth read at the layer's own pixels
+    bool mipmaps_ = false;         // the density at the level of the pixel's footprint (the fix)
 
     // What restarts the running average when it changes (everything but the camera and the jitter).
     std::uint64_t settingsKey(const CloudFrameSettings& s, int step) const;
@@ -97,6 +104,11 @@ private:
     Gpu<CloudShadowPass> cloudShadow_;
     glm::vec3 sunDirection_{0.0f, -1.0f, 0.0f};  // where the shadow-casting light travels
     CloudDensityTexture density_;                // loaded only when the scene has a cloud layer
+    CloudDensityTexture mipmappedDensity_;       // the same file with every level, loaded for mipmaps
+    std::string densityPath_;
+    Gpu<FullscreenPass> skyDepth_{"lessons/08_clouds/sky_depth.frag", "clouds: sky that writes depth"};
+    // The depth sky_distance writes: where a point that far ahead lands in [0, 1] (1: no sky pass).
+    float skyDepthValue(const CameraMatrices& camera) const;
     Gpu<OutputTransformPass> present_;
     Gpu<CloudTemporal> temporal_;
     int jitterFrame_ = 0;  // counts declared frames: moves IGN and R2 (the bench repeats one frame index)
@@ -198,6 +210,22 @@ void CloudsLesson::declareParams(ParamSet& params) {
                  "Step 9: stop each ray at the surface's distance instead of comparing heights")
         .inSteps({Beyond});
     params
+        .addFloat("sky_distance", &skyDistance_, 0.0f, 1000.0f,
+                  "Steps 4 to 9: a sky drawn this far ahead that writes depth, a deliberate mistake: "
+                  "the clouds behind it vanish (0: the sky writes none, depth stays 1)")
+        .inSteps({DepthAware, March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
+    params
+        .addBool("depth_lookup_bug", &depthLookupBug_,
+                 "Step 9 at half resolution: the march reads the scene's depth at its own pixel coordinates, "
+                 "as if its target had the depth's size, a deliberate mistake: "
+                 "the clouds are cut by the wrong part of the scene")
+        .inSteps({Beyond});
+    params
+        .addBool("mipmaps", &mipmaps_,
+                 "Steps 2 to 9: read the density at the level of the pixel's footprint, "
+                 "from a texture with mipmaps (off: the chapter's one level, which shimmers far away)")
+        .inSteps({Plane, TwoScales, DepthAware, March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
+    params
         .addBool("cloud_shadow", &cloudShadows_,
                  "Step 9: the clouds' shadows on the ground, marched toward the sun through the same density")
         .inSteps({Beyond});
@@ -212,7 +240,8 @@ Status CloudsLesson::init(const Scene& scene) {
     if (!scene.clouds.empty()) {
         // Only a scene with a cloud layer loads the texture: without one, no bytes and no pass.
         const CloudLayer& layer = scene.clouds.front();
-        auto loaded = CloudDensityTexture::load(layer.densityTexture.resolved.string());
+        densityPath_ = layer.densityTexture.resolved.string();
+        auto loaded = CloudDensityTexture::load(densityPath_);
         if (!loaded) return Error{cat("clouds[0].densityTexture: ", loaded.error())};
         density_ = std::move(*loaded);
         scrollSpeed_ = glm::dvec4(layer.noise[0].scroll.x, layer.noise[0].scroll.y, layer.noise[1].scroll.x,
@@ -288,7 +317,15 @@ CloudFrameSettings CloudsLesson::settingsForStep(int step, int frameIndex) const
         }
     }
     s.features = f;
+    s.mipmaps = mipmaps_ && step != ScreenTexture;
+    s.depthAtLayerPixels = depthLookupBug_ && step == Beyond;
     return s;
+}
+
+float CloudsLesson::skyDepthValue(const CameraMatrices& camera) const {
+    if (!(skyDistance_ > 0.0f)) return 1.0f;
+    const glm::vec4 clip = camera.projection * glm::vec4(0.0f, 0.0f, -skyDistance_, 1.0f);
+    return std::clamp(0.5f * clip.z / clip.w + 0.5f, 0.0f, 1.0f);
 }
 
 void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -302,6 +339,34 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     jitterFrame_ = (jitterFrame_ + 1) % 1024;
     // The same matrices the scene pass drew with (cameraMatrices at the output's size).
     CameraMatrices camera = cameraMatrices(scene.camera, frame.size.width, frame.size.height);
+    const float skyDepth = skyDepthValue(camera);
+    if (skyDepth < 1.0f && frame.step >= DepthAware) {
+        // The mistake sky_distance shows: the sky drawn like an object, writing depth where nothing else
+        // did (depth test LESS against the clear value 1), no colour.
+        const FullscreenPass* sky = &*skyDepth_;
+        PassState state = FullscreenPass::state();
+        state.depthTest = true;
+        state.depthWrite = true;
+        state.depthFunction = DepthFunction::Less;
+        state.colorMask = ColorMask{false, false, false, false};
+        sky->addPass(graph, "sky (writes depth)",
+                     [sky, skyDepth](PassContext&) {
+                         glProgramUniform1f(sky->program(), glsl::kSkyDepthLocation, skyDepth);
+                         sky->draw({});
+                     })
+            .modify(hdr.depth, TextureUsage::DepthAttachment)
+            .setState(state)
+            .setTaps(0);
+    }
+    if (mipmaps_ && !mipmappedDensity_ && !densityPath_.empty()) {
+        auto loaded = CloudDensityTexture::load(densityPath_, true);
+        if (loaded)
+            mipmappedDensity_ = std::move(*loaded);
+        else
+            log::error("lesson 08: clouds[0].densityTexture: ", loaded.error());
+    }
+    const CloudDensityTexture& density = s.mipmaps && mipmappedDensity_ ? mipmappedDensity_ : density_;
+    s.mipmaps = s.mipmaps && mipmappedDensity_;
     s.view = camera.view;
     s.projection = camera.projection;
     s.cameraPosition = camera.position;
@@ -316,14 +381,14 @@ void CloudsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
         if (frame.step == Beyond && cloudShadows_) {
             CloudShadowSettings shadow;
             shadow.toLight = cloudShadowToLight(sunDirection_);
-            cloudShadow_->declare(graph, {hdr.color, hdr.depth}, density_, s, shadow);
+            cloudShadow_->declare(graph, {hdr.color, hdr.depth}, density, s, shadow);
         }
         if (temporal) {
             CloudTemporalOptions options{q.accumulate, q.halfResolution};
-            temporal_->declare(graph, *clouds_, {hdr.color, hdr.depth, &map}, density_, s, options,
+            temporal_->declare(graph, *clouds_, {hdr.color, hdr.depth, &map}, density, s, options,
                                settingsKey(s, frame.step), frame.size);
         } else {
-            clouds_->declare(graph, {hdr.color, hdr.depth, &map}, density_, s);
+            clouds_->declare(graph, {hdr.color, hdr.depth, &map}, density, s);
         }
     }
     shadows_->declareDepthView(graph, map);
@@ -341,7 +406,8 @@ std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) c
     };
     for (double v : {double(step), double(s.features), double(s.dither), double(s.march.steps),
                      double(s.march.bottom), double(s.march.top), double(s.march.threshold),
-                     double(s.scales.x), double(s.scales.y), double(resolution_), double(cameraLift_)})
+                     double(s.scales.x), double(s.scales.y), double(resolution_), double(cameraLift_),
+                     double(s.mipmaps), double(s.depthAtLayerPixels), double(skyDistance_)})
         mix(v);
     return h;
 }
@@ -353,8 +419,8 @@ void CloudsLesson::drawPanel(const FrameInfo& frame) {
             "so the layer shows again, mirrored, in the sky.");
     if (frame.step >= March)
         ImGui::TextWrapped(
-            "Set camera_lift so the eye sits between bottom and top: step 5 shows no cloud, "
-            "step 6 marches from the eye.");
+            "Set camera_lift so the eye sits between bottom and top: "
+            "step 5 shows no cloud, step 6 marches from the eye.");
 }
 
 void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
@@ -384,6 +450,18 @@ void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("cloudShadow", cloudShadows_ ? cat("on, sun ", sunDegrees, " degrees up") : "off",
                 "cloud shadows on the ground");
     }
+    if (mipmappedDensity_)
+        out.add("mipmappedDensityBytes", std::to_string(mipmappedDensity_.bytes()),
+                "the density texture with every level (bytes)");
+    if (frame.step >= DepthAware) {
+        const CameraMatrices camera = cameraMatrices(viewScene_.camera, frame.size.width, frame.size.height);
+        out.add("skyDepth", cat(skyDepthValue(camera)),
+                "the depth sky pixels hold (1: cleared, nothing writes it)");
+    }
+    if (frame.step == Beyond && quality().halfResolution)
+        out.add("depthTexelsPerPixel",
+                depthLookupBug_ ? "1 (the mistake: the target is half the depth's size)" : "2",
+                "scene depth texels per pixel of the half-resolution march");
     glm::vec4 o = scroll_.offset();
     out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");
     if (frame.previousFrame) out.add("cloudMs", cat(cloudGroup_.timeMs(*frame.previousFrame)), "clouds (ms)");

@@ -44,7 +44,8 @@ ParticleDrawSettings orthographic(float left, float right, float bottom, float t
     return s;
 }
 
-// A sprite file whose alpha is `alpha(x, y)` (y: the file's row, 0 first).
+// A sprite file whose alpha is `alpha(x, y)` (y: the picture's row, 0 at the bottom, as fx images count;
+// writePng stores it last).
 template <class F>
 std::filesystem::path writeSprite(const std::string& name, int size, F alpha) {
     ByteImage image = makeByteImage(size, size, 4, 255);
@@ -95,6 +96,33 @@ Box coverage(const FloatImage& image) {
     return b;
 }
 
+// One particle that stays where it is born, opaque and 2 m wide, drawn with the loaded sprite.
+EmitterSetup stillSprite(ParticleEmitter e) {
+    e.riseSpeed = 0.0f;
+    e.startColor.a = e.endColor.a = 1.0f;
+    e.startSize = e.endSize = 2.0f;
+    EmitterSetup setup = setupOf(e, false);
+    setup.textured = true;
+    return setup;
+}
+
+// The alpha's mass and its first moments about the picture's centre (in pixels, rows bottom-up): where
+// a half-opaque sprite's mass lies says which way it points.
+struct AlphaMass {
+    double x = 0, y = 0, sum = 0;
+};
+AlphaMass alphaMass(const FloatImage& image) {
+    AlphaMass m;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double a = image.texel(x, y, 3);
+            m.x += a * (x + 0.5 - 0.5 * image.width);
+            m.y += a * (y + 0.5 - 0.5 * image.height);
+            m.sum += a;
+        }
+    return m;
+}
+
 }  // namespace
 
 TEST_F(FireChapter, OneParticleRisesTwoMetresGrowsFourfoldAndFadesOverItsSecond) {
@@ -143,43 +171,49 @@ TEST_F(FireChapter, OneParticleRisesTwoMetresGrowsFourfoldAndFadesOverItsSecond)
 }
 
 TEST_F(FireChapter, Exercise06Turns120DegreesASecondThatIs2Point0944RadiansInThePicture) {
-    // A sprite opaque in the first half of the file's rows only: where its mass lies says its angle.
+    // A sprite opaque in the bottom half of the picture only: where its mass lies says its angle.
     ASSERT_TRUE(
         renderer.loadSprite(writeSprite("half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; })));
     ParticleEmitter e = chapterFire();
     e.spinDegreesPerSecond = 120.0f;
-    e.riseSpeed = 0.0f;  // stays at the centre
     e.lifetimeSeconds = 4.0f;
-    e.startColor.a = e.endColor.a = 1.0f;
-    e.startSize = e.endSize = 2.0f;
-    EmitterSetup setup = setupOf(e, false);
-    setup.textured = true;
-    ParticleSystem system({setup});
+    const EmitterSetup still = stillSprite(e);  // stays at the centre
+    ParticleSystem system({still});
     EXPECT_NEAR(system.emitters()[0].motion.x, 2.0944f, 1e-4f) << "radians a second";
 
     const ParticleDrawSettings view = orthographic(-2, 2, -2, 2);
     auto angleAt = [&](float age) {
-        FloatImage image = draw(system, {at(e, {0, 0, -10}, age)}, view, 64, 64);
-        double sx = 0, sy = 0, sum = 0;
-        for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) {
-                double a = image.texel(x, y, 3);
-                sx += a * (x + 0.5 - 32.0);
-                sy += a * (y + 0.5 - 32.0);
-                sum += a;
-            }
-        EXPECT_GT(sum, 100.0) << "age " << age;
-        return std::atan2(sy, sx);
+        const AlphaMass m = alphaMass(draw(system, {at(still.emitter, {0, 0, -10}, age)}, view, 64, 64));
+        EXPECT_GT(m.sum, 100.0) << "age " << age;
+        return std::atan2(m.y, m.x);
     };
     const double start = angleAt(0.0f);
-    // The file's first row is the sprite's v = 0, the bottom of the quad (the texture's origin): the
-    // chapter's sprite is stored so (docs/assets.md), and a loader that flips it turns the flame over.
+    // The picture's bottom row is the sprite's v = 0, the bottom of the quad (the texture's origin): the
+    // chapter's sprite is stored the right way up (docs/assets.md), and a loader that uploads the file's
+    // top row first turns the flame over (ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown).
     EXPECT_NEAR(start, -std::numbers::pi / 2, 0.02);
     for (float age : {0.25f, 0.5f, 0.75f, 1.0f, 1.5f}) {
         double turned = std::remainder(angleAt(age) - start, 2.0 * std::numbers::pi);
         double expected = std::remainder(2.0943951 * double(age), 2.0 * std::numbers::pi);
         EXPECT_NEAR(turned, expected, 0.03) << "age " << age;
     }
+}
+
+TEST_F(FireChapter, ASpriteUploadedTopRowFirstTurnsTheParticleUpsideDown) {
+    // Opaque in the picture's bottom half (the image's rows run bottom-up): upright, the mass lies below
+    // the particle's centre; uploaded in the file's order (lesson 07's flip_sprite), above it.
+    const auto sprite = writeSprite("bottom-half-sprite", 32, [](int, int y) { return y < 16 ? 255 : 0; });
+    const EmitterSetup still = stillSprite(chapterFire());
+    ParticleSystem system({still});
+    auto massRow = [&](ParticleRenderer::SpriteRows rows) {
+        EXPECT_TRUE(renderer.loadSprite(sprite, rows));
+        const AlphaMass m = alphaMass(
+            draw(system, {at(still.emitter, {0, 0, -10}, 0.0f)}, orthographic(-2, 2, -2, 2), 64, 64));
+        EXPECT_GT(m.sum, 100.0);
+        return m.y / std::max(m.sum, 1.0);  // pixels above the centre
+    };
+    EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::bottomFirst), -8.0, 1.0) << "upright: a quarter down";
+    EXPECT_NEAR(massRow(ParticleRenderer::SpriteRows::topFirst), 8.0, 1.0) << "top row first: upside down";
 }
 
 TEST_F(FireChapter, SpawnOrderBlendsTheFarParticleOverTheNearOneAndBackToFrontDoesNot) {

@@ -79,21 +79,24 @@ ShadowLookup cloudShadowLookup(const ShadowLookup& sceneLookup) {
     return l;
 }
 
-Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path) {
+Result<CloudDensityTexture> CloudDensityTexture::load(const std::string& path, bool mipmaps) {
     auto image = gl::readTextureImage(path);
     if (!image) return Error{image.error()};
-    return fromImage(*image);
+    return fromImage(*image, mipmaps);
 }
 
-CloudDensityTexture CloudDensityTexture::fromImage(const ByteImage& rgba) {
+CloudDensityTexture CloudDensityTexture::fromImage(const ByteImage& rgba, bool mipmaps) {
     CloudDensityTexture t;
     // sRGB storage: sampling decodes it, as the chapter's loader does (its part 4: about 30 % of the
     // sky covered at threshold 0.5 this way, 93 % if the stored values were read raw).
-    t.texture_ =
-        gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, rgba.width, rgba.height, 1, "clouds.density");
+    const int levels = mipmaps ? fullMipChainLength(rgba.width, rgba.height) : 1;
+    t.texture_ = gl::Texture::create2D(TextureFormat::SRGB8_ALPHA8, rgba.width, rgba.height, levels,
+                                       mipmaps ? "clouds.density (mipmapped)" : "clouds.density");
     glTextureSubImage2D(t.texture_.name(), 0, 0, 0, rgba.width, rgba.height, GL_RGBA, GL_UNSIGNED_BYTE,
                         rgba.texels.data());
-    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    if (mipmaps) glGenerateTextureMipmap(t.texture_.name());
+    glTextureParameteri(t.texture_.name(), GL_TEXTURE_MIN_FILTER,
+                        mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(t.texture_.name(), GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -114,7 +117,8 @@ const FullscreenPass& CloudPass::programFor(const CloudFrameSettings& s) const {
     return programs_.get({{"CLOUD_STAGE", stage},
                           {"CLOUD_FEATURES", features},
                           {"CLOUD_DITHER", dither},
-                          {"CLOUD_PREMULTIPLY", s.premultiplied ? 1 : 0}});
+                          {"CLOUD_PREMULTIPLY", s.premultiplied ? 1 : 0},
+                          {"CLOUD_MIPMAPS", s.mipmaps && s.stage != CloudStage::screenTexture ? 1 : 0}});
 }
 
 PassState CloudPass::state() {
@@ -216,7 +220,7 @@ TextureHandle CloudPass::declareLayer(FrameGraph& graph, const CloudInputs& inpu
                                       const std::string& textureName) const {
     divisor = std::max(divisor, 1);
     s.premultiplied = true;
-    s.depthStride = divisor;
+    s.depthStride = s.depthAtLayerPixels ? 1 : divisor;
     MarchInputs m = marchInputs(inputs, s);
     const FullscreenPass& program = programFor(s);
     Pass& pass = program.addPass(graph, "clouds march", marchBody(&program, s, m, &density));

@@ -60,6 +60,12 @@ struct CloudFrameSettings {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
     glm::vec3 cameraPosition{0.0f};
+    // Density lookups at the level of the pixel's footprint (a texture with mipmaps); false: level 0, the
+    // chapter's texture (one level), which shimmers where a pixel covers many texels.
+    bool mipmaps = false;
+    // A deliberate mistake (lesson 08's depth_lookup_bug): a layer of its own smaller than the depth reads
+    // the depth at its own pixel coordinates, as if the two had the same size.
+    bool depthAtLayerPixels = false;
     // Set by CloudPass::declareLayer: premultiplied output, and scene depth texels per target pixel.
     bool premultiplied = false;
     int depthStride = 1;
@@ -85,13 +91,14 @@ inline float cloudShadowOffset(const ShadowLookup& lookup) {
 }
 
 // The density texture, as the chapter stores it: SRGB8_ALPHA8 (so .r is sRGB-decoded when sampled),
-// one level, linear filtering, GL_REPEAT (the UVs are unbounded).
+// one level, linear filtering, GL_REPEAT (the UVs are unbounded). With `mipmaps`, every level, filtered
+// between them (for CloudFrameSettings::mipmaps).
 class CloudDensityTexture {
 public:
     CloudDensityTexture() = default;
-    static Result<CloudDensityTexture> load(const std::string& path);
+    static Result<CloudDensityTexture> load(const std::string& path, bool mipmaps = false);
     // From RGBA texels (rows bottom-up), e.g. a constant density for tests.
-    static CloudDensityTexture fromImage(const ByteImage& rgba);
+    static CloudDensityTexture fromImage(const ByteImage& rgba, bool mipmaps = false);
     GLuint name() const { return texture_.name(); }
     std::uint64_t bytes() const;
     explicit operator bool() const { return static_cast<bool>(texture_); }

@@ -62,9 +62,17 @@ int ParticleRenderer::programsBuilt() const {
     return built;
 }
 
-Status ParticleRenderer::loadSprite(const std::filesystem::path& path) {
+Status ParticleRenderer::loadSprite(const std::filesystem::path& path, SpriteRows rows) {
     auto image = gl::readTextureImage(path);
     if (!image) return Error{cat("particle sprite ", path.string(), ": ", image.error())};
+    // readPng gives the rows bottom-up, GL's order. A decoder that gives the file's order (top row
+    // first), uploaded as it comes, puts the picture's top at v = 0: lesson 07's flip_sprite shows it.
+    if (rows == SpriteRows::topFirst) {
+        const std::size_t stride = std::size_t(image->width) * std::size_t(image->channels);
+        auto row = [&](int y) { return image->texels.begin() + std::ptrdiff_t(std::size_t(y) * stride); };
+        for (int y = 0; y < image->height / 2; ++y)
+            std::swap_ranges(row(y), row(y + 1), row(image->height - 1 - y));
+    }
     // Only alpha is used, so a linear format; mipmaps for the small far particles.
     gl::DebugGroup group("upload particles.sprite");
     sprite_ = gl::Texture::create2D(TextureFormat::RGBA8, image->width, image->height,

@@ -49,8 +49,13 @@ public:
     // program does not build draws nothing (the runner lists the error).
     ParticleRenderer();
 
+    // Which of the picture's rows the texture's first row (v = 0, the quad's bottom) holds.
+    enum class SpriteRows {
+        bottomFirst,  // the picture's bottom row, as GL counts rows (readPng's order): upright
+        topFirst,     // the file's first row, as raw GL code that uploads a decoder's rows: upside down
+    };
     // The sprite from a PNG file: an error that names the path when it cannot be read.
-    Status loadSprite(const std::filesystem::path& path);
+    Status loadSprite(const std::filesystem::path& path, SpriteRows rows = SpriteRows::bottomFirst);
     bool hasSprite() const { return static_cast<bool>(sprite_); }
 
     // Uploads the emitter table (every path reads it at binding 1).

@@ -43,6 +43,8 @@ layout(location = kCloudsDepthStrideLocation) uniform int depthStride;
 //   CLOUD_PREMULTIPLY  1: write premultiplied colour (rgb x alpha) into a cloud layer of its own, for
 //                      accumulation and upsampling; 0: straight alpha, blended over the scene directly
 //                      (the chapter).
+//   CLOUD_MIPMAPS      1: density lookups at the level of the pixel's footprint (a texture with mipmaps);
+//                      0: level 0, the chapter's one-level texture, which shimmers far away.
 
 // Feature bits (CloudFeature in cloud_pass.hpp).
 const int kRejectBehind = 1;       // plane: no hit behind the eye (no mirrored layer)
@@ -65,10 +67,27 @@ const float kParallel = 1e-7;
 
 bool has(int bit) { return (CLOUD_FEATURES & bit) != 0; }
 
-float sampleDensity(vec2 xz) {
-    // textureLod: the lookups sit in per-pixel control flow, where implicit derivatives are undefined.
-    float a = textureLod(density, xz * scales.x + offsets.xy, 0.0).r;
-    if (has(kTwoScales)) a += textureLod(density, xz * scales.y + offsets.zw, 0.0).r;
+// The width (m) one pixel covers on a horizontal layer at distance t along a ray whose vertical part is
+// vy: the pixel's angle (from the inverse projection: tan(fovY / 2) over half the target's height) times
+// t, stretched along the ray by 1 / |vy| (held at the march's slope cap).
+float pixelFootprint(float t, float vy) {
+    return t * 2.0 * inverseProjection[1][1] / targetSize.y / max(abs(vy), kMinSlope);
+}
+
+// The level whose texel is the footprint at `scale` repeats per metre (0 without mipmaps).
+float densityLevel(float footprint, float scale) {
+#if CLOUD_MIPMAPS
+    return log2(max(footprint * abs(scale) * float(textureSize(density, 0).x), 1e-6));
+#else
+    return 0.0;
+#endif
+}
+
+float sampleDensity(vec2 xz, float footprint) {
+    // textureLod: the lookups sit in per-pixel control flow, where implicit derivatives are undefined, so
+    // the level comes from the footprint computed here.
+    float a = textureLod(density, xz * scales.x + offsets.xy, densityLevel(footprint, scales.x)).r;
+    if (has(kTwoScales)) a += textureLod(density, xz * scales.y + offsets.zw, densityLevel(footprint, scales.y)).r;
     return a;
 }
 
@@ -141,7 +160,7 @@ void march() {
             if (!inFront) return;
         }
         vec3 hit = v * t;
-        color = vec4(cloudColour, clamp(sampleDensity(hit.xz), 0.0, 1.0));
+        color = vec4(cloudColour, clamp(sampleDensity(hit.xz, pixelFootprint(t, vy)), 0.0, 1.0));
         return;
     }
 
@@ -204,7 +223,7 @@ void march() {
         if (has(kEyeInside)) inRange = inRange && y >= bottom - 1e-3 * thickness && y <= top + 1e-3 * thickness;
         if (byDistance) inRange = inRange && tHere <= tmax;
         if (inRange) {
-            float a = sampleDensity(p.xz);
+            float a = sampleDensity(p.xz, pixelFootprint(tHere, vy));
             if (has(kHeightShaping)) a *= clamp((top - y) / thickness, 0.0, 1.0) * 0.5 + 0.5;
             if (has(kThreshold)) a = clamp(a - thresholdPair.x, 0.0, 1.0) * thresholdPair.y;
             float T = max(1.0 - dens, 0.0);
