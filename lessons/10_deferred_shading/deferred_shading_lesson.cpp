@@ -67,6 +67,7 @@ private:
     int lightCount_ = 0;  // 0: the step's own (lightCountFor)
     Choice<Culling> culling_{Culling::tiled};
     Choice<ReflectionSize> reflectionSize_{ReflectionSize::half};
+    float reflectionBlur_ = 0.0f;  // step 7: the homework's optional blur (sigma; 0 is off)
     float divider_ = 0.5f;
     // The mistakes the chapter warns about, shown on purpose (off by default).
     Choice<Lighting> lightingModel_{Lighting::deferred};             // step 4
@@ -227,6 +228,12 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
     reflection.knob = Knob{{0, 1, 2}, 0, "reflection size"};
     reflection.inSteps({Reflection});
     params
+        .addFloat("reflection_blur", &reflectionBlur_, 0.0f, 0.05f,
+                  cat("Step 7: the homework's optional blur: 16 taps offset by this sigma (a fraction "
+                      "of the reflection's size) times standard-normal samples; the chapter's is ",
+                      kChapterReflectionBlurSigma, ", 0 is sharp"))
+        .inSteps({Reflection});
+    params
         .addChoice("lighting", &lightingModel_, {"deferred", "per-vertex"},
                    "Step 4: per-vertex shows the mistake deferred shading removes: "
                    "the light computed at the vertices and interpolated, "
@@ -323,7 +330,7 @@ void DeferredShadingLesson::declareDeferred(FrameGraph& graph, const FrameInfo& 
         ReflectionMistakes mistakes{mirrorObjects_, std::nullopt};
         if (*reflectionClear_ == ReflectionClear::chapter) mistakes.clearColor = kChapterClearColor;
         reflection_->declare(graph, frame.world, *lights_, g, lit, reflectionFraction(*reflectionSize_),
-                             mistakes);
+                             mistakes, ReflectionBlur{reflectionBlur_});
         return;
     }
     if (step == Layout && options.referencePosition)
@@ -420,6 +427,10 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("reflectionSize",
                 cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),
                 "reflection target");
+        out.add(
+            "reflectionBlur",
+            reflectionBlur_ > 0.0f ? cat("16 taps, sigma ", reflectionBlur_) : std::string("off (one tap)"),
+            "reflection blur");
     }
     if (step == ManyLights) {
         Size2D tiles = tileCount(frame.size);

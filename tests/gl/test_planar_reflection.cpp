@@ -6,6 +6,8 @@
 // unmirrored sun with its own normals (mirroring the camera, not the objects, leaves both as they are).
 // Hard case 14: the reflection lands where the mirror shows it at every reflection_size, also when the
 // output's size is not a multiple of the fraction (the reflection keeps the output's aspect).
+#include <array>
+#include <cmath>
 #include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -63,7 +65,8 @@ protected:
         FloatImage reflected;  // reflection.color
         FloatImage shown;      // deferred.color after the mirror's surface
     };
-    Frame render(Size2D size, int fraction, const ReflectionMistakes& mistakes = {}) {
+    Frame render(Size2D size, int fraction, const ReflectionMistakes& mistakes = {},
+                 ReflectionBlur blur = {}) {
         GlFrameRunner runner(size);
         Frame f;
         for (bool wantReflection : {true, false}) {
@@ -72,7 +75,8 @@ protected:
                 GBufferTargets g = gbuffer.declare(graph, world, {GBufferLayout::compact, false, {}});
                 TextureHandle lit =
                     lighting.declare(graph, scene, g, lights, DeclaredShadowMap{}, std::nullopt);
-                TextureHandle color = reflection->declare(graph, world, lights, g, lit, fraction, mistakes);
+                TextureHandle color =
+                    reflection->declare(graph, world, lights, g, lit, fraction, mistakes, blur);
                 return wantReflection ? color : lit;
             });
             (wantReflection ? f.reflected : f.shown) = std::move(image);
@@ -224,6 +228,68 @@ TEST_F(PlanarReflectionOnGl, TheClearColourTintsTheMirrorWhereNothingIsReflected
     // Where the box is reflected the clear colour is covered.
     const glm::vec2 side = projected({-0.99f, 1.0f, -1.0f}, size, true);
     expectNear(at(tinted.shown, side), at(sky.shown, side), "the box's reflection");
+}
+
+// The homework's optional blur, as the chapter's host sets it up: 16 standard-normal samples from
+// Xorshift128 through Box-Muller. The generator's first two numbers from Marsaglia's seeds are
+// 3701687786 and 458299110 (his published sequence), so the first sample is known independently.
+TEST(ReflectionBlurOffsets, AreSixteenStandardNormalSamplesFromXorshift128ThroughBoxMuller) {
+    std::array<glm::vec2, 16> samples = reflectionBlurOffsets();
+    EXPECT_NEAR(samples[0].x, 0.42723401f, 1e-5f);
+    EXPECT_NEAR(samples[0].y, 0.33879379f, 1e-5f);
+    EXPECT_EQ(samples, reflectionBlurOffsets()) << "the same samples every run";
+    double mean = 0, square = 0;
+    for (glm::vec2 s : samples) {
+        ASSERT_TRUE(std::isfinite(s.x) && std::isfinite(s.y));
+        mean += double(s.x + s.y);
+        square += double(s.x * s.x + s.y * s.y);
+    }
+    // 32 standard-normal numbers: a mean within 3/sqrt(32) of 0, a variance near 1.
+    EXPECT_LT(std::abs(mean / 32.0), 0.54);
+    EXPECT_GT(square / 32.0, 0.4);
+    EXPECT_LT(square / 32.0, 2.0);
+}
+
+// With the blur, each mirror pixel shows the average of the 16 bilinear taps of the reflection around
+// its own place, at sigma times each sample; with sigma 0 it shows the one sharp tap.
+TEST_F(PlanarReflectionOnGl, TheHomeworksBlurAveragesSixteenTapsAroundThePixelsPlace) {
+    load();
+    const Size2D size{96, 64};
+    const float sigma = 0.02f;
+    Frame sharp = render(size, 1);
+    Frame blurred = render(size, 1, {}, ReflectionBlur{sigma});
+    ASSERT_FALSE(sharp.shown.empty() || blurred.shown.empty());
+    const std::array<glm::vec2, 16> offsets = reflectionBlurOffsets();
+    // The reflection as the sampler reads it: bilinear, texel centres at half-texels.
+    auto bilinear = [&](glm::vec2 uv) {
+        glm::vec2 p = uv * glm::vec2(size.width, size.height) - 0.5f;
+        glm::ivec2 i(glm::floor(p));
+        glm::vec2 f = p - glm::vec2(i);
+        auto texel = [&](int x, int y) { return at(sharp.reflected, {float(x), float(y)}); };
+        return glm::mix(glm::mix(texel(i.x, i.y), texel(i.x + 1, i.y), f.x),
+                        glm::mix(texel(i.x, i.y + 1), texel(i.x + 1, i.y + 1), f.x), f.y);
+    };
+    int checked = 0;
+    float largestChange = 0.0f;
+    for (int y = 8; y < size.height - 8; ++y)
+        for (int x = 8; x < size.width - 8; ++x) {
+            glm::vec3 shown = at(sharp.shown, {float(x), float(y)});
+            // A mirror pixel with nothing in front: the black mirror at strength 1 shows its reflection.
+            if (glm::length(shown - at(sharp.reflected, {float(x), float(y)})) > 1e-3f) continue;
+            glm::vec2 uv((float(x) + 0.5f) / float(size.width), (float(y) + 0.5f) / float(size.height));
+            glm::vec3 sum(0.0f);
+            for (glm::vec2 o : offsets) sum += bilinear(uv + sigma * o);
+            glm::vec3 got = at(blurred.shown, {float(x), float(y)});
+            expectNear(got, sum / 16.0f, "a blurred mirror pixel");
+            largestChange = std::max(largestChange, glm::length(got - shown));
+            ++checked;
+        }
+    EXPECT_GT(checked, 500) << "mirror pixels compared";
+    EXPECT_GT(largestChange, 0.05f) << "the blur changed nothing";
+    Frame none = render(size, 1, {}, ReflectionBlur{0.0f});
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x)
+            ASSERT_EQ(at(none.shown, {float(x), float(y)}), at(sharp.shown, {float(x), float(y)}));
 }
 
 // Hard case 14: at every reflection_size the red box's reflection lands where it does at full size

@@ -1,5 +1,9 @@
 #include "effects/deferred/planar_reflection.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
@@ -44,6 +48,27 @@ glm::mat4 reflectionMatrix(glm::vec4 plane) {
     return r;
 }
 
+std::array<glm::vec2, 16> reflectionBlurOffsets() {
+    // Marsaglia's xorshift128 from its published seeds, then Box-Muller: two uniform numbers in (0, 1]
+    // give a radius sqrt(-2 ln u1) and an angle 2 pi u2, one standard-normal 2-D sample.
+    std::uint32_t x = 123456789u, y = 362436069u, z = 521288629u, w = 88675123u;
+    auto next = [&] {
+        std::uint32_t t = x ^ (x << 11);
+        x = y;
+        y = z;
+        z = w;
+        w = w ^ (w >> 19) ^ (t ^ (t >> 8));
+        return (double(w) + 1.0) / 4294967296.0;  // (0, 1]: the logarithm stays finite
+    };
+    std::array<glm::vec2, 16> samples{};
+    for (glm::vec2& sample : samples) {
+        double radius = std::sqrt(-2.0 * std::log(next()));
+        double angle = 2.0 * 3.14159265358979323846 * next();
+        sample = glm::vec2(float(radius * std::cos(angle)), float(radius * std::sin(angle)));
+    }
+    return samples;
+}
+
 PlanarReflection::PlanarReflection(const Scene& scene) {
     if (auto mirror = findMirror(scene, 0.0)) {
         const Primitive& plane = *scene.objects[mirror->object].primitive;
@@ -53,7 +78,7 @@ PlanarReflection::PlanarReflection(const Scene& scene) {
 
 TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
                                         const GBufferTargets& g, TextureHandle lit, int fraction,
-                                        const ReflectionMistakes& mistakes) const {
+                                        const ReflectionMistakes& mistakes, ReflectionBlur blur) const {
     std::optional<MirrorPlane> mirror = findMirror(world.scene(), world.seconds());
     const gl::ReloadableProgram* reflect = &reflect_;
     const PointLightBuffer* buffer = &lights;
@@ -108,7 +133,8 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
 
     const gl::ReloadableProgram* surface = &surface_;
     const GpuMesh* mesh = &mirrorMesh_;
-    Pass& over = graph.addPass("mirror surface", [surface, mesh, world, m, color, g](PassContext& ctx) {
+    static const std::array<glm::vec2, 16> kBlurOffsets = reflectionBlurOffsets();
+    Pass& over = graph.addPass("mirror surface", [surface, mesh, world, m, color, g, blur](PassContext& ctx) {
         const Scene& scene = world.scene();
         Size2D size = ctx.targetSize();
         CameraMatrices camera = offsetCameraMatrices(scene.camera, g.worldOffset, size);
@@ -118,6 +144,9 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
         glProgramUniformMatrix4fv(program, glsl::kModelLocation, 1, GL_FALSE, glm::value_ptr(model));
         glProgramUniform1f(program, glsl::kMirrorStrengthLocation, m.strength);
         glProgramUniform2f(program, glsl::kMirrorOutputSizeLocation, float(size.width), float(size.height));
+        glProgramUniform1f(program, glsl::kMirrorBlurSigmaLocation, std::max(blur.sigma, 0.0f));
+        glProgramUniform2fv(program, glsl::kMirrorBlurOffsetsLocation, GLsizei(kBlurOffsets.size()),
+                            glm::value_ptr(kBlurOffsets[0]));
         glBindTextureUnit(glsl::kMirrorReflectionBinding, ctx.native(color));
         glBindTextureUnit(glsl::kMirrorSceneDepthBinding, ctx.native(g.depth));
         glUseProgram(program);
@@ -135,7 +164,7 @@ TextureHandle PlanarReflection::declare(FrameGraph& graph, const World& world, c
                    .faceCulling = true,
                    .cullFace = CullFace::Back,
                    .colorMask = ColorMask{}});
-    over.setTaps(2);  // the G-buffer's depth, then the reflection
+    over.setTaps(blur.sigma > 0.0f ? 17 : 2);  // the G-buffer's depth, then the reflection (16 when blurred)
     needs(over, SceneFeature::mirror);
     if (!mirror) over.notCalledFor("scene has no mirror (no object with \"mirror\")");
     runsWith(over, surface_);

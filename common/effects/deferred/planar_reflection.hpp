@@ -9,9 +9,11 @@
 // at the mirror's strength, fetched at the pixel's own place (both passes use the same projection).
 //
 // Both passes need SceneFeature::mirror: a scene without a mirror has no reflection pass.
+#include <array>
 #include <optional>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "effects/deferred/gbuffer_pass.hpp"
@@ -44,6 +46,18 @@ struct ReflectionMistakes {
     std::optional<glm::vec3> clearColor;
 };
 
+// The homework's optional blur of the reflection: 16 taps around the pixel's place, each offset sigma
+// times a standard-normal 2-D sample (reflectionBlurOffsets). sigma is in texture units (a fraction of
+// the reflection's width and height); 0 takes one sharp tap.
+struct ReflectionBlur {
+    float sigma = 0.0f;
+};
+inline constexpr float kChapterReflectionBlurSigma = 0.005f;
+
+// The 16 standard-normal samples, as the chapter's host makes them: Xorshift128 uniform numbers put
+// through the Box-Muller transform, the same every run.
+std::array<glm::vec2, 16> reflectionBlurOffsets();
+
 class PlanarReflection {
 public:
     // Builds the programs, and the mirror's mesh when `scene` has a mirror.
@@ -53,7 +67,7 @@ public:
     // "mirror surface" over `lit` (modified in place). Returns reflection.color.
     TextureHandle declare(FrameGraph& graph, const World& world, const PointLightBuffer& lights,
                           const GBufferTargets& g, TextureHandle lit, int fraction,
-                          const ReflectionMistakes& mistakes = {}) const;
+                          const ReflectionMistakes& mistakes = {}, ReflectionBlur blur = {}) const;
 
 private:
     gl::ReloadableProgram reflect_{{"effects/deferred/mirrored_scene.vert",

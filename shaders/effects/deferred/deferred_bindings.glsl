@@ -10,6 +10,8 @@ const int kClipPlaneLocation = 26;              // vec4: mirrored_scene.vert
 const int kObjectMirrorLocation = 32;           // mat4 (32 to 35): mirrored_scene.vert
 const int kMirrorStrengthLocation = 27;         // float: mirror_surface.frag
 const int kMirrorOutputSizeLocation = 28;       // vec2: mirror_surface.frag
+const int kMirrorBlurSigmaLocation = 44;        // float: mirror_surface.frag (0: one sharp tap)
+const int kMirrorBlurOffsetsLocation = 48;      // vec2[16] (48 to 63): mirror_surface.frag
 const int kMirrorReflectionBinding = 0;         // sampler2D: mirror_surface.frag
 const int kMirrorSceneDepthBinding = 1;         // sampler2D: mirror_surface.frag
 // tiled_culling.comp (a program of its own)
