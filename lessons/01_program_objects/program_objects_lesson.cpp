@@ -13,7 +13,7 @@
 #include "app/lesson.hpp"
 #include "app/runner.hpp"
 #include "base/log.hpp"
-#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/copy_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/gpu_mesh.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -69,7 +69,7 @@ private:
     gl::ReloadableProgram brokenAttempt_;
     int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
     gl::ReloadableProgram skinGrouped_, skinParenthesised_;
-    Gpu<FullscreenPass> present_{"common/copy.frag", "copy"};
+    Gpu<CopyPass> present_{"copy"};
 
     // Step 3's measurements (CPU side, per frame).
     int lookupsLastFrame_ = 0;
@@ -299,13 +299,7 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         graph.inspect("skinning.parenthesised.color");
     }
     TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
-    const FullscreenPass* present = &*present_;
-    present_
-        ->addPass(graph, "present",
-                  [present, shown](PassContext& ctx) { present->draw({ctx.native(shown)}); })
-        .read(shown)
-        .writeColor(graph.output())
-        .setTaps(1);
+    present_->declare(graph, "present", shown);
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {

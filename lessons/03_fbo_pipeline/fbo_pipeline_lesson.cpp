@@ -11,7 +11,7 @@
 #include "app/runner.hpp"
 #include "base/log.hpp"
 #include "chapter_order.hpp"
-#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/copy_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/post/ui_queue_pass.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -44,7 +44,7 @@ private:
 
     Gpu<ShadowMap> shadows_;
     Gpu<ShadowLitPass> litScene_;  // the scene lit by the sun, with its shadow
-    Gpu<FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};
+    Gpu<CopyPass> copyToWindow_{"to the window"};
     Gpu<OutputTransformPass> outputTransform_;
     Gpu<UiQueuePass> uiQueue_;
 
@@ -163,14 +163,7 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
         HdrSceneTargets main = litScene_->declare(graph, frame.world, shadow, sceneOptions);
-        const FullscreenPass* copy = &*copyToWindow_;
-        TextureHandle color = main.color;
-        copyToWindow_
-            ->addPass(graph, "to the window",
-                      [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
-            .read(color)
-            .writeColor(graph.output())
-            .setTaps(1);
+        copyToWindow_->declare(graph, "to the window", main.color);
     } else {
         HdrSceneTargets linear = litScene_->declare(graph, frame.world, shadow, sceneOptions);
         std::optional<SplitView> split;
