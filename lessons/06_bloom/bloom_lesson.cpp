@@ -70,7 +70,7 @@ public:
     void setBenchReference(bool on) override { benchReference_ = on; }
     void facts(Facts& out, const FrameInfo& frame) const override;
 
-    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond, WholeFrameStep };
+    enum Step { EightBit, HalfFloat, ShaderEffectsChain, BloomChapterChain, Beyond, WholeFrameStep };
 
     // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
     BloomChainSettings chainFor(int step) const;
@@ -158,7 +158,7 @@ std::vector<std::string> BloomLesson::steps() const {
 
 void BloomLesson::declareParams(ParamSet& params) {
     // The steps with a bloom chain (steps 1 and 2 compare the scene's formats before there is one).
-    const std::vector<int> chainSteps = {Chapter000, Chapter001, Beyond, WholeFrameStep};
+    const std::vector<int> chainSteps = {ShaderEffectsChain, BloomChapterChain, Beyond, WholeFrameStep};
     params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5")
         .inSteps(chainSteps);
     params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
@@ -166,11 +166,11 @@ void BloomLesson::declareParams(ParamSet& params) {
         .addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
                     "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
                     "part, for any level count")
-        .inSteps({Chapter000, Beyond, WholeFrameStep});
+        .inSteps({ShaderEffectsChain, Beyond, WholeFrameStep});
     params
         .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                   "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)")
-        .inSteps({Chapter001});
+        .inSteps({BloomChapterChain});
     Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
                                       "Steps 3 to 5 (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
@@ -179,11 +179,11 @@ void BloomLesson::declareParams(ParamSet& params) {
         .addFloat(
             "down_offset", &downOffset_, 0.0f, 2.0f,
             "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)")
-        .inSteps({Chapter001, Beyond});
+        .inSteps({BloomChapterChain, Beyond});
     params
         .addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
                   "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)")
-        .inSteps({Chapter001, Beyond});
+        .inSteps({BloomChapterChain, Beyond});
     Param& format = params.addChoice(
         "format", &format_, "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
     // The other sweeps hold the format at the one step 5 uses (RGBA16F): the error of every row is
@@ -220,12 +220,13 @@ void BloomLesson::declareParams(ParamSet& params) {
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
     TextureFormat format = *format_;
-    if (step == Chapter000 || step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
-        BloomChainSettings s = chapter000Bloom(threshold_, intensity_, levels_);
+    if (step == ShaderEffectsChain ||
+        step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
+        BloomChainSettings s = shaderEffectsChain(threshold_, intensity_, levels_);
         s.format = format;
         return s;
     }
-    BloomChainSettings s = chapter001Bloom(threshold_, levels_);
+    BloomChainSettings s = bloomChapterChain(threshold_, levels_);
     s.downOffset = downOffset_;
     s.upOffset = upOffset_;
     s.format = format;
@@ -238,13 +239,13 @@ BloomChainSettings BloomLesson::chainFor(int step) const {
 }
 
 float BloomLesson::compositeScale(int step, int levels) const {
-    if (step == Chapter000 || step == WholeFrameStep) return chapter000CompositeScale(levels);
+    if (step == ShaderEffectsChain || step == WholeFrameStep) return averagedCompositeScale(levels);
     if (step == Beyond) return normalisedCompositeScale(intensity_, levels);
     return bloomScale_;
 }
 
 float BloomLesson::uniformGain(int step, Size2D size) const {
-    if (step < Chapter000) return 0.0f;
+    if (step < ShaderEffectsChain) return 0.0f;
     BloomChainSettings s = chainFor(step);
     int n = int(bloomLevels(size, firstLevelDivisor(s.filters), s.levels).size());
     if (n == 0) return 0.0f;
@@ -273,12 +274,12 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
     // Steps 1 and 2 come before bloom: step 4's chain is declared switched off, so the pass table
     // shows what is still to come.
-    const int chainStep = step < Chapter000 ? Chapter001 : step;
+    const int chainStep = step < ShaderEffectsChain ? BloomChapterChain : step;
     BloomChainSettings settings = chainFor(chainStep);
     // Every bloom pass is in bloomGroup_: without bloom in the scene the graph marks them all not
     // called for, with the scene's reason, and the picture is the scene alone.
     const bool calledFor = !lacks(graph, SceneFeature::bloom);
-    const bool runs = calledFor && step >= Chapter000;
+    const bool runs = calledFor && step >= ShaderEffectsChain;
     const std::string off = cat("disabled in step ", step + 1, ": no bloom yet");
     bool presented = false;  // the fused composite wrote the output
     {
@@ -343,7 +344,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
         drawWholeFramePanel(frame);
         return;
     }
-    if (step < Chapter000) {
+    if (step < ShaderEffectsChain) {
         ImGui::TextWrapped(
             "Inspect scene.color and look at the range: %s",
             step == EightBit
@@ -362,7 +363,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
 void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     if (step == WholeFrameStep) wholeFrameFacts(out, frame);
-    if (step < Chapter000) {
+    if (step < ShaderEffectsChain) {
         out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
         out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3),
                 "the scene's brightest emitters");

@@ -16,7 +16,7 @@
 // and an output too small for even the first level declares nothing.
 //
 //   BloomChain chain;
-//   BloomChain::Declared d = chain.declare(graph, hdr.color, chapter001Bloom());
+//   BloomChain::Declared d = chain.declare(graph, hdr.color, bloomChapterChain());
 //   composite.declare(graph, hdr.color, d, ...);
 #include <string>
 #include <vector>
