@@ -127,7 +127,7 @@ const std::vector<Declared>& declared() {
         {number("postEffects.bloom.intensity", 0, 100, b.intensity, 0, 4, {},
                 "scale of the light added back"),
          from(bloom, [](const BloomSettings& s) { return text(s.intensity); })},
-        // As many levels as the chain makes (render/bloom_levels.hpp: kBloomMaxLevels, which
+        // As many levels as the chain makes (effects/bloom/bloom_levels.hpp: kBloomMaxLevels, which
         // effects/bloom/bloom_chain.cpp checks against this table).
         {integer("postEffects.bloom.levels", 1, 8, b.levels, 8, "levels in the blur chain"),
          from(bloom, [](const BloomSettings& s) { return text(s.levels); })},

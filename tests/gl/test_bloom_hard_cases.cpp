@@ -3,8 +3,8 @@
 // added; negative colours; window sizes where levels would be smaller than a texel.
 #include <cmath>
 
+#include "effects/bloom/bloom_levels.hpp"
 #include "gl_test.hpp"
-#include "render/bloom_levels.hpp"
 #include "test_bloom_harness.hpp"
 
 using namespace fx;

@@ -32,7 +32,7 @@ inline constexpr float kBloomMaxBright = 1024.0f;
 
 struct BloomChainSettings {
     BloomFilters filters = BloomFilters::bloomChapter;
-    int levels = 6;             // requested; a small output gets fewer (render/bloom_levels.hpp)
+    int levels = 6;             // requested; a small output gets fewer (effects/bloom/bloom_levels.hpp)
     float threshold = 1.0f;     // brightness (the largest channel) where blooming starts
     float knee = 0.0f;          // soft knee, as a fraction of the threshold; 0 is the chapters' hard cut
     float extractScale = 1.0f;  // multiplies the bright pass (Shader effects' intensity)
