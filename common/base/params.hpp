@@ -110,12 +110,13 @@ struct Param {
 template <class E>
 class Choice {
 public:
+    constexpr Choice() = default;  // the first enumerator, until a setting's default replaces it
     constexpr explicit Choice(E value) : index_(static_cast<int>(value)) {}
     constexpr E operator*() const { return static_cast<E>(index_); }
     int* index() { return &index_; }
 
 private:
-    int index_;
+    int index_ = 0;
 };
 
 // A choice parameter whose names each stand for a value the lesson uses (a format, a matrix, an order

@@ -56,7 +56,7 @@ public:
 private:
     // Parameters.
     int preset_ = Invert;
-    float amount_ = 1.0f;
+    float amount_{};  // from postEffects.colorMatrix.amount: declareParams sets the setting's default
     float saturation_ = 1.8f;
     float hueDegrees_ = 120.0f;
     TableChoice<std::array<int, 3>> channelOrder_{kChannelOrders, "gbr"};

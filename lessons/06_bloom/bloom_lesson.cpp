@@ -85,19 +85,20 @@ private:
     void wholeFrameFacts(Facts& out, const FrameInfo& frame) const;
     bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
 
-    // Parameters (the chapters' values).
-    float threshold_ = 1.0f;
-    float knee_ = 0.5f;
-    float intensity_ = 2.0f;   // the Shader effects chapter's intensity; step 5's glow strength
+    // Parameters. Those from a scene setting (postEffects.bloom, postEffects.toneMap) start at the
+    // setting's default, which declareParams sets; the others at the chapters' values.
+    float threshold_{};
+    float knee_{};
+    float intensity_{};        // the Shader effects chapter's intensity; step 5's glow strength
     float bloomScale_ = 2.0f;  // the Bloom chapter's (Exercise 01: 1.0)
-    int levels_ = 6;
+    int levels_{};
     float downOffset_ = 0.75f;
     float upOffset_ = 0.5f;
     TableChoice<TextureFormat> format_{chainFormats(), "RGBA16F"};
     bool karis_ = true;
     TableChoice<ChainEnd> finish_{kChainEnds, "half-wide-fused"};  // step 5's way to end the chain
-    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
-    float exposure_ = 1.0f;
+    Choice<ToneCurve> toneCurve_;
+    float exposure_{};
     bool reference_ = false;
     bool benchReference_ = false;
     TableChoice<EffectOrder> frameOrder_{effectOrders(),
