@@ -111,9 +111,9 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
     // Each parameter is listed in the steps it acts in.
     params
-        .addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
-                   "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 "
-                   "uses it unchecked, step 2 refuses it and shows the log)")
+        .addChoice(
+            "broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
+            "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 uses it unchecked, step 2 refuses it and shows the log)")
         .inSteps({CopyPasted, CheckedPrograms});
     params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw")
         .inSteps({CachedLocations});
@@ -352,8 +352,7 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
                                rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
             if (broken_ != NotBroken) {
                 ImGui::TextWrapped(
-                    "The normals program was built from %s: it did not link, nothing asked, and the "
-                    "sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
+                    "The normals program was built from %s: it did not link, nothing asked, and the sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
                     brokenFile(broken_), static_cast<long long>(rawErrorsLastFrame_));
             }
             break;
@@ -362,8 +361,7 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
                 ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
             } else {
                 ImGui::TextWrapped(
-                    "The check refused the broken normals program; the sphere keeps the last "
-                    "good one. Its log:");
+                    "The check refused the broken normals program; the sphere keeps the last good one. Its log:");
                 ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
             }
             break;

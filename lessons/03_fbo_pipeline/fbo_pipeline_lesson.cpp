@@ -88,14 +88,14 @@ std::vector<std::string> FboPipelineLesson::steps() const {
 
 void FboPipelineLesson::declareParams(ParamSet& params) {
     params
-        .addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
-                  "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
-                  "(0: the fix only)")
+        .addFloat(
+            "washout_split", &washoutSplit_, 0.0f, 1.0f,
+            "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout (0: the fix only)")
         .inSteps({OneOutputTransform});
     params
-        .addBool("viewport_bug", &viewportBug_,
-                 "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a "
-                 "deliberate bug)")
+        .addBool(
+            "viewport_bug", &viewportBug_,
+            "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a deliberate bug)")
         .inSteps({FloatTarget, OneOutputTransform});
 }
 
@@ -211,9 +211,7 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
     }
     ImGui::EndTable();
     ImGui::TextWrapped(
-        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow "
-        "pass runs first whatever the order of the code. What it cannot derive is the state a pass "
-        "inherits; the pass table lists it.");
+        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow pass runs first whatever the order of the code. What it cannot derive is the state a pass inherits; the pass table lists it.");
 }
 
 void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {

@@ -164,9 +164,9 @@ void BloomLesson::declareParams(ParamSet& params) {
         .inSteps(chainSteps);
     params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
     params
-        .addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
-                    "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
-                    "part, for any level count")
+        .addSetting(
+            "intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+            "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright part, for any level count")
         .inSteps({ShaderEffectsChain, Beyond, WholeFrameStep});
     params
         .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
@@ -195,9 +195,7 @@ void BloomLesson::declareParams(ParamSet& params) {
         .inSteps({Beyond});
     Param& finish = params.addChoice(
         "finish", &finish_,
-        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at "
-        "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
-        "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
+        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
     finish.inSteps({Beyond});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5")
@@ -207,13 +205,12 @@ void BloomLesson::declareParams(ParamSet& params) {
     params
         .addBool(
             "reference", &reference_,
-            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
-            "(slow)")
+            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level (slow)")
         .inSteps({Beyond});
     params
-        .addChoice("frame_order", &frameOrder_,
-                   "Step 6: the order of the post effects (the first is the chapter's: the colour matrix "
-                   "greys the glow)")
+        .addChoice(
+            "frame_order", &frameOrder_,
+            "Step 6: the order of the post effects (the first is the chapter's: the colour matrix greys the glow)")
         .inSteps({WholeFrameStep});
     params.addChoice("frame_matrix", &frameMatrix_, "Step 6: the colour matrix the whole frame applies")
         .inSteps({WholeFrameStep});
@@ -355,8 +352,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
     }
     if (flicker_->stats().measured && !showsReference(step)) {
         ImGui::TextWrapped(
-            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
-            "frame's|.%s",
+            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last frame's|.%s",
             step == Beyond ? " Switch karis off to see the firefly flicker." : "");
     }
 }
