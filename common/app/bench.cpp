@@ -11,7 +11,7 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
-#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/copy_pass.hpp"
 #include "image/image_compare.hpp"
 #include "image/plot.hpp"
 #include "image/png_file.hpp"
@@ -38,15 +38,11 @@ public:
         TextureHandle texture = source.create(
             "copy.source", {TextureSize::output(), TextureFormat::RGBA16F, 1}, TextureUsage::ColorAttachment);
         source.setState({.clearColor = ClearColor{0.5f, 0.25f, 0.125f, 1.0f}}).setTaps(0);  // a clear
-        const FullscreenPass* copy = &copy_;
-        copy_.addPass(graph, "copy", [copy, texture](PassContext& ctx) { copy->draw({ctx.native(texture)}); })
-            .read(texture)
-            .writeColor(graph.output())
-            .setTaps(1);
+        copy_.declare(graph, "copy", texture);
     }
 
 private:
-    FullscreenPass copy_{"common/copy.frag", "bench copy"};
+    CopyPass copy_{"bench copy"};
 };
 
 struct Measured {

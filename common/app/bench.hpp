@@ -15,7 +15,7 @@
 #include <string>
 
 #include "app/frame_renderer.hpp"
-#include "render/quality_sweep.hpp"
+#include "bench/quality_sweep.hpp"
 
 namespace fx {
 

@@ -156,8 +156,7 @@ Result<ContentsEntry> buildLesson(const fs::path& executable, const HandoutOptio
     const fs::path dot = findProgram("dot");
     if (dot.empty())
         return Error{
-            "Graphviz's dot is not on PATH: it draws the frame graphs (Debian: apt-get install graphviz; "
-            "./fxlab handout installs it)"};
+            "Graphviz's dot is not on PATH: it draws the frame graphs (Debian: apt-get install graphviz; ./fxlab handout installs it)"};
 
     // Every step, captured by the lesson itself at a fixed moment of its headless clock.
     const auto started = std::chrono::steady_clock::now();

@@ -38,11 +38,9 @@ Result<std::vector<std::string>> languages(const std::string& text) {
 }  // namespace
 
 std::string usage() {
-    return "usage: fxlab-handout [--lang en|ja|en,ja] [--out DIR] [--force] [--with-bench] [--bench-dir "
-           "DIR]\n"
+    return "usage: fxlab-handout [--lang en|ja|en,ja] [--out DIR] [--force] [--with-bench] [--bench-dir DIR]\n"
            "                     [--size WxH] [--frames N] LESSON_EXECUTABLE...\n"
-           "  --lang L      the pages' language; several (en,ja) share the pictures: the first is "
-           "index.html,\n"
+           "  --lang L      the pages' language; several (en,ja) share the pictures: the first is index.html,\n"
            "                the others index.<lang>.html (default en)\n"
            "  --out DIR     one lesson: its folder (default out/handouts/NN-name); several: a folder with a\n"
            "                contents page and one folder per lesson (default out/handouts)\n"

@@ -20,13 +20,11 @@ const Words kEnglish{
     .sameFrameEnd = ".",
     .sameForAllPasses = "for every pass",
     .modelledColumn =
-        "MB/taps: the cost model's memory traffic at 1920x1080 in MB / texture lookups per "
-        "pixel written (docs/frame-graph.md)",
+        "MB/taps: the cost model's memory traffic at 1920x1080 in MB / texture lookups per pixel written (docs/frame-graph.md)",
     .bench = "What accuracy costs, measured by the bench",
     .benchMeasured = "Measured by ./fxlab bench at ",
     .benchMissing =
-        "No bench results were found for this lesson: run ./fxlab bench first, or make the "
-        "handout with --with-bench. The lesson's own text below may show earlier measurements.",
+        "No bench results were found for this lesson: run ./fxlab bench first, or make the handout with --with-bench. The lesson's own text below may show earlier measurements.",
     .knob = "knob",
     .value = "value",
     .costCopies = "frame (full-screen copies)",
@@ -55,14 +53,11 @@ const Words kJapanese{
     .sameFrameEnd = " と同じです。",
     .sameForAllPasses = "すべてのパスで同じ",
     .modelledColumn =
-        "MB/タップ：コストモデルによる 1920x1080 でのメモリ転送量（MB）／書き込む 1 "
-        "ピクセルあたりのテクスチャ参照数"
-        "（docs/frame-graph.md）",
+        "MB/タップ：コストモデルによる 1920x1080 でのメモリ転送量（MB）／書き込む 1 ピクセルあたりのテクスチャ参照数（docs/frame-graph.md）",
     .bench = "精度のコスト（ベンチの計測）",
     .benchMeasured = "./fxlab bench による計測：",
     .benchMissing =
-        "このレッスンのベンチ結果が見つかりません。先に ./fxlab bench を実行するか、--with-bench "
-        "を付けてハンドアウトを作ってください。下のレッスン本文には以前の計測が載っていることがあります。",
+        "このレッスンのベンチ結果が見つかりません。先に ./fxlab bench を実行するか、--with-bench を付けてハンドアウトを作ってください。下のレッスン本文には以前の計測が載っていることがあります。",
     .knob = "ノブ",
     .value = "値",
     .costCopies = "フレーム（フルスクリーンコピー）",

@@ -156,10 +156,10 @@ std::string PictureScale::notice(Size2D place) const {
     const std::string size = cat(place.width, "x", place.height, " (", r.width, "x", r.height, ")");
     if (pinned_) return cat("picture at ", percentText(scale_), " of ", size, ", pinned (F6 changes it)");
     if (notPixels_)
-        return cat("picture at ", percentText(scale_), " of ", size,
-                   ": slow renderer; most of this step's frame is not in its pixels, so a smaller picture "
-                   "would not bring it within the ",
-                   int(budgetMs_), " ms budget (F6 pins the scale)");
+        return cat(
+            "picture at ", percentText(scale_), " of ", size,
+            ": slow renderer; most of this step's frame is not in its pixels, so a smaller picture would not bring it within the ",
+            int(budgetMs_), " ms budget (F6 pins the scale)");
     return cat("picture at ", percentText(scale_), " of ", size, ": slow renderer, frame budget ",
                int(budgetMs_), " ms (F6 pins the scale)");
 }

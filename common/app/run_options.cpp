@@ -271,8 +271,7 @@ const std::vector<Flag>& flags() {
         {.name = "--exercise",
          .value = "N",
          .help =
-             "exercise N of this lesson: the student's file stands in for the lesson's, at the exercise's "
-             "step, checked at every save (docs/exercises.md)",
+             "exercise N of this lesson: the student's file stands in for the lesson's, at the exercise's step, checked at every save (docs/exercises.md)",
          .apply = whole(1, 99, "an exercise number", [](RunOptions& o, long n) { o.exercise = int(n); })},
         {.name = "--scene",
          .value = "FILE",
@@ -391,8 +390,8 @@ const std::vector<Flag>& flags() {
          .apply = addPress},
         {.name = "--resize",
          .value = "WxH@FRAME",
-         .help = "resize the window at frame FRAME, as if its border were dragged (headless: the offscreen "
-                 "target; 0x0 is a minimised window)",
+         .help =
+             "resize the window at frame FRAME, as if its border were dragged (headless: the offscreen target; 0x0 is a minimised window)",
          .repeatable = true,
          .apply = addResize},
         {.name = "--all-steps",

@@ -11,7 +11,7 @@
 #include "app/window_input.hpp"
 #include "base/result.hpp"
 #include "base/timing_mode.hpp"
-#include "render/quality_sweep.hpp"
+#include "bench/quality_sweep.hpp"
 
 namespace fx {
 

@@ -84,9 +84,9 @@ std::optional<std::string> outsideTheFolder(const fs::path& name) {
 std::optional<Error> refusedTarget(const fs::path& shown, mode_t mode) {
     if (S_ISREG(mode)) return std::nullopt;
     if (S_ISLNK(mode))
-        return Error{cat(shown.string(),
-                         ": is a symbolic link; fxlab never writes through a link (remove it or choose "
-                         "another name)")};
+        return Error{cat(
+            shown.string(),
+            ": is a symbolic link; fxlab never writes through a link (remove it or choose another name)")};
     if (S_ISDIR(mode)) return Error{cat(shown.string(), ": is a folder; give a file name")};
     return Error{cat(shown.string(), ": is ", describeFileType(mode),
                      "; fxlab writes only regular files (choose a file name)")};

@@ -60,9 +60,10 @@ public:
         if (auto colon = message.find(": "); colon != std::string_view::npos)
             message.remove_prefix(colon + 2);
         if (error.id == 406) {  // number overflow: a literal such as 1e400 has no finite double
-            failField(nextPath(), cat("the number ", lastToken,
-                                      " is not finite (too large for a double: it "
-                                      "overflowed; JSON has no infinity or NaN)"));
+            failField(
+                nextPath(),
+                cat("the number ", lastToken,
+                    " is not finite (too large for a double: it overflowed; JSON has no infinity or NaN)"));
         }
         // `position` counts the characters read; the last one read is where the lexer stopped. For an
         // unexpected literal (a string, number, true, false or null that is whole but out of place), point

@@ -7,6 +7,7 @@
 // the scene setting that gives its starting value), a preset file, the command line, or the overlay.
 // The runner applies them in that order, so each later source overrides the earlier ones.
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -109,12 +110,44 @@ struct Param {
 template <class E>
 class Choice {
 public:
+    constexpr Choice() = default;  // the first enumerator, until a setting's default replaces it
     constexpr explicit Choice(E value) : index_(static_cast<int>(value)) {}
     constexpr E operator*() const { return static_cast<E>(index_); }
     int* index() { return &index_; }
 
 private:
-    int index_;
+    int index_ = 0;
+};
+
+// A choice parameter whose names each stand for a value the lesson uses (a format, a matrix, an order
+// of effects): one table lists every name beside its value, the parameter offers the names, and
+// `*choice` is the chosen value. The set keeps the index in range, so reading it needs no clamp.
+template <class T>
+class TableChoice {
+public:
+    struct Option {
+        std::string name;
+        T value;
+    };
+    // Starts at the option named `initial`; a name the table lacks is the lesson's mistake.
+    TableChoice(std::vector<Option> options, std::string_view initial) : options_(std::move(options)) {
+        while (index_ < int(options_.size()) && options_[std::size_t(index_)].name != initial) ++index_;
+        if (index_ == int(options_.size()))
+            throw std::invalid_argument("TableChoice: no option named " + std::string(initial));
+    }
+    const T& operator*() const { return options_[std::size_t(index_)].value; }
+    const T* operator->() const { return &**this; }
+    const std::string& name() const { return options_[std::size_t(index_)].name; }
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const Option& o : options_) out.push_back(o.name);
+        return out;
+    }
+    int* index() { return &index_; }
+
+private:
+    std::vector<Option> options_;
+    int index_ = 0;
 };
 
 class ParamSet {
@@ -133,6 +166,11 @@ public:
     Param& addChoice(std::string name, Choice<E>* value, std::vector<std::string> choices,
                      std::string description) {
         return addChoice(std::move(name), value->index(), std::move(choices), std::move(description));
+    }
+    // The names are the table's.
+    template <class T>
+    Param& addChoice(std::string name, TableChoice<T>* value, std::string description) {
+        return addChoice(std::move(name), value->index(), value->names(), std::move(description));
     }
     template <class E>
     Param& addSetting(std::string name, Choice<E>* value, const SettingSpec& setting, std::string note = {}) {

@@ -94,11 +94,9 @@ Status checkFramebufferComplete(GLuint framebuffer, std::string_view label) {
     for (int i = 0, n = maxDrawBuffers(); i < n; ++i) {
         GLenum buffer = drawBuffer(framebuffer, i);
         if (buffer == GL_NONE || hasImage(framebuffer, buffer)) continue;
-        return Error{cat("draw buffer ", i, " of ", label, " names GL_COLOR_ATTACHMENT",
-                         buffer - GL_COLOR_ATTACHMENT0,
-                         ", which has no image attached: what the shader writes "
-                         "to location ",
-                         i, " would be lost")};
+        return Error{
+            cat("draw buffer ", i, " of ", label, " names GL_COLOR_ATTACHMENT", buffer - GL_COLOR_ATTACHMENT0,
+                ", which has no image attached: what the shader writes to location ", i, " would be lost")};
     }
     return Status::success();
 }
@@ -118,16 +116,12 @@ Status checkProgramOutputs(GLuint program, GLuint framebuffer, std::string_view 
         if (framebuffer == 0) {
             if (location == 0) continue;
             return Error{cat("output '", output, "' (location ", location,
-                             ") has no buffer in the window's "
-                             "framebuffer ",
-                             label, ": its writes are lost")};
+                             ") has no buffer in the window's framebuffer ", label, ": its writes are lost")};
         }
         GLenum buffer = location < maxDrawBuffers() ? drawBuffer(framebuffer, location) : GL_NONE;
         if (buffer == GL_NONE)
             return Error{cat("output '", output, "' (location ", location,
-                             ") has no entry in the draw-buffer "
-                             "list of ",
-                             label, ": its writes are lost")};
+                             ") has no entry in the draw-buffer list of ", label, ": its writes are lost")};
         if (!hasImage(framebuffer, buffer))
             return Error{cat("output '", output, "' (location ", location, ") goes to GL_COLOR_ATTACHMENT",
                              buffer - GL_COLOR_ATTACHMENT0, " of ", label,

@@ -83,9 +83,9 @@ Result<Program> Program::build(const ProgramSources& sources) {
     // The Shader effects chapter's lifetime pitfall, the other end: a program made before the context
     // (a global, or an object built before the window) would call GL through null function pointers.
     if (!contextAlive()) {
-        return Error{cat("cannot build program ", program.label_,
-                         ": no GL context is current on this thread (create the window or headless context "
-                         "first)")};
+        return Error{
+            cat("cannot build program ", program.label_,
+                ": no GL context is current on this thread (create the window or headless context first)")};
     }
 
     std::vector<CompiledStage> compiled;

@@ -141,8 +141,7 @@ Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& opt
     // First load: client extensions only, no display yet.
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) {
         return Error{
-            "headless rendering needs EGL (libEGL.so.1), which could not be loaded: install libegl1 and Mesa "
-            "(libegl-mesa0)"};
+            "headless rendering needs EGL (libEGL.so.1), which could not be loaded: install libegl1 and Mesa (libegl-mesa0)"};
     }
     std::string notes;
     std::string failures;

@@ -55,10 +55,9 @@ std::vector<std::string> validateWriters(const PassList& passes, const std::vect
             if (passes[c]->switchState() == PassSwitch::On) switchedOn.push_back(c);
         }
         if (switchedOn.size() > 1) {
-            errors.push_back(cat("'", name, "' is written without being read by ",
-                                 passNames(passes, switchedOn),
-                                 ", so their order is undefined; only one pass may create a texture, "
-                                 "and the others must modify it (read and write) to come after it"));
+            errors.push_back(cat(
+                "'", name, "' is written without being read by ", passNames(passes, switchedOn),
+                ", so their order is undefined; only one pass may create a texture, and the others must modify it (read and write) to come after it"));
         }
 
         if (!textures[t].transient() || !r.creators.empty()) continue;

@@ -78,11 +78,10 @@ std::vector<std::string> validatePassTargets(const PassList& passes,
             // reads through blending, which is defined; only a sampled read is refused.
             if (a.sampled && a.writes && !a.otherLevel &&
                 (a.usage == TextureUsage::ColorAttachment || a.usage == TextureUsage::DepthAttachment)) {
-                errors.push_back(cat("pass '", pass.name(), "' samples '", t.view.name,
-                                     "' and renders into it as its ", toString(a.usage),
-                                     ": a feedback loop, undefined in GL. Render into another texture, "
-                                     "or declare readOtherLevel if the pass samples another mip level "
-                                     "than it writes"));
+                errors.push_back(cat(
+                    "pass '", pass.name(), "' samples '", t.view.name, "' and renders into it as its ",
+                    toString(a.usage),
+                    ": a feedback loop, undefined in GL. Render into another texture, or declare readOtherLevel if the pass samples another mip level than it writes"));
             }
             if (isWindowFramebuffer(t)) {
                 window = &t;

@@ -16,10 +16,9 @@ const TextureView& PassContext::texture(TextureHandle handle) const {
     if (declared) return graph_.texture(handle);
     if (handle.index == kDeadStackWord) {
         // Memory is already being misread; carrying on would only hide where.
-        log::error("pass '", pass_.name(),
-                   "' read a texture handle from a stack frame that has returned: its body captured a "
-                   "local of the function that declared it by reference ([&]), but bodies run later, in "
-                   "FrameGraph::execute. Capture handles and values by copy ([=] or [handle]).");
+        log::error(
+            "pass '", pass_.name(),
+            "' read a texture handle from a stack frame that has returned: its body captured a local of the function that declared it by reference ([&]), but bodies run later, in FrameGraph::execute. Capture handles and values by copy ([=] or [handle]).");
         std::abort();
     }
     static const TextureView kNone{};

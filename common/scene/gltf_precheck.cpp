@@ -81,8 +81,7 @@ std::optional<std::string> dracoWithoutCopy(const Json& root) {
             if (auto accessor = accessorWithoutData(root, primitive))
                 return cat(
                     describe("mesh", m, mesh), " primitive ", p,
-                    ": compressed with Draco (KHR_draco_mesh_compression), which fxlab does not decode, "
-                    "and accessor ",
+                    ": compressed with Draco (KHR_draco_mesh_compression), which fxlab does not decode, and accessor ",
                     *accessor, " has no uncompressed copy (no bufferView)");
         }
     }

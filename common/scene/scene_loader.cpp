@@ -101,8 +101,7 @@ void checkModels(const Scene& scene) {
             failField(fieldPath(where, "gltf"),
                       cat("the models of objects[0] to objects[", i, "] have ", vertices,
                           " vertices together (this one ", cached->second.vertexCount(),
-                          ", each object its own copy on "
-                          "the GPU); a scene may draw at most ",
+                          ", each object its own copy on the GPU); a scene may draw at most ",
                           scene_limits::kMaxDrawnVertices, " (docs/scene-format.md, Limits)"));
         if (object.animation.clips.empty()) continue;
         auto clip = selectClips(cached->second, object.animation);

@@ -31,8 +31,7 @@ Lens parseLens(JsonFieldReader& reader) {
             "focusDistance",
             cat(formatNumber(lens.focusDistanceM), " m is not beyond the focal length (",
                 formatNumber(lens.focalLengthMm),
-                " mm): the thin-lens formula divides by (focus distance - focal length), which is zero, "
-                "negative or lost to rounding here; focus farther than ",
+                " mm): the thin-lens formula divides by (focus distance - focal length), which is zero, negative or lost to rounding here; focus farther than ",
                 formatNumber(nearestFocusMm / 1000.0), " m"));
     }
     reader.reportUnknown();
@@ -54,9 +53,9 @@ void parseAim(JsonFieldReader& reader, Camera& camera) {
             reader.fail("target", "equals the camera position, so the view has no direction");
         // A look-at matrix with +Y up has no defined sideways axis when the view is vertical.
         if (std::sqrt(view.x * view.x + view.z * view.z) < 1.0e-3f * length)
-            reader.fail("target",
-                        "is straight above or below the camera; with +Y up the view has no defined "
-                        "sideways direction (move the target a little sideways)");
+            reader.fail(
+                "target",
+                "is straight above or below the camera; with +Y up the view has no defined sideways direction (move the target a little sideways)");
         return;
     }
     if (!hasYaw && !hasPitch) reader.fail("target", "missing required field (give target, or yaw and pitch)");

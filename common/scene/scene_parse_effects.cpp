@@ -151,9 +151,9 @@ PostEffects parsePostEffects(JsonFieldReader& reader, const Camera& camera) {
     parseEffect(reader, PostEffect::depthOfField, post.depthOfField, parseDepthOfField);
     parseEffect(reader, PostEffect::toneMap, post.toneMap, parseToneMap);
     if (post.depthOfField && !camera.lens)
-        reader.fail("depthOfField",
-                    "needs a physical lens: give camera.lens (focal length, f-number, focus "
-                    "distance) instead of camera.fovY");
+        reader.fail(
+            "depthOfField",
+            "needs a physical lens: give camera.lens (focal length, f-number, focus distance) instead of camera.fovY");
     reader.reportUnknown("post effect");
     return post;
 }

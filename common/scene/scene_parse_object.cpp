@@ -150,9 +150,9 @@ SceneObject parseObject(JsonFieldReader& reader, const AssetPathReader& assets) 
     object.receivesShadows = reader.boolean("receivesShadows", object.receivesShadows);
     if (reader.has("animation")) {
         if (hasPrimitive)
-            reader.fail("animation",
-                        "a primitive has no animation clips (only glTF models do); use \"motion\" "
-                        "to move it");
+            reader.fail(
+                "animation",
+                "a primitive has no animation clips (only glTF models do); use \"motion\" to move it");
         auto animationReader = reader.object("animation");
         object.animation = parseAnimation(animationReader);
     }

@@ -127,7 +127,7 @@ const std::vector<Declared>& declared() {
         {number("postEffects.bloom.intensity", 0, 100, b.intensity, 0, 4, {},
                 "scale of the light added back"),
          from(bloom, [](const BloomSettings& s) { return text(s.intensity); })},
-        // As many levels as the chain makes (render/bloom_levels.hpp: kBloomMaxLevels, which
+        // As many levels as the chain makes (effects/bloom/bloom_levels.hpp: kBloomMaxLevels, which
         // effects/bloom/bloom_chain.cpp checks against this table).
         {integer("postEffects.bloom.levels", 1, 8, b.levels, 8, "levels in the blur chain"),
          from(bloom, [](const BloomSettings& s) { return text(s.levels); })},
@@ -138,17 +138,17 @@ const std::vector<Declared>& declared() {
         {number("postEffects.colorMatrix.amount", 0, 1, m.amount, 0, 1, {},
                 "blend from the original (0) to the full matrix (1)"),
          from(colorMatrix, [](const ColorMatrixSettings& s) { return text(s.amount); })},
-        {number("postEffects.radialBlur.center[0]", -5, 5, r.center.x, -5, 5, {},
-                "the blur's centre, x in texture coordinates of the screen (0 left, 1 right; outside: off "
-                "screen)"),
+        {number(
+             "postEffects.radialBlur.center[0]", -5, 5, r.center.x, -5, 5, {},
+             "the blur's centre, x in texture coordinates of the screen (0 left, 1 right; outside: off screen)"),
          from(radialBlur, [](const RadialBlurSettings& s) { return text(s.center.x); })},
-        {number("postEffects.radialBlur.center[1]", -5, 5, r.center.y, -5, 5, {},
-                "the blur's centre, y in texture coordinates of the screen (0 bottom, 1 top; outside: off "
-                "screen)"),
+        {number(
+             "postEffects.radialBlur.center[1]", -5, 5, r.center.y, -5, 5, {},
+             "the blur's centre, y in texture coordinates of the screen (0 bottom, 1 top; outside: off screen)"),
          from(radialBlur, [](const RadialBlurSettings& s) { return text(s.center.y); })},
-        {number("postEffects.radialBlur.length", 0, 1, r.length, 0, 0.2, {},
-                "the chapter's z: tap spacing per unit of distance to the centre (above 1/7 the far taps "
-                "overshoot the centre)"),
+        {number(
+             "postEffects.radialBlur.length", 0, 1, r.length, 0, 0.2, {},
+             "the chapter's z: tap spacing per unit of distance to the centre (above 1/7 the far taps overshoot the centre)"),
          from(radialBlur, [](const RadialBlurSettings& s) { return text(s.length); })},
         {number("postEffects.radialBlur.start", 0, 2, r.start, 0, 2, {},
                 "the chapter's w: distance from the centre that stays sharp (texture coordinates)"),
@@ -176,9 +176,9 @@ const std::vector<Declared>& declared() {
         {required(aboveZero(number("camera.lens.fNumber", 0, 64, l.fNumber, 0, 32, {},
                                    "f-number N: the aperture is the focal length / N"))),
          from(lens, [](const Lens& s) { return text(s.fNumber); })},
-        {required(aboveZero(number("camera.lens.focusDistance", 0, kInfinity, l.focusDistanceM, 0, 300, "m",
-                                   "focus distance, more than 0.1% beyond the focal length (a far mountain: "
-                                   "infinity)"))),
+        {required(aboveZero(
+             number("camera.lens.focusDistance", 0, kInfinity, l.focusDistanceM, 0, 300, "m",
+                    "focus distance, more than 0.1% beyond the focal length (a far mountain: infinity)"))),
          from(lens, [](const Lens& s) { return text(s.focusDistanceM); })},
         {required(number("clouds[0].bottom", -1e4, 1e5, c.bottom, -100, 1000, "m",
                          "height of the slab's lower face; below top")),

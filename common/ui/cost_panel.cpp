@@ -205,8 +205,7 @@ void CostPanel::draw(const Measure& measure) {
         ImGui::TextDisabled("no sweep available");
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
-            "(this app does not provide a measurement; ./fxlab bench sweeps the knobs from the "
-            "command line)");
+            "(this app does not provide a measurement; ./fxlab bench sweeps the knobs from the command line)");
         ImGui::PopTextWrapPos();
         if (!result_) return;
     } else if (measurePending()) {
@@ -249,8 +248,7 @@ void CostPanel::draw(const Measure& measure) {
     }
     ImGui::SameLine();
     ImGui::TextWrapped(
-        "%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a "
-        "copy timed just before it)",
+        "%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a copy timed just before it)",
         r.width, r.height, r.timingMethod.c_str(), r.copyMs);
     auto knobs = sweptKnobs(r);
     if (knobs.size() > 1) {

@@ -11,8 +11,8 @@
 
 #include <imgui.h>
 
+#include "bench/quality_sweep.hpp"
 #include "image/plot.hpp"
-#include "render/quality_sweep.hpp"
 
 namespace fx {
 

@@ -64,8 +64,7 @@ ImGuiBackends startImGui(GLFWwindow* window) {
     started.renderer = ImGui_ImplOpenGL3_Init("#version 450 core");
     if (!started.renderer) {
         log::error(
-            "the overlay's OpenGL renderer could not start (Dear ImGui's loader needs libGL.so.1, "
-            "Debian package libgl1)");
+            "the overlay's OpenGL renderer could not start (Dear ImGui's loader needs libGL.so.1, Debian package libgl1)");
         return started;
     }
     useContextLoader(window);

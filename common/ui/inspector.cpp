@@ -173,8 +173,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
             selected_.c_str());
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
-            "Selecting a texture keeps it, and the passes that make it, alive from the next frame on. "
-            "Wheel: zoom, drag: pan, double-click: fit, right click: pin the probe.");
+            "Selecting a texture keeps it, and the passes that make it, alive from the next frame on. Wheel: zoom, drag: pan, double-click: fit, right click: pin the probe.");
         ImGui::PopTextWrapPos();
         return;
     }
@@ -189,8 +188,7 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
         ImGui::PushTextWrapPos(0.0f);
         if (record->origin == TextureOrigin::PresentedOutput) {
             ImGui::TextDisabled(
-                "The presented output is the window's framebuffer: it is the picture behind "
-                "this overlay and cannot be sampled.");
+                "The presented output is the window's framebuffer: it is the picture behind this overlay and cannot be sampled.");
         } else if (!record->reason.empty()) {
             ImGui::TextColored(ui_style::kWarning, "Not made this frame: %s", record->reason.c_str());
         } else {

@@ -9,9 +9,9 @@
 
 #include "base/lesson_text.hpp"
 #include "base/params.hpp"
+#include "bench/quality_sweep.hpp"
 #include "render/frame_graph.hpp"
 #include "render/frame_report.hpp"
-#include "render/quality_sweep.hpp"
 
 namespace fx {
 

@@ -13,7 +13,7 @@
 #include "app/lesson.hpp"
 #include "app/runner.hpp"
 #include "base/log.hpp"
-#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/copy_pass.hpp"
 #include "effects/scene/camera_matrices.hpp"
 #include "effects/scene/gpu_mesh.hpp"
 #include "effects/scene/hdr_scene_pass.hpp"
@@ -69,7 +69,7 @@ private:
     gl::ReloadableProgram brokenAttempt_;
     int brokenBuilt_ = -1;  // the broken_shader it was built for (-1: none built)
     gl::ReloadableProgram skinGrouped_, skinParenthesised_;
-    Gpu<FullscreenPass> present_{"common/copy.frag", "copy"};
+    Gpu<CopyPass> present_{"copy"};
 
     // Step 3's measurements (CPU side, per frame).
     int lookupsLastFrame_ = 0;
@@ -111,9 +111,9 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
     // Each parameter is listed in the steps it acts in.
     params
-        .addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
-                   "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 "
-                   "uses it unchecked, step 2 refuses it and shows the log)")
+        .addChoice(
+            "broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
+            "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 uses it unchecked, step 2 refuses it and shows the log)")
         .inSteps({CopyPasted, CheckedPrograms});
     params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw")
         .inSteps({CachedLocations});
@@ -299,13 +299,7 @@ void ProgramObjectsLesson::buildSkinningComparison(FrameGraph& graph, const Fram
         graph.inspect("skinning.parenthesised.color");
     }
     TextureHandle shown = productOrder_ == 0 ? grouped[0] : parenthesised[0];
-    const FullscreenPass* present = &*present_;
-    present_
-        ->addPass(graph, "present",
-                  [present, shown](PassContext& ctx) { present->draw({ctx.native(shown)}); })
-        .read(shown)
-        .writeColor(graph.output())
-        .setTaps(1);
+    present_->declare(graph, "present", shown);
 }
 
 void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
@@ -358,8 +352,7 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
                                rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
             if (broken_ != NotBroken) {
                 ImGui::TextWrapped(
-                    "The normals program was built from %s: it did not link, nothing asked, and the "
-                    "sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
+                    "The normals program was built from %s: it did not link, nothing asked, and the sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
                     brokenFile(broken_), static_cast<long long>(rawErrorsLastFrame_));
             }
             break;
@@ -368,8 +361,7 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
                 ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
             } else {
                 ImGui::TextWrapped(
-                    "The check refused the broken normals program; the sphere keeps the last "
-                    "good one. Its log:");
+                    "The check refused the broken normals program; the sphere keeps the last good one. Its log:");
                 ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
             }
             break;

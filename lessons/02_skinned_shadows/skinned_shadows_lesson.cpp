@@ -95,14 +95,14 @@ void SkinnedShadowsLesson::declareParams(ParamSet& params) {
                 "Step 3: characters in the crowd (a grid; the first is the scene's)")
         .inSteps({ProductOrder});
     params
-        .addChoice("material_upload", &materialUpload_, {"always", "ask_program"},
-                   "Step 4: upload material uniforms to the skinned shadow program always (the chapter's "
-                   "GL error flood) or only if the program has them (the fix)")
+        .addChoice(
+            "material_upload", &materialUpload_, {"always", "ask_program"},
+            "Step 4: upload material uniforms to the skinned shadow program always (the chapter's GL error flood) or only if the program has them (the fix)")
         .inSteps({ErrorFlood});
     params
-        .addChoice("cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
-                   "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: "
-                   "the skinned lattice mannequin casts a solid shadow) or on every shadow program")
+        .addChoice(
+            "cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
+            "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: the skinned lattice mannequin casts a solid shadow) or on every shadow program")
         .inSteps({CutoutShadows});
 }
 
@@ -183,15 +183,14 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
     if (frame.step == ProductOrder) {
         ImGui::TextWrapped(
-            "Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, "
-            "which the parentheses do not change.");
+            "Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, which the parentheses do not change.");
     }
     if (frame.step == CutoutShadows) {
-        ImGui::TextWrapped("alpha cutoff %.1f set on: %s", double(kAlphaCutoff),
-                           cutoffUniform_ == 0
-                               ? "the static shadow program only (the skinned one keeps 0: "
-                                 "the mannequin's shadow is solid)"
-                               : "both shadow programs (the lattice's holes reach the ground)");
+        ImGui::TextWrapped(
+            "alpha cutoff %.1f set on: %s", double(kAlphaCutoff),
+            cutoffUniform_ == 0
+                ? "the static shadow program only (the skinned one keeps 0: the mannequin's shadow is solid)"
+                : "both shadow programs (the lattice's holes reach the ground)");
     }
     if (frame.step == ErrorFlood) {
         ImGui::TextWrapped("material upload: %s",

@@ -11,12 +11,13 @@
 #include "app/runner.hpp"
 #include "base/log.hpp"
 #include "chapter_order.hpp"
-#include "effects/post/fullscreen_pass.hpp"
+#include "effects/post/copy_pass.hpp"
 #include "effects/post/output_transform_pass.hpp"
 #include "effects/post/ui_queue_pass.hpp"
+#include "effects/scene/hdr_scene_pass.hpp"
 #include "effects/scene/scene_meshes.hpp"
+#include "effects/shadow/shadow_lit_pass.hpp"
 #include "effects/shadow/shadow_map.hpp"
-#include "lit_scene_pass.hpp"
 
 namespace lesson03 {
 
@@ -42,8 +43,8 @@ private:
     bool viewportBug_ = false;
 
     Gpu<ShadowMap> shadows_;
-    Gpu<LitScenePass> litScene_;
-    Gpu<FullscreenPass> copyToWindow_{"common/copy.frag", "to the window"};
+    Gpu<ShadowLitPass> litScene_;  // the scene lit by the sun, with its shadow
+    Gpu<CopyPass> copyToWindow_{"to the window"};
     Gpu<OutputTransformPass> outputTransform_;
     Gpu<UiQueuePass> uiQueue_;
 
@@ -69,7 +70,7 @@ PassState chapterDrawState(const Scene& scene) {
             .blend = true,
             .blendFunction = BlendFunction::alpha(),
             .colorMask = ColorMask{},
-            .clearColor = LitScenePass::windowClearColor(scene),
+            .clearColor = displayClearColor(scene),
             .clearDepth = 1.0f};
 }
 
@@ -87,14 +88,14 @@ std::vector<std::string> FboPipelineLesson::steps() const {
 
 void FboPipelineLesson::declareParams(ParamSet& params) {
     params
-        .addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f,
-                  "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout "
-                  "(0: the fix only)")
+        .addFloat(
+            "washout_split", &washoutSplit_, 0.0f, 1.0f,
+            "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout (0: the fix only)")
         .inSteps({OneOutputTransform});
     params
-        .addBool("viewport_bug", &viewportBug_,
-                 "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a "
-                 "deliberate bug)")
+        .addBool(
+            "viewport_bug", &viewportBug_,
+            "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a deliberate bug)")
         .inSteps({FloatTarget, OneOutputTransform});
 }
 
@@ -135,18 +136,24 @@ void FboPipelineLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
 void FboPipelineLesson::declareStraightToWindow(FrameGraph& graph, const FrameInfo& frame,
                                                 const DeclaredShadowMap& shadow) {
-    LitSceneOptions scene;
-    scene.encodeForDisplay = true;  // the window is the last stop
-    // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
-    scene.declaresState = frame.step >= EachPassSetsItsState;
-    scene.clears = frame.step >= EachPassSetsItsState;
-    litScene_->declareIntoWindow(graph, frame.world, shadow, scene);
+    ShadowLitOptions options;
+    options.encodeForDisplay = true;  // the window is the last stop: the chapter's standard.frag encodes
+    Pass& scene = litScene_->declareDraw(graph, frame.world, shadow, options);
+    if (frame.step >= EachPassSetsItsState) {
+        // The state it draws with, and the clear of the window: the sky as the display shows it.
+        PassState state = hdrSceneState(frame.world.scene());
+        state.clearColor = displayClearColor(frame.world.scene());
+        scene.setState(state).writeColor(graph.output());
+    } else {
+        // Steps 1 and 2 draw with the frame's draw state and into the window the setup pass cleared.
+        scene.modify(graph.output(), TextureUsage::ColorAttachment);
+    }
     uiQueue_->declare(graph, frame.size);
 }
 
 void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const FrameInfo& frame,
                                                   const DeclaredShadowMap& shadow) {
-    LitSceneOptions sceneOptions;
+    ShadowLitOptions sceneOptions;
     // The chapter binds a framebuffer and sets its viewport in one go; forget the second half after
     // the shadow map and the scene is drawn into a 2048x2048 viewport on a smaller target: only the
     // bottom-left corner of the picture lands in it. The graph sets every pass's viewport from its
@@ -155,28 +162,19 @@ void FboPipelineLesson::declareThroughFloatTarget(FrameGraph& graph, const Frame
         sceneOptions.viewport = Viewport{0, 0, shadow.settings.mapSize, shadow.settings.mapSize};
     if (frame.step == FloatTarget) {
         sceneOptions.encodeForDisplay = true;  // as in steps 1 to 3: the target holds display values
-        HdrSceneTargets main =
-            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
-        const FullscreenPass* copy = &*copyToWindow_;
-        TextureHandle color = main.color;
-        copyToWindow_
-            ->addPass(graph, "to the window",
-                      [copy, color](PassContext& ctx) { copy->draw({ctx.native(color)}); })
-            .read(color)
-            .writeColor(graph.output())
-            .setTaps(1);
+        HdrSceneTargets main = litScene_->declare(graph, frame.world, shadow, sceneOptions);
+        copyToWindow_->declare(graph, "to the window", main.color);
     } else {
-        HdrSceneTargets linear =
-            litScene_->declareIntoTargets(graph, frame.world, shadow, sceneOptions, "scene");
+        HdrSceneTargets linear = litScene_->declare(graph, frame.world, shadow, sceneOptions);
         std::optional<SplitView> split;
         if (washoutSplit_ > 0.0f) {
             // The same scene, its shader still encoding: what the chapter saw before the fix. Only
             // for the left of the divider; a benchmark frame would not draw it.
-            LitSceneOptions washedOut;
+            ShadowLitOptions washedOut;
             washedOut.passName = "scene (shader encodes too)";
+            washedOut.prefix = "scene_encoded";
             washedOut.encodeForDisplay = true;
-            HdrSceneTargets encoded =
-                litScene_->declareIntoTargets(graph, frame.world, shadow, washedOut, "scene_encoded");
+            HdrSceneTargets encoded = litScene_->declare(graph, frame.world, shadow, washedOut);
             split = SplitView{encoded.color, washoutSplit_};
         }
         outputTransform_->declare(graph, linear.color, split);
@@ -213,9 +211,7 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
     }
     ImGui::EndTable();
     ImGui::TextWrapped(
-        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow "
-        "pass runs first whatever the order of the code. What it cannot derive is the state a pass "
-        "inherits; the pass table lists it.");
+        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow pass runs first whatever the order of the code. What it cannot derive is the state a pass inherits; the pass table lists it.");
 }
 
 void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {

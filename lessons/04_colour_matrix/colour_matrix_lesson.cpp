@@ -20,6 +20,15 @@ namespace lesson04 {
 
 using namespace fx;
 
+namespace {
+
+// The `channel_order` choices: output (r, g, b) takes these input channels.
+const std::vector<TableChoice<std::array<int, 3>>::Option> kChannelOrders = {
+    {"rgb", {0, 1, 2}}, {"rbg", {0, 2, 1}}, {"grb", {1, 0, 2}},
+    {"gbr", {1, 2, 0}}, {"brg", {2, 0, 1}}, {"bgr", {2, 1, 0}}};
+
+}  // namespace
+
 class ColourMatrixLesson final : public Lesson {
 public:
     std::vector<std::string> steps() const override;
@@ -47,10 +56,10 @@ public:
 private:
     // Parameters.
     int preset_ = Invert;
-    float amount_ = 1.0f;
+    float amount_{};  // from postEffects.colorMatrix.amount: declareParams sets the setting's default
     float saturation_ = 1.8f;
     float hueDegrees_ = 120.0f;
-    int channelOrder_ = 3;  // "gbr"
+    TableChoice<std::array<int, 3>> channelOrder_{kChannelOrders, "gbr"};
     float brightness_ = 0.1f;
     float contrast_ = 1.4f;
     bool splitView_ = true;
@@ -69,10 +78,6 @@ private:
 };
 
 namespace {
-
-// The `channel_order` choices: output (r, g, b) takes these input channels.
-const std::array<std::array<int, 3>, 6> kChannelOrders{
-    {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
 
 std::string vec3Text(const glm::vec3& v) {
     char text[96];
@@ -127,7 +132,7 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
                   "Preset hue_rotation: degrees around the grey axis")
         .inSteps(affine);
     params
-        .addChoice("channel_order", &channelOrder_, {"rgb", "rbg", "grb", "gbr", "brg", "bgr"},
+        .addChoice("channel_order", &channelOrder_,
                    "Preset channel_swap: which input channels become r, g and b")
         .inSteps(affine);
     params
@@ -155,7 +160,7 @@ ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
         case HueRotation:
             return ColourTransform::hueRotation(hueDegrees_);
         case ChannelSwap:
-            return ColourTransform::channelSwap(kChannelOrders[std::size_t(std::clamp(channelOrder_, 0, 5))]);
+            return ColourTransform::channelSwap(*channelOrder_);
         case BrightnessContrast:
             return ColourTransform::brightnessContrast(brightness_, contrast_);
         case Invert:

@@ -36,11 +36,12 @@ public:
     RadialBlurParams paramsForStep(int step) const;
 
 private:
-    // Parameters (the chapter's defaults).
-    float centreX_ = 0.5f, centreY_ = 0.5f;
-    float length_ = 0.02f;
-    float start_ = 0.2f;
-    int samples_ = 8;
+    // Parameters, each from a postEffects.radialBlur setting: declareParams sets the setting's default
+    // (the chapter's values, docs/scene-format.md).
+    float centreX_{}, centreY_{};
+    float length_{};
+    float start_{};
+    int samples_{};
 
     Gpu<HdrScenePass> scenePass_;
     Gpu<RadialBlur> blur_;

@@ -27,6 +27,37 @@ namespace lesson06 {
 
 using namespace fx;
 
+namespace {
+
+// The chain's storage formats, as the `format` parameter names them. RGBA8 is there to show what
+// clipping costs: every level holds at most 1.
+std::vector<TableChoice<TextureFormat>::Option> chainFormats() {
+    std::vector<TableChoice<TextureFormat>::Option> options;
+    for (TextureFormat format : {TextureFormat::RGBA16F, TextureFormat::R11F_G11F_B10F,
+                                 TextureFormat::RGBA32F, TextureFormat::RGBA8})
+        options.push_back({std::string(toString(format)), format});
+    return options;
+}
+
+// Step 5's ways to end the chain (the `finish` parameter), cheapest last: where the composite's blur
+// happens, and whether the composite and the output transform are one pass.
+struct ChainEnd {
+    bool wideTop;  // the blur done at half size (BloomChainSettings::wideTop)
+    bool fused;    // the composite and the output transform in one pass
+};
+const std::vector<TableChoice<ChainEnd>::Option> kChainEnds = {{"full-taps", {false, false}},
+                                                               {"half-wide", {true, false}},
+                                                               {"full-taps-fused", {false, true}},
+                                                               {"half-wide-fused", {true, true}}};
+
+// Step 6's colour matrices (the `frame_matrix` parameter).
+const std::vector<TableChoice<ColourTransform>::Option> kFrameMatrices = {
+    {"identity", ColourTransform::identity()},
+    {"grayscale", ColourTransform::grayscale()},
+    {"sepia", ColourTransform::sepia()}};
+
+}  // namespace
+
 class BloomLesson final : public Lesson {
 public:
     std::vector<std::string> steps() const override;
@@ -39,7 +70,7 @@ public:
     void setBenchReference(bool on) override { benchReference_ = on; }
     void facts(Facts& out, const FrameInfo& frame) const override;
 
-    enum Step { EightBit, HalfFloat, Chapter000, Chapter001, Beyond, WholeFrameStep };
+    enum Step { EightBit, HalfFloat, ShaderEffectsChain, BloomChapterChain, Beyond, WholeFrameStep };
 
     // The chain a step runs (steps 1 and 2 declare step 4's, switched off, so the pass table lists it).
     BloomChainSettings chainFor(int step) const;
@@ -54,23 +85,25 @@ private:
     void wholeFrameFacts(Facts& out, const FrameInfo& frame) const;
     bool showsReference(int step) const { return step == Beyond && (reference_ || benchReference_); }
 
-    // Parameters (the chapters' values).
-    float threshold_ = 1.0f;
-    float knee_ = 0.5f;
-    float intensity_ = 2.0f;   // the Shader effects chapter's intensity; step 5's glow strength
+    // Parameters. Those from a scene setting (postEffects.bloom, postEffects.toneMap) start at the
+    // setting's default, which declareParams sets; the others at the chapters' values.
+    float threshold_{};
+    float knee_{};
+    float intensity_{};        // the Shader effects chapter's intensity; step 5's glow strength
     float bloomScale_ = 2.0f;  // the Bloom chapter's (Exercise 01: 1.0)
-    int levels_ = 6;
+    int levels_{};
     float downOffset_ = 0.75f;
     float upOffset_ = 0.5f;
-    int format_ = 0;  // index into kChainFormats
+    TableChoice<TextureFormat> format_{chainFormats(), "RGBA16F"};
     bool karis_ = true;
-    int finish_ = 3;  // step 5's way to end the chain (half-wide-fused): kFinishNames in bloom_lesson.cpp
-    Choice<ToneCurve> toneCurve_{ToneCurve::filmic};
-    float exposure_ = 1.0f;
+    TableChoice<ChainEnd> finish_{kChainEnds, "half-wide-fused"};  // step 5's way to end the chain
+    Choice<ToneCurve> toneCurve_;
+    float exposure_{};
     bool reference_ = false;
     bool benchReference_ = false;
-    int frameOrder_ = 0;   // step 6: index into effectOrders(), 0 the chapter's
-    int frameMatrix_ = 1;  // step 6: identity, grayscale, sepia
+    TableChoice<EffectOrder> frameOrder_{effectOrders(),
+                                         effectOrders().front().name};       // step 6: the chapter's
+    TableChoice<ColourTransform> frameMatrix_{kFrameMatrices, "grayscale"};  // step 6
 
     Gpu<HdrScenePass> scenePass_;
     Gpu<BloomChain> chain_;
@@ -86,27 +119,6 @@ private:
 };
 
 namespace {
-
-// The chain's storage formats, as the `format` parameter names them. RGBA8 is there to show what
-// clipping costs: every level holds at most 1.
-const TextureFormat kChainFormats[] = {TextureFormat::RGBA16F, TextureFormat::R11F_G11F_B10F,
-                                       TextureFormat::RGBA32F, TextureFormat::RGBA8};
-
-std::vector<std::string> chainFormatNames() {
-    std::vector<std::string> names;
-    for (TextureFormat format : kChainFormats) names.emplace_back(toString(format));
-    return names;
-}
-
-// Step 5's ways to end the chain (the `finish` parameter), cheapest last: where the composite's blur
-// happens, and whether the composite and the output transform are one pass.
-const char* const kFinishNames[] = {"full-taps", "half-wide", "full-taps-fused", "half-wide-fused"};
-bool wideTop(int finish) {
-    return finish == 1 || finish == 3;
-}
-bool fused(int finish) {
-    return finish >= 2;
-}
 
 std::string sizesText(const std::vector<BloomLevel>& levels) {
     std::string text;
@@ -147,19 +159,19 @@ std::vector<std::string> BloomLesson::steps() const {
 
 void BloomLesson::declareParams(ParamSet& params) {
     // The steps with a bloom chain (steps 1 and 2 compare the scene's formats before there is one).
-    const std::vector<int> chainSteps = {Chapter000, Chapter001, Beyond, WholeFrameStep};
+    const std::vector<int> chainSteps = {ShaderEffectsChain, BloomChapterChain, Beyond, WholeFrameStep};
     params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5")
         .inSteps(chainSteps);
     params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
     params
-        .addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
-                    "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright "
-                    "part, for any level count")
-        .inSteps({Chapter000, Beyond, WholeFrameStep});
+        .addSetting(
+            "intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
+            "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright part, for any level count")
+        .inSteps({ShaderEffectsChain, Beyond, WholeFrameStep});
     params
         .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
                   "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)")
-        .inSteps({Chapter001});
+        .inSteps({BloomChapterChain});
     Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
                                       "Steps 3 to 5 (fewer when the window is too small)");
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
@@ -168,14 +180,13 @@ void BloomLesson::declareParams(ParamSet& params) {
         .addFloat(
             "down_offset", &downOffset_, 0.0f, 2.0f,
             "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)")
-        .inSteps({Chapter001, Beyond});
+        .inSteps({BloomChapterChain, Beyond});
     params
         .addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
                   "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)")
-        .inSteps({Chapter001, Beyond});
-    Param& format =
-        params.addChoice("format", &format_, chainFormatNames(),
-                         "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
+        .inSteps({BloomChapterChain, Beyond});
+    Param& format = params.addChoice(
+        "format", &format_, "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
     // The other sweeps hold the format at the one step 5 uses (RGBA16F): the error of every row is
     // measured against the Gaussian reference, not against another format.
     format.knob = Knob{{0, 1, 2, 3}, 0, "format"};
@@ -183,10 +194,8 @@ void BloomLesson::declareParams(ParamSet& params) {
     params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)")
         .inSteps({Beyond});
     Param& finish = params.addChoice(
-        "finish", &finish_, std::vector<std::string>(std::begin(kFinishNames), std::end(kFinishNames)),
-        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at "
-        "every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the "
-        "composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
+        "finish", &finish_,
+        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
     finish.inSteps({Beyond});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5")
@@ -196,49 +205,45 @@ void BloomLesson::declareParams(ParamSet& params) {
     params
         .addBool(
             "reference", &reference_,
-            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level "
-            "(slow)")
+            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level (slow)")
         .inSteps({Beyond});
-    std::vector<std::string> orders;
-    for (const EffectOrder& o : effectOrders()) orders.push_back(o.name);
     params
-        .addChoice("frame_order", &frameOrder_, orders,
-                   "Step 6: the order of the post effects (the first is the chapter's: the colour matrix "
-                   "greys the glow)")
+        .addChoice(
+            "frame_order", &frameOrder_,
+            "Step 6: the order of the post effects (the first is the chapter's: the colour matrix greys the glow)")
         .inSteps({WholeFrameStep});
-    params
-        .addChoice("frame_matrix", &frameMatrix_, {"identity", "grayscale", "sepia"},
-                   "Step 6: the colour matrix the whole frame applies")
+    params.addChoice("frame_matrix", &frameMatrix_, "Step 6: the colour matrix the whole frame applies")
         .inSteps({WholeFrameStep});
 }
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
-    TextureFormat format = kChainFormats[std::clamp(format_, 0, 3)];
-    if (step == Chapter000 || step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
-        BloomChainSettings s = chapter000Bloom(threshold_, intensity_, levels_);
+    TextureFormat format = *format_;
+    if (step == ShaderEffectsChain ||
+        step == WholeFrameStep) {  // the whole frame is the Shader effects chapter's
+        BloomChainSettings s = shaderEffectsChain(threshold_, intensity_, levels_);
         s.format = format;
         return s;
     }
-    BloomChainSettings s = chapter001Bloom(threshold_, levels_);
+    BloomChainSettings s = bloomChapterChain(threshold_, levels_);
     s.downOffset = downOffset_;
     s.upOffset = upOffset_;
     s.format = format;
     if (step == Beyond) {
         s.knee = knee_;
         s.karisAverage = karis_;
-        s.wideTop = wideTop(finish_);
+        s.wideTop = finish_->wideTop;
     }
     return s;
 }
 
 float BloomLesson::compositeScale(int step, int levels) const {
-    if (step == Chapter000 || step == WholeFrameStep) return chapter000CompositeScale(levels);
+    if (step == ShaderEffectsChain || step == WholeFrameStep) return averagedCompositeScale(levels);
     if (step == Beyond) return normalisedCompositeScale(intensity_, levels);
     return bloomScale_;
 }
 
 float BloomLesson::uniformGain(int step, Size2D size) const {
-    if (step < Chapter000) return 0.0f;
+    if (step < ShaderEffectsChain) return 0.0f;
     BloomChainSettings s = chainFor(step);
     int n = int(bloomLevels(size, firstLevelDivisor(s.filters), s.levels).size());
     if (n == 0) return 0.0f;
@@ -250,10 +255,8 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     const int step = frame.step;
     if (step == WholeFrameStep) {
         WholeFrameSettings w;
-        w.order = frameOrder_;
-        const ColourTransform matrices[] = {ColourTransform::identity(), ColourTransform::grayscale(),
-                                            ColourTransform::sepia()};
-        w.matrix = matrices[std::clamp(frameMatrix_, 0, 2)];
+        w.order = *frameOrder_;
+        w.matrix = *frameMatrix_;
         w.chain = chainFor(step);
         int n =
             int(bloomLevels(graph.outputSize(), firstLevelDivisor(w.chain.filters), w.chain.levels).size());
@@ -269,12 +272,12 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 
     // Steps 1 and 2 come before bloom: step 4's chain is declared switched off, so the pass table
     // shows what is still to come.
-    const int chainStep = step < Chapter000 ? Chapter001 : step;
+    const int chainStep = step < ShaderEffectsChain ? BloomChapterChain : step;
     BloomChainSettings settings = chainFor(chainStep);
     // Every bloom pass is in bloomGroup_: without bloom in the scene the graph marks them all not
     // called for, with the scene's reason, and the picture is the scene alone.
     const bool calledFor = !lacks(graph, SceneFeature::bloom);
-    const bool runs = calledFor && step >= Chapter000;
+    const bool runs = calledFor && step >= ShaderEffectsChain;
     const std::string off = cat("disabled in step ", step + 1, ": no bloom yet");
     bool presented = false;  // the fused composite wrote the output
     {
@@ -307,7 +310,7 @@ void BloomLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
                     DeclaredPass result = composite_->declare(graph, hdr.color, d.glow(), c);
                     for (Pass* p : d.passes) p->disable(off);  // a scene without bloom has said why already
                     result.pass.disable(off);
-                } else if (step == Beyond && fused(finish_)) {
+                } else if (step == Beyond && finish_->fused) {
                     // The composite and the output transform in one pass: present_ has nothing left to do.
                     composite_->declarePresented(graph, hdr.color, d.glow(), c, curve, exposure);
                     presented = true;
@@ -339,7 +342,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
         drawWholeFramePanel(frame);
         return;
     }
-    if (step < Chapter000) {
+    if (step < ShaderEffectsChain) {
         ImGui::TextWrapped(
             "Inspect scene.color and look at the range: %s",
             step == EightBit
@@ -349,8 +352,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
     }
     if (flicker_->stats().measured && !showsReference(step)) {
         ImGui::TextWrapped(
-            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last "
-            "frame's|.%s",
+            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last frame's|.%s",
             step == Beyond ? " Switch karis off to see the firefly flicker." : "");
     }
 }
@@ -358,7 +360,7 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
 void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     if (step == WholeFrameStep) wholeFrameFacts(out, frame);
-    if (step < Chapter000) {
+    if (step < ShaderEffectsChain) {
         out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
         out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3),
                 "the scene's brightest emitters");
@@ -375,7 +377,7 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (step == Beyond) {
         out.add("toneCurve", toString(*toneCurve_), "tone curve");
         out.add("reference", showsReference(step), "showing the reference Gaussian");
-        out.add("finish", kFinishNames[std::clamp(finish_, 0, 3)], "how the chain ends");
+        out.add("finish", finish_.name(), "how the chain ends");
     }
     const BloomFlicker::Stats& f = flicker_->stats();
     if (f.measured && !showsReference(step) && step != WholeFrameStep) {
@@ -414,10 +416,8 @@ void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
 }
 
 void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
-    const EffectOrder& order = effectOrders()[std::size_t(std::clamp(frameOrder_, 0, 5))];
-    out.add("frameOrder", order.name, "post effects, in order");
-    const char* matrices[] = {"identity", "grayscale", "sepia"};
-    out.add("frameMatrix", matrices[std::clamp(frameMatrix_, 0, 2)], "colour matrix");
+    out.add("frameOrder", frameOrder_.name(), "post effects, in order");
+    out.add("frameMatrix", frameMatrix_.name(), "colour matrix");
     std::vector<std::string> passes;
     for (const ChapterFrameRow& row : chapterFrameTable()) passes.push_back(row.pass);
     out.check("chapterTableOrder", joinedNames(passes));

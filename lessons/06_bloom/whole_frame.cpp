@@ -1,6 +1,5 @@
 #include "whole_frame.hpp"
 
-#include <algorithm>
 #include <cctype>
 
 #include "base/log.hpp"
@@ -9,9 +8,9 @@ namespace lesson06 {
 
 using namespace fx;
 
-const std::vector<EffectOrder>& effectOrders() {
+const std::vector<TableChoice<EffectOrder>::Option>& effectOrders() {
     using E = FrameEffect;
-    static const std::vector<EffectOrder> orders = {
+    static const std::vector<TableChoice<EffectOrder>::Option> orders = {
         {"bloom, radial blur, colour matrix", {E::bloom, E::radialBlur, E::colourMatrix}},
         {"colour matrix, then bloom, radial blur", {E::colourMatrix, E::bloom, E::radialBlur}},
         {"radial blur, colour matrix, then bloom", {E::radialBlur, E::colourMatrix, E::bloom}},
@@ -95,8 +94,7 @@ void WholeFrame::declare(FrameGraph& graph, const FrameInfo& frame, const WholeF
     BloomChain::Declared glow = chain.declare(graph, hdr.color, settings.chain);
     grading_.setTransform(settings.matrix);
     TextureHandle current = hdr.color;
-    const EffectOrder& order = effectOrders()[std::size_t(std::clamp(settings.order, 0, 5))];
-    for (FrameEffect effect : order.effects) {
+    for (FrameEffect effect : settings.order) {
         switch (effect) {
             case FrameEffect::bloom:
                 if (!glow.empty()) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/lesson.hpp"
+#include "base/params.hpp"
 #include "effects/bloom/bloom_chain.hpp"
 #include "effects/bloom/bloom_composite.hpp"
 #include "effects/post/colour_matrix.hpp"
@@ -24,12 +25,9 @@ namespace lesson06 {
 
 enum class FrameEffect { bloom, radialBlur, colourMatrix };
 
-struct EffectOrder {
-    std::string name;  // "bloom, radial blur, colour matrix"
-    std::array<FrameEffect, 3> effects;
-};
-// Every order of the three; the first is the chapter's.
-const std::vector<EffectOrder>& effectOrders();
+using EffectOrder = std::array<FrameEffect, 3>;
+// Every order of the three, named ("bloom, radial blur, colour matrix"); the first is the chapter's.
+const std::vector<fx::TableChoice<EffectOrder>::Option>& effectOrders();
 
 // One row of the chapter's final per-frame pipeline table, with the fxlab pass that does its work
 // (a pass name, or the start of one: "bloom down" covers "bloom down 1" to "bloom down 5").
@@ -46,7 +44,7 @@ const std::vector<ChapterFrameRow>& chapterFrameTable();
 bool followsChapterTable(const std::vector<std::string>& executed, std::string* why);
 
 struct WholeFrameSettings {
-    int order = 0;  // index into effectOrders()
+    EffectOrder order = effectOrders().front().value;
     fx::ColourTransform matrix = fx::ColourTransform::grayscale();
     fx::BloomChainSettings chain;
     float compositeScale = 1.0f;

@@ -242,11 +242,11 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
     TextureHandle shown = hdr.color;
     {
         PassGroup::Scope in(graph, bloomGroup_);
-        BloomChainSettings settings = chapter000Bloom(threshold_, intensity_, 6);
+        BloomChainSettings settings = shaderEffectsChain(threshold_, intensity_, 6);
         BloomChain::Declared d = chain_->declare(graph, hdr.color, settings);
         if (!d.empty()) {
             BloomCompositeSettings c{settings.filters, settings.upOffset,
-                                     chapter000CompositeScale(int(d.levels.size()))};
+                                     averagedCompositeScale(int(d.levels.size()))};
             DeclaredPass result = bloom_->declare(graph, hdr.color, d.glow(), c);
             if (!lacks(graph, SceneFeature::bloom)) shown = result.output;
         }

@@ -45,8 +45,8 @@ TEST_F(BloomAlpha, EveryLevelAndTheResultHoldAlphaOne) {
     BloomChainSettings beyond = beyondChapters(6);
     beyond.knee = 0.5f;
     const std::pair<const char*, BloomChainSettings> chains[] = {
-        {"Shader effects", chapter000Bloom(1.0f, 2.0f, 6)},
-        {"Bloom chapter", chapter001Bloom(1.0f, 6)},
+        {"Shader effects", shaderEffectsChain(1.0f, 2.0f, 6)},
+        {"Bloom chapter", bloomChapterChain(1.0f, 6)},
         {"beyond", beyond}};
     for (const auto& [name, settings] : chains) {
         int levels = 0;
@@ -98,7 +98,7 @@ TEST_F(BloomAlpha, FlickerMapHoldsAlphaOne) {
     ASSERT_TRUE(programsBuilt());
     FloatImage out =
         runner.run(translucentOrange(w, h), TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle in) {
-            BloomChain::Declared d = effects.chain.declare(g, in, chapter001Bloom(1.0f, 3));
+            BloomChain::Declared d = effects.chain.declare(g, in, bloomChapterChain(1.0f, 3));
             return flicker.declare(g, d.glow(), d.levels[0].size, true).output;
         });
     EXPECT_TRUE(everyAlphaIs(out, 1.0f)) << "bloom.flicker " << runner.lastErrors;

@@ -70,7 +70,7 @@ TEST_F(BloomBrightPass, ShaderEffectsHighPassScalesEveryChannelByTheBrightestCha
     // The first chapter's test table, threshold 1, intensity 2: (2, 1, 0) has ratio 1/2, so E x 2 is
     // (2, 1, 0) again; (3, 0.8, 0.2) has ratio 2/3: E = (2, 0.5333, 0.1333), x 2 = (4, 1.0667, 0.2667).
     // Subtracting the threshold per channel would give (2, 0, 0) and (4, 0, 0).
-    BloomChainSettings s = chapter000Bloom(1.0f, 2.0f, 1);
+    BloomChainSettings s = shaderEffectsChain(1.0f, 2.0f, 1);
     EXPECT_TRUE(everyTexelIs(brightPass(s, {2.0f, 1.0f, 0.0f}), {2.0f, 1.0f, 0.0f})) << runner.lastErrors;
     EXPECT_TRUE(everyTexelIs(brightPass(s, {3.0f, 0.8f, 0.2f}), {4.0f, 3.2f / 3.0f, 0.8f / 3.0f}));
 }
@@ -79,7 +79,7 @@ TEST_F(BloomBrightPass, BloomChapterBrightPassKeepsTheHue) {
     // The Bloom chapter's worked example: orange (2, 0.5, 0) has brightness 2, ratio 0.5, and keeps its
     // green: (1, 0.25, 0), where per-channel subtraction loses it: (1, 0, 0). The first chapter's
     // (3, 0.8, 0.2) gives the same E with this chain's filters: (2, 0.5333, 0.1333).
-    BloomChainSettings s = chapter001Bloom(1.0f, 1);
+    BloomChainSettings s = bloomChapterChain(1.0f, 1);
     EXPECT_TRUE(everyTexelIs(brightPass(s, {2.0f, 0.5f, 0.0f}), {1.0f, 0.25f, 0.0f})) << runner.lastErrors;
     EXPECT_TRUE(everyTexelIs(brightPass(s, {3.0f, 0.8f, 0.2f}), {2.0f, 1.6f / 3.0f, 0.4f / 3.0f}));
 }
@@ -87,7 +87,7 @@ TEST_F(BloomBrightPass, BloomChapterBrightPassKeepsTheHue) {
 TEST_F(BloomBrightPass, SaturatedBlueBloomsWhileGreyBelowTheThresholdDoesNot) {
     // Bloom, hard case 6: brightness is the largest channel, not luminance. Pure blue (0, 0, 1.2) has a
     // Rec.709 luminance of 0.09 but passes the threshold 1 by 0.2; grey 0.9 (luminance 0.9) does not.
-    for (BloomChainSettings s : {chapter000Bloom(1.0f, 2.0f, 1), chapter001Bloom(1.0f, 1)}) {
+    for (BloomChainSettings s : {shaderEffectsChain(1.0f, 2.0f, 1), bloomChapterChain(1.0f, 1)}) {
         float intensity = s.extractScale;
         EXPECT_TRUE(everyTexelIs(brightPass(s, {0.0f, 0.0f, 1.2f}), {0.0f, 0.0f, 0.2f * intensity}))
             << runner.lastErrors;
@@ -100,7 +100,7 @@ TEST_F(BloomBrightPass, ThresholdZeroKeepsTheWholeColourAndBlackStaysBlack) {
     // b = 0 and must come out 0. A knee is a fraction of the threshold, so with threshold 0 it changes
     // nothing either (an absolute knee of 0.5 would lift (0.3, 0.1, 0.05)).
     for (float knee : {0.0f, 0.5f}) {
-        BloomChainSettings s = chapter001Bloom(0.0f, 1);
+        BloomChainSettings s = bloomChapterChain(0.0f, 1);
         s.knee = knee;
         EXPECT_TRUE(everyTexelIs(brightPass(s, {2.0f, 0.5f, 0.0f}), {2.0f, 0.5f, 0.0f})) << runner.lastErrors;
         EXPECT_TRUE(everyTexelIs(brightPass(s, {0.3f, 0.1f, 0.05f}), {0.3f, 0.1f, 0.05f})) << "knee " << knee;
@@ -111,7 +111,7 @@ TEST_F(BloomBrightPass, ThresholdZeroKeepsTheWholeColourAndBlackStaysBlack) {
 TEST_F(BloomBrightPass, HardCutIsContinuousAtTheThreshold) {
     // Bloom, hard case 5: just above the threshold the ratio is about 0, so a surface that brightens
     // past it fades in from nothing (there is a kink in the slope, no jump in the value).
-    BloomChainSettings s = chapter001Bloom(1.0f, 1);
+    BloomChainSettings s = bloomChapterChain(1.0f, 1);
     EXPECT_TRUE(everyTexelIs(brightPass(s, {1.0f, 0.5f, 0.0f}), {0.0f, 0.0f, 0.0f})) << runner.lastErrors;
     EXPECT_TRUE(everyTexelIs(brightPass(s, {1.001f, 0.5f, 0.0f}), {0.001f, 0.0005f / 1.001f, 0.0f}, 1e-5f));
 }
@@ -121,7 +121,7 @@ TEST_F(BloomBrightPass, SoftKneeMeetsTheHardCutWithoutAJumpAndKeepsTheHue) {
     // that range in steps of 0.02 with an orange (b, b/2, b/4), the amount follows the knee, moves at
     // most one step per step (the slope never exceeds the hard cut's 1: no jump anywhere, the threshold
     // included), and the other channels keep their proportion to red.
-    BloomChainSettings s = chapter001Bloom(1.0f, 1);
+    BloomChainSettings s = bloomChapterChain(1.0f, 1);
     s.knee = 0.5f;
     const float k = s.knee * s.threshold, step = 0.02f;
     float previous = 0.0f;
@@ -147,7 +147,7 @@ TEST_F(BloomBrightPass, ColouredAreaComesBackWithItsHueThroughTheWholeChain) {
     // subtraction it would come back (14, 0.5, 0): a red glow around an orange light.
     EffectRunner big(128, 64);
     FloatImage in = makeImage(128, 64, [](int, int) { return std::array<float, 4>{2.0f, 0.5f, 0.0f, 1.0f}; });
-    FloatImage out = runBloom(big, effects, in, TextureFormat::RGBA16F, chapter001Bloom(1.0f, 6), 2.0f);
+    FloatImage out = runBloom(big, effects, in, TextureFormat::RGBA16F, bloomChapterChain(1.0f, 6), 2.0f);
     EXPECT_TRUE(everyTexelIs(out, {14.0f, 3.5f, 0.0f}, 14.0f * 0.005f)) << big.lastErrors;
     // The reference Gaussian glow shares the bright pass: 4 levels at weight 1/4 add E once.
     FloatImage ref = runReference(big, effects, in, beyondChapters(4), {128, 64}, 0.25f);
@@ -161,9 +161,9 @@ TEST_F(BloomBrightPass, ANegativeThresholdBloomsAsThresholdZeroWithoutNanOrNegat
     // darkest most. Clamped, each chain's bright pass and lesson 06 step 3's whole chain give what
     // threshold 0 gives: finite, never negative.
     const Rgb colours[] = {{0.0f, 0.0f, 0.0f}, {1e-4f, 0.0f, 0.0f}, {0.3f, 0.1f, 0.05f}, {2.0f, 0.5f, 0.0f}};
-    BloomChainSettings knee = chapter001Bloom(-1.0f, 1);
+    BloomChainSettings knee = bloomChapterChain(-1.0f, 1);
     knee.knee = 0.5f;
-    for (BloomChainSettings s : {chapter000Bloom(-1.0f, 2.0f, 1), chapter001Bloom(-1.0f, 1), knee}) {
+    for (BloomChainSettings s : {shaderEffectsChain(-1.0f, 2.0f, 1), bloomChapterChain(-1.0f, 1), knee}) {
         for (const Rgb& c : colours) {
             Rgb expected = {c[0] * s.extractScale, c[1] * s.extractScale, c[2] * s.extractScale};
             EXPECT_TRUE(everyTexelIs(brightPass(s, c), expected, 1e-4f * s.extractScale))
@@ -179,8 +179,8 @@ TEST_F(BloomBrightPass, ANegativeThresholdBloomsAsThresholdZeroWithoutNanOrNegat
         return std::array<float, 4>{v, 0.5f * v, 0.25f * v, 1.0f};
     });
     auto stepThree = [&](float threshold) {
-        return runBloom(big, effects, ramp, TextureFormat::RGBA16F, chapter000Bloom(threshold, 2.0f, 6),
-                        chapter000CompositeScale(6));
+        return runBloom(big, effects, ramp, TextureFormat::RGBA16F, shaderEffectsChain(threshold, 2.0f, 6),
+                        averagedCompositeScale(6));
     };
     FloatImage negative = stepThree(-1.0f), zero = stepThree(0.0f);
     ASSERT_FALSE(negative.empty()) << big.lastErrors;

@@ -65,7 +65,7 @@ double relativeFlicker(const std::vector<double>& energy) {
 
 TEST_F(BloomFlickerTest, KarisAverageSteadiesAMovingFirefly) {
     EffectRunner runner(kWidth, kHeight);
-    BloomChainSettings plain = chapter001Bloom(1.0f, 6);
+    BloomChainSettings plain = bloomChapterChain(1.0f, 6);
     BloomChainSettings karis = plain;
     karis.karisAverage = true;
     std::vector<double> withoutKaris, withKaris;
@@ -105,7 +105,7 @@ TEST_F(BloomFlickerTest, FlickerPassWritesTheChangeAndMeasuresTheEnergy) {
     EffectRunner runner(kWidth, kHeight);
     BloomFlicker flicker;
     ASSERT_TRUE(programsBuilt());
-    BloomChainSettings plain = chapter001Bloom(1.0f, 6);
+    BloomChainSettings plain = bloomChapterChain(1.0f, 6);
     // Two frames in which the dot covers a different number of pixels, so the glow really changes.
     auto covered = [](const FloatImage& image) {
         return std::count(image.texels.begin(), image.texels.end(), 500.0f);

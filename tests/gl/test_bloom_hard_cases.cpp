@@ -3,8 +3,8 @@
 // added; negative colours; window sizes where levels would be smaller than a texel.
 #include <cmath>
 
+#include "effects/bloom/bloom_levels.hpp"
 #include "gl_test.hpp"
-#include "render/bloom_levels.hpp"
 #include "test_bloom_harness.hpp"
 
 using namespace fx;
@@ -31,8 +31,8 @@ struct Chain {
 std::vector<Chain> lessonChains() {
     BloomChainSettings beyond = beyondChapters(6);
     beyond.knee = 0.5f;
-    return {{"Shader effects", chapter000Bloom(1.0f, 2.0f, 6), chapter000CompositeScale(6)},
-            {"Bloom chapter", chapter001Bloom(1.0f, 6), 2.0f},
+    return {{"Shader effects", shaderEffectsChain(1.0f, 2.0f, 6), averagedCompositeScale(6)},
+            {"Bloom chapter", bloomChapterChain(1.0f, 6), 2.0f},
             {"beyond", beyond, normalisedCompositeScale(2.0f, 6)}};
 }
 
@@ -114,7 +114,7 @@ TEST_F(BloomHardCases, AccumulationThatWouldOverflowIsClampedFirst) {
     // The bright pass keeps at most kBloomMaxBright and every sum stays below kBloomMaxValue.
     EffectRunner runner(128, 64);
     for (TextureFormat format : {TextureFormat::RGBA16F, TextureFormat::R11F_G11F_B10F}) {
-        BloomChainSettings s = chapter001Bloom(1.0f, 8);
+        BloomChainSettings s = bloomChapterChain(1.0f, 8);
         s.format = format;
         FloatImage in = uniformGrey(128, 64, 30000.0f);
         FloatImage glow = runBloom(runner, effects, in, TextureFormat::RGBA16F, s, 4.0f, "glow");

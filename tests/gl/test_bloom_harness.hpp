@@ -63,7 +63,7 @@ inline FloatImage uniformGrey(int width, int height, float v) {
 
 // The step-5 chain of lesson 06 without the soft knee (so the chapters' invariant applies).
 inline BloomChainSettings beyondChapters(int levels = 6) {
-    BloomChainSettings s = chapter001Bloom(1.0f, levels);
+    BloomChainSettings s = bloomChapterChain(1.0f, levels);
     s.karisAverage = true;
     return s;
 }

@@ -58,7 +58,7 @@ TEST_F(BloomOnGl, ShaderEffectsChapterUniformGreyGainsIntensityTimesItsBrightPar
         int levels = 0;
         FloatImage out =
             runBloom(runner, effects, uniformGrey(128, 64, v), TextureFormat::RGBA16F,
-                     chapter000Bloom(1.0f, 2.0f, 6), chapter000CompositeScale(5), "result", &levels);
+                     shaderEffectsChain(1.0f, 2.0f, 6), averagedCompositeScale(5), "result", &levels);
         ASSERT_FALSE(out.empty()) << runner.lastErrors;
         // A 128x64 output has room for 5 quarter-size levels (32x16 .. 2x1); the composite takes 1/5.
         ASSERT_EQ(levels, 5);
@@ -74,7 +74,7 @@ TEST_F(BloomOnGl, BloomChapterUniformGreyGainsLevelsTimesBloomScale) {
     for (float v : {0.5f, 1.5f, 4.0f}) {
         int levels = 0;
         FloatImage out = runBloom(runner, effects, uniformGrey(128, 64, v), TextureFormat::RGBA16F,
-                                  chapter001Bloom(1.0f, 6), 2.0f, "result", &levels);
+                                  bloomChapterChain(1.0f, 6), 2.0f, "result", &levels);
         ASSERT_FALSE(out.empty()) << runner.lastErrors;
         ASSERT_EQ(levels, 6);  // 64x32 .. 2x1
         float expected = v + 12.0f * std::max(v - 1.0f, 0.0f);
@@ -112,7 +112,8 @@ TEST_F(BloomOnGl, PointSourceSpreadsAsTheBloomChapterSays) {
     EffectRunner runner(1280, 720);
     const float v = 101.0f;  // bright part 100 per texel
     FloatImage input = spot(1280, 720, 640, 360, 2, v);
-    FloatImage out = runBloom(runner, effects, input, TextureFormat::RGBA32F, chapter001Bloom(1.0f, 6), 2.0f);
+    FloatImage out =
+        runBloom(runner, effects, input, TextureFormat::RGBA32F, bloomChapterChain(1.0f, 6), 2.0f);
     ASSERT_FALSE(out.empty()) << runner.lastErrors;
     double gain = energy(out, runner.storedInput) / (4.0 * (v - 1.0f));
     EXPECT_NEAR(gain, 12.97, 12.97 * 0.15);
@@ -137,8 +138,8 @@ TEST_F(BloomOnGl, NormalisedGlowEnergyDoesNotGrowWithTheLevelCount) {
     double summed[2], normalised[2];
     const int counts[2] = {3, 8};
     for (int i = 0; i < 2; ++i) {
-        FloatImage plain =
-            runBloom(runner, effects, input, TextureFormat::RGBA32F, chapter001Bloom(1.0f, counts[i]), 1.0f);
+        FloatImage plain = runBloom(runner, effects, input, TextureFormat::RGBA32F,
+                                    bloomChapterChain(1.0f, counts[i]), 1.0f);
         summed[i] = energy(plain, runner.storedInput) / (64.0 * (v - 1.0f));
         FloatImage out = runBloom(runner, effects, input, TextureFormat::RGBA32F, beyondChapters(counts[i]),
                                   normalisedCompositeScale(1.0f, counts[i]));

@@ -148,7 +148,7 @@ TEST_F(BloomKernels, ShaderEffectsHighPassAtFourToOneWeighsSixteenTexelsByOneSix
             blocks.push_back({1 + 3 * px, 1 + 3 * py});
             at.push_back({4 * blocks.back().first + px, 4 * blocks.back().second + py});
         }
-    BloomChainSettings s = chapter000Bloom(0.0f, 1.0f, 1);
+    BloomChainSettings s = shaderEffectsChain(0.0f, 1.0f, 1);
     s.format = TextureFormat::RGBA32F;
     EffectRunner runner(w, h);
     FloatImage level0 = runChain(runner, effects, impulses(w, h, at, 16.0f), TextureFormat::RGBA32F, s,
@@ -165,7 +165,7 @@ TEST_F(BloomKernels, ShaderEffectsDownsampleAtTwoToOneWeighsInnerFiveThirtySecon
     // An impulse of 16 x 32 in the scene is an impulse of 32 in level 0 (the block average above); level
     // 1 then shows the kernel. Four runs put the impulse at the four parities of a level-0 texel, so
     // every one of the 16 weights is seen.
-    BloomChainSettings s = chapter000Bloom(0.0f, 1.0f, 2);
+    BloomChainSettings s = shaderEffectsChain(0.0f, 1.0f, 2);
     s.format = TextureFormat::RGBA32F;
     EffectRunner runner(64, 64);
     for (auto [lx, ly] : {std::pair{8, 8}, std::pair{9, 8}, std::pair{8, 9}, std::pair{9, 9}}) {
@@ -188,7 +188,7 @@ TEST_F(BloomKernels, BloomChapterBrightPassAndDownsampleAtTwoToOneAreTheOneSixty
     // The Bloom chapter's bright pass blurs with four taps at +-0.75 texel before the threshold (0
     // here): an impulse of 64 comes out as 9, 3, 3, 1 in the 2x2 level-0 texels around it, oriented by
     // its parity. Its downsample uses the same taps on level 0: level 1 is the binomial of level 0.
-    BloomChainSettings s = chapter001Bloom(0.0f, 2);
+    BloomChainSettings s = bloomChapterChain(0.0f, 2);
     s.format = TextureFormat::RGBA32F;
     EffectRunner runner(64, 64);
     for (auto at : {std::pair{32, 32}, std::pair{33, 32}, std::pair{32, 33}, std::pair{33, 33}}) {
@@ -212,8 +212,8 @@ TEST_F(BloomKernels, ShaderEffectsUpsampleAtTwoToOneReadsTwentyFourTexelsInASixB
     // the formula (multiples of 1/240, so an impulse of 240 reads back as integers, exact in RGBA16F).
     std::string errors;
     const std::pair<int, int> s{8, 8};
-    FloatImage out =
-        upsampleImpulse(effects, BloomFilters::chapter000, chapter000Bloom().upOffset, 16, s, 240.0f, errors);
+    FloatImage out = upsampleImpulse(effects, BloomFilters::shaderEffects, shaderEffectsChain().upOffset, 16,
+                                     s, 240.0f, errors);
     ASSERT_EQ(out.width, 32) << errors;
     for (auto phase : {std::pair{0, 0}, std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
         Footprint f = footprintOfPhase(out, s, phase, 240.0f);
@@ -244,8 +244,8 @@ TEST_F(BloomKernels, BloomChapterUpsampleAtTwoToOneIsTheChaptersMatrix) {
     const int matrix[4][4] = {{0, 1, 3, 0}, {1, 24, 34, 9}, {3, 34, 38, 17}, {0, 9, 17, 2}};
     std::string errors;
     const std::pair<int, int> s{8, 8};
-    FloatImage out =
-        upsampleImpulse(effects, BloomFilters::chapter001, chapter001Bloom().upOffset, 16, s, 192.0f, errors);
+    FloatImage out = upsampleImpulse(effects, BloomFilters::bloomChapter, bloomChapterChain().upOffset, 16, s,
+                                     192.0f, errors);
     ASSERT_EQ(out.width, 32) << errors;
     std::vector<int> mirrorsSeen;
     for (auto phase : {std::pair{0, 0}, std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {

@@ -290,7 +290,7 @@ TEST_F(FireChapter, AParticleStopsGlowingOnceAlphaTimesThreeIsBelowOne) {
         FloatImage scene = draw(system, {at(e, {0, 0, -10}, 1.0f - alpha)}, orthographic(-2, 2, -1, 1), 32,
                                 16, TextureFormat::RGBA16F);
         EXPECT_NEAR(scene.texel(16, 8, 0), 3.0f * alpha, 3e-3f);
-        BloomChainSettings settings = chapter000Bloom(1.0f, 2.0f, 6);
+        BloomChainSettings settings = shaderEffectsChain(1.0f, 2.0f, 6);
         settings.format = TextureFormat::RGBA32F;
         FloatImage bright = runChain(runner, effects, scene, TextureFormat::RGBA16F, settings,
                                      [](const BloomChain::Declared& d) { return d.down[0]; });

@@ -34,10 +34,10 @@ TEST_F(TrafficModelOnGl, TheBloomChainMovesFortyMegabytesAtTenEightyP) {
     Pass& scene = graph.addPass("scene").setTaps(2);
     TextureHandle hdr = scene.create("scene.color", {TextureSize::output(), TextureFormat::RGBA16F},
                                      TextureUsage::ColorAttachment);
-    BloomChainSettings settings = chapter001Bloom(1.0f, 6);
+    BloomChainSettings settings = bloomChapterChain(1.0f, 6);
     BloomChain::Declared d = chain.declare(graph, hdr, settings);
     ASSERT_EQ(d.levels.size(), 6u);
-    DeclaredPass glow = composite.declare(graph, hdr, d.glow(), {BloomFilters::chapter001, 0.5f, 1.0f});
+    DeclaredPass glow = composite.declare(graph, hdr, d.glow(), {BloomFilters::bloomChapter, 0.5f, 1.0f});
     graph.addPass("present").read(glow.output).writeColor(graph.output()).setTaps(1);
     ASSERT_TRUE(graph.compile());
 

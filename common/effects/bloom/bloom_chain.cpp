@@ -30,7 +30,7 @@ void BloomSampler::unbind() {
 
 namespace {
 
-const int kBloomChapterFilters = static_cast<int>(BloomFilters::chapter001);
+const int kBloomChapterFilters = static_cast<int>(BloomFilters::bloomChapter);
 
 const FullscreenPass& extractProgram(const FullscreenVariants& v, int filters, bool karis) {
     // Only the Bloom chapter's filter has a Karis average; the others build without one.

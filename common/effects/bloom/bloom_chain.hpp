@@ -12,20 +12,20 @@
 // own gives the same numbers and lets the inspector's chain strip show every level before (bloom.down[*]) and
 // after (bloom.up[*]) accumulation. The graph tracks whole textures, so every level is a texture.
 //
-// Sizes follow the output every frame (render/bloom_levels.hpp); a level below one texel is not made,
+// Sizes follow the output every frame (effects/bloom/bloom_levels.hpp); a level below one texel is not made,
 // and an output too small for even the first level declares nothing.
 //
 //   BloomChain chain;
-//   BloomChain::Declared d = chain.declare(graph, hdr.color, chapter001Bloom());
+//   BloomChain::Declared d = chain.declare(graph, hdr.color, bloomChapterChain());
 //   composite.declare(graph, hdr.color, d, ...);
 #include <string>
 #include <vector>
 
 #include "effects/bloom/bloom_bindings.hpp"
+#include "effects/bloom/bloom_levels.hpp"
 #include "effects/bloom/bloom_settings.hpp"
 #include "effects/post/fullscreen_pass.hpp"
 #include "effects/post/fullscreen_variants.hpp"
-#include "render/bloom_levels.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {

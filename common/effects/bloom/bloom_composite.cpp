@@ -5,7 +5,7 @@
 
 namespace fx {
 
-float chapter000CompositeScale(int levels) {
+float averagedCompositeScale(int levels) {
     return 1.0f / float(std::max(levels, 1));
 }
 

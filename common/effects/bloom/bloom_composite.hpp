@@ -8,7 +8,7 @@
 //   beyond:   scale intensity/N, so the glow's energy does not grow with the level count
 //
 //   BloomComposite composite;
-//   DeclaredPass result = composite.declare(graph, hdr.color, chain.glow(), {BloomFilters::chapter001,
+//   DeclaredPass result = composite.declare(graph, hdr.color, chain.glow(), {BloomFilters::bloomChapter,
 //   0.5f, 2.0f});
 #include <optional>
 
@@ -23,13 +23,15 @@ namespace fx {
 
 struct BloomCompositeSettings {
     // The upsample filter that enlarges the glow; nothing: the glow is already the output's size.
-    std::optional<BloomFilters> filters = BloomFilters::chapter001;
+    std::optional<BloomFilters> filters = BloomFilters::bloomChapter;
     float upOffset = 0.5f;  // texels of the glow
     float scale = 1.0f;
 };
 
-// How much each chapter's composite scales the glow of a chain of `levels` levels.
-float chapter000CompositeScale(int levels);                   // 1/N
+// How much a composite scales the glow of a chain of `levels` levels: 1/N averages the levels (the
+// Shader effects chapter's); intensity/N keeps a uniform area's gain for any level count (lesson 06's
+// step 5). The Bloom chapter's is its bloomScale, whatever N.
+float averagedCompositeScale(int levels);                     // 1/N
 float normalisedCompositeScale(float intensity, int levels);  // intensity/N
 
 class BloomComposite {

@@ -2,7 +2,7 @@
 // The reference glow the bench measures the chain against: what the chain approximates, computed
 // directly. The same bright part (threshold and knee, one texel at a time, full resolution), blurred
 // by one Gaussian per chain level with the width that level's light gets in the chain
-// (render/bloom_levels.hpp: bloomLevelSigma), each separable and exact (every tap read, 32-bit
+// (effects/bloom/bloom_levels.hpp: bloomLevelSigma), each separable and exact (every tap read, 32-bit
 // float, weights to 3 sigma), summed with the composite's weight per level. Kawase's "multiple
 // Gaussian filter" is this sum; the chain gets close with a handful of bilinear taps per level.
 //   "bloom reference bright"   input -> bloom.reference.bright (RGBA32F, full size)

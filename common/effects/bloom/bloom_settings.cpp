@@ -2,9 +2,9 @@
 
 namespace fx {
 
-BloomChainSettings chapter000Bloom(float threshold, float intensity, int levels) {
+BloomChainSettings shaderEffectsChain(float threshold, float intensity, int levels) {
     BloomChainSettings s;
-    s.filters = BloomFilters::chapter000;
+    s.filters = BloomFilters::shaderEffects;
     s.levels = levels;
     s.threshold = threshold;
     s.extractScale = intensity;
@@ -13,9 +13,9 @@ BloomChainSettings chapter000Bloom(float threshold, float intensity, int levels)
     return s;
 }
 
-BloomChainSettings chapter001Bloom(float threshold, int levels) {
+BloomChainSettings bloomChapterChain(float threshold, int levels) {
     BloomChainSettings s;
-    s.filters = BloomFilters::chapter001;
+    s.filters = BloomFilters::bloomChapter;
     s.levels = levels;
     s.threshold = threshold;
     s.downOffset = 0.75f;  // the [1 3 3 1]/8 binomial at an exact 2:1 ratio
@@ -24,7 +24,7 @@ BloomChainSettings chapter001Bloom(float threshold, int levels) {
 }
 
 int firstLevelDivisor(BloomFilters filters) {
-    return filters == BloomFilters::chapter000 ? 4 : 2;
+    return filters == BloomFilters::shaderEffects ? 4 : 2;
 }
 
 }  // namespace fx

@@ -18,8 +18,8 @@
 namespace fx {
 
 enum class BloomFilters {
-    chapter000,  // the Shader effects chapter, §3.7
-    chapter001,  // the Bloom chapter, §1.5-1.8
+    shaderEffects,  // the Shader effects chapter, §3.7
+    bloomChapter,   // the Bloom chapter, §1.5-1.8
 };
 
 // Every texel a bloom pass writes is finite and in [0, kBloomMaxValue]: below a half float's 65504
@@ -31,8 +31,8 @@ inline constexpr float kBloomMaxValue = 60000.0f;
 inline constexpr float kBloomMaxBright = 1024.0f;
 
 struct BloomChainSettings {
-    BloomFilters filters = BloomFilters::chapter001;
-    int levels = 6;             // requested; a small output gets fewer (render/bloom_levels.hpp)
+    BloomFilters filters = BloomFilters::bloomChapter;
+    int levels = 6;             // requested; a small output gets fewer (effects/bloom/bloom_levels.hpp)
     float threshold = 1.0f;     // brightness (the largest channel) where blooming starts
     float knee = 0.0f;          // soft knee, as a fraction of the threshold; 0 is the chapters' hard cut
     float extractScale = 1.0f;  // multiplies the bright pass (Shader effects' intensity)
@@ -46,9 +46,10 @@ struct BloomChainSettings {
     TextureFormat format = TextureFormat::RGBA16F;  // of every level
 };
 
-// The chapters' own settings.
-BloomChainSettings chapter000Bloom(float threshold = 1.0f, float intensity = 2.0f, int levels = 6);
-BloomChainSettings chapter001Bloom(float threshold = 1.0f, int levels = 6);
+// The chapters' own chains: the Shader effects chapter's (quarter size, its intensity on the bright
+// pass) and the Bloom chapter's (half size, the binomial offsets).
+BloomChainSettings shaderEffectsChain(float threshold = 1.0f, float intensity = 2.0f, int levels = 6);
+BloomChainSettings bloomChapterChain(float threshold = 1.0f, int levels = 6);
 
 // The first level's divisor of the output: 4 for the Shader effects chapter, 2 for the Bloom chapter.
 int firstLevelDivisor(BloomFilters filters);

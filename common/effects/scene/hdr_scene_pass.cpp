@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "effects/scene/camera_matrices.hpp"
+#include "image/view_transform.hpp"
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
@@ -20,6 +21,11 @@ PassState hdrSceneState(const Scene& scene) {
             .clearColor =
                 ClearColor{sky(scene.background.r), sky(scene.background.g), sky(scene.background.b), 1.0f},
             .clearDepth = 1.0f};
+}
+
+ClearColor displayClearColor(const Scene& scene) {
+    auto encode = [](float c) { return float(encodeSrgb(std::clamp(double(c), 0.0, 1.0))); };
+    return {encode(scene.background.r), encode(scene.background.g), encode(scene.background.b), 1.0f};
 }
 
 HdrSceneTargets HdrScenePass::declare(FrameGraph& graph, const World& world,

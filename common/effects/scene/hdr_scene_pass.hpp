@@ -24,6 +24,9 @@ inline constexpr float kSceneHdrMax = 4096.0f;
 // and writes (Less), no blending, back faces culled, every channel written; cleared to the scene's
 // sky (clamped to [0, kSceneHdrMax]) and depth 1. Every lit scene pass uses it.
 PassState hdrSceneState(const Scene& scene);
+// The scene's sky as the display shows it (its linear colour clipped to [0, 1] and sRGB-encoded): the
+// clear of a target that holds display values, such as the window.
+ClearColor displayClearColor(const Scene& scene);
 
 struct HdrSceneTargets {
     TextureHandle color;

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "effects/shadow/shadow_bindings.hpp"
 #include "render_gl/program_pass.hpp"
 
 namespace fx {
@@ -28,9 +29,11 @@ void drawWithPlacements(GLuint program, const World& world, const std::vector<gl
 // The lit scene seen by `camera`, receiving the shadow map (`map` 0: none), skinned objects at each
 // placement: the body of both the scene pass and the light's view.
 void drawShadowed(GLuint program, const World& world, const CameraMatrices& camera, GLuint map,
-                  const ShadowLookup& lookup, const std::vector<glm::mat4>& placements) {
+                  const ShadowLookup& lookup, const std::vector<glm::mat4>& placements,
+                  bool encodeForDisplay = false) {
     SceneMeshes::setFrameUniforms(program, world.scene(), camera);
     glProgramUniform1f(program, glsl::kHdrMaxLocation, kSceneHdrMax);
+    glProgramUniform1i(program, glsl::kEncodeForDisplayLocation, encodeForDisplay ? 1 : 0);
     ShadowMap::bindForLookup(program, map, lookup);
     drawWithPlacements(program, world, placements);
 }
@@ -42,25 +45,46 @@ int shadowedSceneTaps(const ShadowLookup& lookup, bool hasMap) {
 
 }  // namespace
 
-HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
-                                       const std::vector<glm::mat4>& skinnedPlacements) const {
+Pass& ShadowLitPass::declareDraw(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
+                                 const ShadowLitOptions& options) const {
     const gl::ReloadableProgram* program = &program_;
     ShadowLookup lookup = shadow.lookup;
+    // The lookup's uniforms need the map's GL name, which exists only while the frame runs.
     bool hasMap = shadow.pass != nullptr;
     TextureHandle map = shadow.map;
-    Pass& pass = graph.addPass("scene", [=](PassContext& ctx) {
+    std::vector<glm::mat4> placements = options.skinnedPlacements;
+    bool encode = options.encodeForDisplay;
+    Pass& pass = graph.addPass(options.passName, [=](PassContext& ctx) {
         Size2D size = ctx.targetSize();
         CameraMatrices camera = cameraMatrices(world.scene().camera, size.width, size.height);
-        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, skinnedPlacements);
+        drawShadowed(program->name(), world, camera, hasMap ? ctx.native(map) : 0, lookup, placements,
+                     encode);
     });
     if (hasMap) pass.read(map);
+    runsWith(pass.setTaps(shadowedSceneTaps(lookup, hasMap)), program_);
+    return pass;
+}
+
+HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
+                                       const std::vector<glm::mat4>& skinnedPlacements) const {
+    ShadowLitOptions options;
+    options.skinnedPlacements = skinnedPlacements;
+    return declare(graph, world, shadow, options);
+}
+
+HdrSceneTargets ShadowLitPass::declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
+                                       const ShadowLitOptions& options) const {
+    Pass& pass = declareDraw(graph, world, shadow, options);
     HdrSceneTargets targets;
-    targets.color = pass.create("scene.color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
+    targets.color = pass.create(options.prefix + ".color", {TextureSize::output(), TextureFormat::RGBA16F, 1},
                                 TextureUsage::ColorAttachment);
-    targets.depth = pass.create("scene.depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
-                                TextureUsage::DepthAttachment);
-    runsWith(pass.setState(hdrSceneState(world.scene())).setTaps(shadowedSceneTaps(lookup, hasMap)),
-             program_);
+    targets.depth =
+        pass.create(options.prefix + ".depth", {TextureSize::output(), TextureFormat::Depth32F, 1},
+                    TextureUsage::DepthAttachment);
+    PassState state = hdrSceneState(world.scene());
+    if (options.encodeForDisplay) state.clearColor = displayClearColor(world.scene());
+    if (options.viewport) state.viewport = *options.viewport;
+    pass.setState(state);
     return targets;
 }
 

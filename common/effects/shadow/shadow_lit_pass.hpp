@@ -10,6 +10,8 @@
 // declareLightView() draws the same scene from the light into "shadow.light_view" for the
 // inspector: what the shadow map "sees", in colour. From there every visible surface is lit, which
 // is a quick check that the bias and the fit are right.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -19,6 +21,19 @@
 
 namespace fx {
 
+struct ShadowLitOptions {
+    std::string passName = "scene";
+    std::string prefix = "scene";  // the targets: <prefix>.color and <prefix>.depth
+    // End with the display encoding instead of linear light: right for a draw straight into the
+    // window, the double-gamma washout once a later pass encodes again (the FBO pipeline lesson shows
+    // both). A target is then cleared to the sky's display value, so all it holds is encoded alike.
+    bool encodeForDisplay = false;
+    // Skinned objects drawn at each placement (empty: once, where they are), as ShadowPassOptions does.
+    std::vector<glm::mat4> skinnedPlacements;
+    // A viewport other than the target's (the FBO pipeline lesson's deliberate bug: the shadow map's).
+    std::optional<Viewport> viewport;
+};
+
 class ShadowLitPass {
 public:
     GLuint program() const { return program_.name(); }
@@ -27,6 +42,13 @@ public:
     // are drawn at each of `skinnedPlacements` (empty: once, where they are), as ShadowPassOptions does.
     HdrSceneTargets declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
                             const std::vector<glm::mat4>& skinnedPlacements = {}) const;
+    // The same, named and encoded as `options` say.
+    HdrSceneTargets declare(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
+                            const ShadowLitOptions& options) const;
+    // The draw alone (what it reads, its taps, its program), with neither a target nor a state: for a
+    // lesson that draws the lit scene where and as it chooses (the FBO pipeline lesson's window).
+    Pass& declareDraw(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,
+                      const ShadowLitOptions& options) const;
 
     // Declares "shadow light view": the scene from the light, `size` squared, only when inspected.
     TextureHandle declareLightView(FrameGraph& graph, const World& world, const DeclaredShadowMap& shadow,

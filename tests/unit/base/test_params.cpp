@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "base/params.hpp"
 
@@ -59,6 +61,24 @@ TEST(Params, AChoiceReadsAsItsEnumeration) {
     EXPECT_EQ(*curve, Curve::reinhard);
     params.find("curve")->set(7);  // the program setting it directly is clamped into range
     EXPECT_EQ(*curve, Curve::filmic);
+}
+
+TEST(Params, ATableChoiceReadsAsTheValueItsNameStandsFor) {
+    fx::TableChoice<double> scale{{{"half", 0.5}, {"one", 1.0}, {"double", 2.0}}, "one"};
+    fx::ParamSet params;
+    params.addChoice("scale", &scale, "");
+    EXPECT_EQ(params.find("scale")->choices, (std::vector<std::string>{"half", "one", "double"}));
+    EXPECT_EQ(*scale, 1.0);
+    ASSERT_TRUE(params.assign("scale=double").ok());
+    EXPECT_EQ(*scale, 2.0);
+    EXPECT_EQ(scale.name(), "double");
+    EXPECT_FALSE(params.assign("scale=3").ok());
+    EXPECT_EQ(*scale, 2.0);
+    params.find("scale")->set(-4);  // the program setting it directly is clamped into range
+    EXPECT_EQ(*scale, 0.5);
+    params.resetAll();
+    EXPECT_EQ(scale.name(), "one");
+    EXPECT_THROW((fx::TableChoice<double>{{{"one", 1.0}}, "two"}), std::invalid_argument);
 }
 
 TEST(Params, PresetRoundTripAndAllOrNothingLoad) {

@@ -3,9 +3,9 @@
 // samples as the march takes. A limit changed on one side fails here.
 #include <gtest/gtest.h>
 
+#include "effects/bloom/bloom_levels.hpp"
 #include "effects/clouds/cloud_march.hpp"
 #include "effects/post/radial_blur.hpp"
-#include "render/bloom_levels.hpp"
 #include "scene/scene_settings.hpp"
 
 namespace {

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "base/log.hpp"
-#include "render/bloom_levels.hpp"
 #include "render/frame_graph.hpp"
 
 namespace fx {
@@ -89,22 +88,22 @@ TEST(PassTraffic, TheBloomChainIsAboutFortyMegabytesAtTenEightyP) {
     FrameGraph graph({.size = {1920, 1080}});
     auto scene = graph.declareTexture("scene", kHdr);
     graph.addPass("scene").writeColor(scene).setTaps(2);
-    const std::vector<BloomLevel> levels = bloomLevels({1920, 1080}, 2, 6);
-    ASSERT_EQ(levels.size(), 6u);
-    std::vector<TextureHandle> down, up(levels.size());
-    auto level = [&](const char* chain, const BloomLevel& l) {
-        return graph.declareTexture(cat(chain, l.index),
-                                    {TextureSize::outputFraction(1, l.divisor), TextureFormat::RGBA16F});
+    // Level k is the output divided by 2^(k+1) (effects/bloom/bloom_levels.hpp, first divisor 2).
+    constexpr std::size_t kLevels = 6;
+    std::vector<TextureHandle> down, up(kLevels);
+    auto level = [&](const char* chain, std::size_t k) {
+        return graph.declareTexture(cat(chain, k),
+                                    {TextureSize::outputFraction(1, int(2u << k)), TextureFormat::RGBA16F});
     };
-    down.push_back(level("down", levels[0]));
+    down.push_back(level("down", 0));
     graph.addPass("bright").read(scene).writeColor(down[0]).setTaps(4);
-    for (std::size_t k = 1; k < levels.size(); ++k) {
-        down.push_back(level("down", levels[k]));
+    for (std::size_t k = 1; k < kLevels; ++k) {
+        down.push_back(level("down", k));
         graph.addPass(cat("down ", k)).read(down[k - 1]).writeColor(down[k]).setTaps(4);
     }
-    for (std::size_t k = levels.size() - 1; k-- > 0;) {
-        up[k] = level("up", levels[k]);
-        TextureHandle below = k + 2 < levels.size() ? up[k + 1] : down[k + 1];
+    for (std::size_t k = kLevels - 1; k-- > 0;) {
+        up[k] = level("up", k);
+        TextureHandle below = k + 2 < kLevels ? up[k + 1] : down[k + 1];
         graph.addPass(cat("up ", k)).read(down[k]).read(below).writeColor(up[k]).setTaps(9);
     }
     graph.addPass("composite").read(scene).read(up[0]).writeColor(graph.output()).setTaps(2);

@@ -1,4 +1,4 @@
-#include "render/bloom_levels.hpp"
+#include "effects/bloom/bloom_levels.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-// Bloom chain sizes and widths (render/bloom_levels.hpp): the chapters' tables, odd sizes, and levels
+// Bloom chain sizes and widths (effects/bloom/bloom_levels.hpp): the chapters' tables, odd sizes, and levels
 // that would be smaller than a texel.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "render/bloom_levels.hpp"
+#include "effects/bloom/bloom_levels.hpp"
 
 using namespace fx;
 
