@@ -221,6 +221,14 @@ Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string
     return add(std::move(p));
 }
 
+std::string Param::sliderFormat() const {
+    const char* number = type == ParamType::Float ? "%.3f" : "%d";
+    if (zeroMeans.empty() || get() != 0.0) return number;
+    std::string words;
+    for (char c : zeroMeans) words += c == '%' ? std::string("%%") : std::string(1, c);
+    return words;
+}
+
 bool Param::actsIn(int step) const {
     return steps.empty() || std::find(steps.begin(), steps.end(), step) != steps.end();
 }

@@ -80,6 +80,10 @@ struct Param {
     double startValue = 0;
     ParamSource startOrigin = ParamSource::lessonDefault;
 
+    // What 0 stands for when it is not an amount but a choice ("the step's own", "off"): the overlay's
+    // slider shows these words at 0 instead of the number. Empty: 0 is a number like any other.
+    std::string zeroMeans;
+
     // The steps (0-based) the parameter acts in; empty: every step. The overlay lists only the
     // parameters of the step on screen, so a step never shows another step's settings.
     std::vector<int> steps;
@@ -94,8 +98,16 @@ struct Param {
         steps = std::move(only);
         return *this;
     }
+    // At 0 the slider says `words` ("the step's own") instead of 0.
+    Param& showZeroAs(std::string words) {
+        zeroMeans = std::move(words);
+        return *this;
+    }
     bool actsIn(int step) const;
     ParamSource source() const;
+    // The printf format the overlay's slider draws the value with: the number's, or at 0 the words of
+    // zeroMeans (with any % doubled, so the slider prints them as they are).
+    std::string sliderFormat() const;
 
     double get() const;
     void set(double value) const;   // clamps into range

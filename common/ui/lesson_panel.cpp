@@ -19,9 +19,11 @@ bool drawParamWidget(const Param& p) {
         // The slider's span (a setting's may be narrower than its range: the values a lesson is shown
         // with); Ctrl+click types any value.
         case ParamType::Float:
-            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.sliderMin), float(p.sliderMax));
+            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.sliderMin), float(p.sliderMax),
+                                      p.sliderFormat().c_str());
         case ParamType::Int:
-            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.sliderMin), int(p.sliderMax));
+            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.sliderMin), int(p.sliderMax),
+                                    p.sliderFormat().c_str());
         case ParamType::Bool:
             return ImGui::Checkbox(p.name.c_str(), p.boolValue);
         case ParamType::Choice: {

@@ -48,7 +48,7 @@ private:
     // Parameters.
     // Steps 1 and 2 start with the chapter's typo in the normals program: step 1 shows what it does
     // unchecked, step 2 the check that catches it. "none" shows both steps working.
-    int broken_ = SyntaxError;
+    Choice<Broken> broken_{SyntaxError};
     bool lookupEveryDraw_ = false;
     int gridSize_ = 20;
     int productOrder_ = 1;  // 0: (T*J)*p, 1: T*(J*p)
@@ -149,10 +149,18 @@ Status ProgramObjectsLesson::init(const Scene&) {
 namespace {
 
 // The deliberately broken fragment shaders, by Broken value (shaders/lessons/01_program_objects/).
-const char* brokenFile(int broken) {
-    const char* files[] = {"normals.frag", "broken_syntax.frag", "broken_undeclared.frag",
-                           "broken_link.frag"};
-    return files[std::clamp(broken, 0, 3)];
+const char* brokenFile(ProgramObjectsLesson::Broken broken) {
+    switch (broken) {
+        case ProgramObjectsLesson::SyntaxError:
+            return "broken_syntax.frag";
+        case ProgramObjectsLesson::UndeclaredName:
+            return "broken_undeclared.frag";
+        case ProgramObjectsLesson::LinkError:
+            return "broken_link.frag";
+        case ProgramObjectsLesson::NotBroken:
+            break;
+    }
+    return "normals.frag";
 }
 
 // The objects drawn with a program of their own (scenes/01_program_objects.json).
@@ -162,19 +170,19 @@ constexpr const char* kNormalsObject = "sphere";
 }  // namespace
 
 void ProgramObjectsLesson::updateRawPrograms() {
-    if (rawBuiltWith_ == broken_) return;
-    rawBuiltWith_ = broken_;
+    if (rawBuiltWith_ == *broken_) return;
+    rawBuiltWith_ = *broken_;
     // The typo lands in the normals program, as a typo lands in one file: nothing here looks at the
     // compile or link status, so the program is kept, unusable, and used.
     rawLit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("lit.frag"), "raw lit");
     rawUnlit_ = buildProgramWithoutChecks(shader("lit.vert"), shader("unlit.frag"), "raw unlit");
-    rawNormals_ = buildProgramWithoutChecks(shader("lit.vert"), shader(brokenFile(broken_)), "raw normals");
+    rawNormals_ = buildProgramWithoutChecks(shader("lit.vert"), shader(brokenFile(*broken_)), "raw normals");
 }
 
 void ProgramObjectsLesson::updateBrokenAttempt(int step) {
     // Only step 2 keeps the failed build: every program built joins the run's registry, whose errors
     // the overlay shows in red, and F5 rebuilds; in the other steps nothing is broken on purpose.
-    const int wanted = step == CheckedPrograms && broken_ != NotBroken ? broken_ : -1;
+    const int wanted = step == CheckedPrograms && *broken_ != NotBroken ? int(*broken_) : -1;
     if (brokenBuilt_ == wanted) return;
     brokenBuilt_ = wanted;
     if (wanted < 0) {
@@ -182,8 +190,11 @@ void ProgramObjectsLesson::updateBrokenAttempt(int step) {
         return;
     }
     // The checked build fails and says why; the sphere keeps drawing with the good normals program.
-    brokenAttempt_ = gl::ReloadableProgram(
-        {shader("lit.vert"), shader(brokenFile(wanted)), {}, {}, cat("normals (", brokenFile(wanted), ")")});
+    brokenAttempt_ = gl::ReloadableProgram({shader("lit.vert"),
+                                            shader(brokenFile(*broken_)),
+                                            {},
+                                            {},
+                                            cat("normals (", brokenFile(*broken_), ")")});
 }
 
 void ProgramObjectsLesson::drawThreePrograms(GLuint lit, GLuint unlit, GLuint normals,
@@ -319,7 +330,7 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
                         // A broken program raises GL_INVALID_OPERATION at every use, and nothing in
                         // step 1 asks: the debug output counts them as expected here.
                         std::optional<gl::ExpectedErrorScope> expected;
-                        if (broken_ != NotBroken) expected.emplace("lesson 01 step 1: an unchecked program");
+                        if (*broken_ != NotBroken) expected.emplace("lesson 01 step 1: an unchecked program");
                         std::int64_t before = gl::debugCounters().errors + gl::debugCounters().expectedErrors;
                         drawThreePrograms(rawLit_.name(), rawUnlit_.name(), rawNormals_.name(), frame);
                         rawErrorsLastFrame_ =
@@ -350,14 +361,14 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
         case CopyPasted:
             ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)",
                                rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
-            if (broken_ != NotBroken) {
+            if (*broken_ != NotBroken) {
                 ImGui::TextWrapped(
                     "The normals program was built from %s: it did not link, nothing asked, and the sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
-                    brokenFile(broken_), static_cast<long long>(rawErrorsLastFrame_));
+                    brokenFile(*broken_), static_cast<long long>(rawErrorsLastFrame_));
             }
             break;
         case CheckedPrograms:
-            if (broken_ == NotBroken) {
+            if (*broken_ == NotBroken) {
                 ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
             } else {
                 ImGui::TextWrapped(
@@ -393,7 +404,7 @@ void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.check("brokenShaderLog", brokenAttempt_.error());  // the panel shows it in colour
     // Step 1 with a broken shader exists to show GL errors (counted as expected); the smoke test
     // checks that it does, and that no other step raises any.
-    out.check("expectErrorsInStep", frame.step == CopyPasted && broken_ != NotBroken);
+    out.check("expectErrorsInStep", frame.step == CopyPasted && *broken_ != NotBroken);
     fact(frame.step == CopyPasted, "uncheckedProgramGlErrorsLastFrame", std::to_string(rawErrorsLastFrame_),
          "GL errors step 1's draws raised last frame (nothing checks them)");
     fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()), "vertices per sphere");

@@ -33,14 +33,22 @@ int divisorOf(FireLesson::Offscreen resolution) {
     return 1;
 }
 
-std::vector<std::string> workloadNames() {
-    std::vector<std::string> names{"params"};
-    for (const char* path : kPathNames)
-        for (int count : kWorkloadCounts) names.push_back(cat(path, " ", count));
-    return names;
+}  // namespace
+
+std::vector<TableChoice<std::optional<FireLesson::Path>>::Option> FireLesson::pathTable() {
+    return {{"step", std::nullopt},
+            {"objects", Path::objects},
+            {"instanced", Path::instanced},
+            {"gpu", Path::gpu}};
 }
 
-}  // namespace
+std::vector<TableChoice<FireLesson::Workload>::Option> FireLesson::workloadTable() {
+    std::vector<TableChoice<Workload>::Option> table{{"params", {}}};
+    for (Path path : {Path::objects, Path::instanced, Path::gpu})
+        for (int count : kWorkloadCounts)
+            table.push_back({cat(kPathNames[int(path)], " ", count), {path, count}});
+    return table;
+}
 
 std::vector<std::string> FireLesson::steps() const {
     return {
@@ -53,16 +61,18 @@ std::vector<std::string> FireLesson::steps() const {
 }
 
 void FireLesson::declareParams(ParamSet& params) {
-    params.addChoice("path", &path_, {"step", "objects", "instanced", "gpu"},
+    params.addChoice("path", &path_,
                      "The simulation path: the step's own, one object per particle, one instanced draw, "
                      "or the GPU (compute and an indirect draw)");
-    params.addInt("count", &count_, 0, 100000,
-                  "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, "
-                  "2000 in step 3, 100000 in step 4)");
+    params
+        .addInt("count", &count_, 0, 100000,
+                "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, "
+                "2000 in step 3, 100000 in step 4)")
+        .showZeroAs("the step's own");
     // Not a quality knob but the bench's sweep of the three paths at 100 to 100000 particles: one knob,
     // so every row is timed in the same run against the same full-screen copy.
     Param& workload = params.addChoice(
-        "workload", &workload_, workloadNames(),
+        "workload", &workload_,
         "The bench: a simulation path and a particle count together (params: the path and count parameters)");
     workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
     params.addFloat("spin", &spin_, -720.0f, 720.0f,
@@ -80,7 +90,8 @@ void FireLesson::declareParams(ParamSet& params) {
                                         "Step 5: the resolution of the off-screen particle target");
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     offscreen.inSteps({Beyond});
-    params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)");
+    params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)")
+        .showZeroAs("rate x lifetime");
     params.addBool("flip_sprite", &flipSprite_,
                    "Uploads the sprite's rows in the file's order, top row first, as raw GL code often does: "
                    "a deliberate mistake that turns the flame upside down");
@@ -88,6 +99,7 @@ void FireLesson::declareParams(ParamSet& params) {
         .addFloat("hold_alpha", &holdAlpha_, 0.0f, 1.0f,
                   "Step 1: one particle standing at the emitter with its alpha held here, "
                   "to watch its glow vanish below 1/3 (0: the chapter's fire)")
+        .showZeroAs("off: the chapter's fire")
         .inSteps({Objects});
     params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
     params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),

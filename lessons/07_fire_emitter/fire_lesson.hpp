@@ -9,6 +9,7 @@
 // Lesson 06's bloom makes the fire glow.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,7 +74,14 @@ private:
     void drawPoolView(GLuint texture, int rows) const;  // the "particles.pool view" pass body
 
     // Parameters.
-    int path_ = 0;        // 0: the step's own path; else objects, instanced, gpu
+    // The bench's workload: a path and a particle count together (no path: the parameters decide).
+    struct Workload {
+        std::optional<Path> path;
+        int count = 0;
+    };
+    static std::vector<fx::TableChoice<std::optional<Path>>::Option> pathTable();
+    static std::vector<fx::TableChoice<Workload>::Option> workloadTable();
+    fx::TableChoice<std::optional<Path>> path_{pathTable(), "step"};  // none: the step's own path
     int count_ = 0;       // particles alive in the fire (0: the step's own)
     float spin_ = 0.0f;   // deg/s added to the fire (the chapter's exercise: 120)
     float hitch_ = 0.5f;  // step 2: the long frame (s)
@@ -81,7 +89,7 @@ private:
     float soft_ = 0.3f;   // step 5: soft-fade distance (m)
     fx::Choice<Offscreen> offscreen_{Offscreen::half};  // step 5: the particles' target's resolution
     int pool_ = 0;                                      // slots per emitter (0: from rate x lifetime)
-    int workload_ = 0;             // the bench: a path and a count together (0: the parameters above)
+    fx::TableChoice<Workload> workload_{workloadTable(), "params"};  // the bench's sweep
     float threshold_, intensity_;  // the chapter's bloom (lesson 06, step 3): the scene's settings
     bool flipSprite_ = false;      // the raw-GL mistake: the sprite's file rows uploaded top first
     float holdAlpha_ = 0.0f;       // step 1: one particle with this alpha (0: the chapter's fire)

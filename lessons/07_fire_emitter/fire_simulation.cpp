@@ -69,7 +69,7 @@ FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
             s.emitter.position.x += kSideBySide;
         }
         int count = count_ > 0 ? count_ : step == Instanced ? kInstancedCount : step == Gpu ? kGpuCount : 0;
-        if (workload_ > 0) count = kWorkloadCounts[(workload_ - 1) % 4];
+        if (workload_->path) count = workload_->count;
         if (count > 0 && e.kind == EmitterKind::fire) s = swarm(s, count);
         if (holdingAlpha(frame) && e.kind == EmitterKind::fire) s = heldParticle(s, holdAlpha_);
         setup.emitters.push_back(s);
@@ -84,8 +84,8 @@ FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
     setup.path = step == Objects || step == Hitch ? Path::objects
                  : step == Instanced              ? Path::instanced
                                                   : Path::gpu;
-    if (path_ > 0) setup.path = static_cast<Path>(path_ - 1);
-    if (workload_ > 0) setup.path = static_cast<Path>(std::clamp((workload_ - 1) / 4, 0, 2));
+    if (*path_) setup.path = **path_;
+    if (workload_->path) setup.path = *workload_->path;
     setup.sort = (step == Hitch || step == Instanced) && sort_ && setup.path != Path::gpu;
     setup.premultiplied = beyond;
     return setup;

@@ -213,6 +213,7 @@ void CloudsLesson::declareParams(ParamSet& params) {
         .addFloat("sky_distance", &skyDistance_, 0.0f, 1000.0f,
                   "Steps 4 to 9: a sky drawn this far ahead that writes depth, a deliberate mistake: "
                   "the clouds behind it vanish (0: the sky writes none, depth stays 1)")
+        .showZeroAs("off: depth stays 1")
         .inSteps({DepthAware, March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
     params
         .addBool("depth_lookup_bug", &depthLookupBug_,

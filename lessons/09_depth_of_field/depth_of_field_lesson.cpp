@@ -199,6 +199,7 @@ void DepthOfFieldLesson::declareParams(ParamSet& params) {
         .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
                   "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
                   "(m; 0: the projection's): the focus moves")
+        .showZeroAs("the projection's")
         .inSteps({PhysicalCamera, ChapterShader, Beyond});
     params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
                       "Not for the heat map, whose colours are for the display");

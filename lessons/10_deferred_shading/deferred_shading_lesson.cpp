@@ -215,6 +215,7 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
         "light_count", &lightCount_, 0, kMaxGridLights,
         cat("Steps 4 to 7: point lights used, spread evenly over the scene's (0: the step's own, ",
             kUnculledStepLights, " in steps 4 and 5, all of them in 6 and 7)"));
+    count.showZeroAs("the step's own");
     count.knob = Knob{{1, 4, 16, 64, 256, 1024}, 1024, "lights"};
     count.inSteps({Deferred, Layout, ManyLights, Reflection});
     Param& culling =
@@ -232,6 +233,7 @@ void DeferredShadingLesson::declareParams(ParamSet& params) {
                   cat("Step 7: the homework's optional blur: 16 taps offset by this sigma (a fraction "
                       "of the reflection's size) times standard-normal samples; the chapter's is ",
                       kChapterReflectionBlurSigma, ", 0 is sharp"))
+        .showZeroAs("off: sharp")
         .inSteps({Reflection});
     params
         .addChoice("lighting", &lightingModel_, {"deferred", "per-vertex"},

@@ -265,3 +265,22 @@ TEST(Params, AStepListsOnlyItsOwnParameters) {
     EXPECT_TRUE(params.assign("preset=invert").ok());
     EXPECT_EQ(preset, 1);
 }
+
+// A parameter whose 0 is a choice ("the step's own count", "off") says so on its slider at 0, and
+// shows its number everywhere else; a % in the words is printed as it is.
+TEST(Params, ASliderSaysWhatZeroStandsForOnlyAtZero) {
+    int lights = 0;
+    float blur = 0.0f;
+    int plain = 0;
+    fx::ParamSet params;
+    params.addInt("light_count", &lights, 0, 1024, "lights").showZeroAs("the step's own");
+    params.addFloat("blur", &blur, 0.0f, 1.0f, "blur").showZeroAs("off (100% sharp)");
+    params.addInt("plain", &plain, 0, 10, "a number");
+    EXPECT_EQ(params.find("light_count")->sliderFormat(), "the step's own");
+    EXPECT_EQ(params.find("blur")->sliderFormat(), "off (100%% sharp)");
+    EXPECT_EQ(params.find("plain")->sliderFormat(), "%d");
+    lights = 256;
+    blur = 0.005f;
+    EXPECT_EQ(params.find("light_count")->sliderFormat(), "%d");
+    EXPECT_EQ(params.find("blur")->sliderFormat(), "%.3f");
+}
