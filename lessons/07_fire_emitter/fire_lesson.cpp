@@ -36,15 +36,14 @@ int divisorOf(FireLesson::Offscreen resolution) {
 }  // namespace
 
 std::vector<TableChoice<std::optional<FireLesson::Path>>::Option> FireLesson::pathTable() {
-    return {{"step", std::nullopt},
-            {"objects", Path::objects},
-            {"instanced", Path::instanced},
-            {"gpu", Path::gpu}};
+    std::vector<TableChoice<std::optional<Path>>::Option> table{{"step", std::nullopt}};
+    for (Path path : kPaths) table.push_back({kPathNames[int(path)], path});
+    return table;
 }
 
 std::vector<TableChoice<FireLesson::Workload>::Option> FireLesson::workloadTable() {
     std::vector<TableChoice<Workload>::Option> table{{"params", {}}};
-    for (Path path : {Path::objects, Path::instanced, Path::gpu})
+    for (Path path : kPaths)
         for (int count : kWorkloadCounts)
             table.push_back({cat(kPathNames[int(path)], " ", count), {path, count}});
     return table;
@@ -336,23 +335,22 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
         out.add("chapterBacklog", std::to_string(chapterBacklog),
                 "spawns the chapter's timer still owes (left)");
     }
-    if (frame.step == Objects) {
-        for (const EmitterSetup& s : setup_.emitters) {
-            const glm::vec4 c = s.emitter.startColor;
-            // An opaque particle shows its emission, clipped at 1 and encoded as sRGB bytes (what step 1
-            // displays where the flame is opaque, with the bloom's intensity at 0).
-            auto shown = [](float v) { return int(toDisplayValue(v, ViewTransform::LinearToSrgb)); };
-            out.add("opaqueFlame", cat("(", shown(c.r), ", ", shown(c.g), ", ", shown(c.b), ")"),
-                    "an opaque particle, clipped and encoded (bloom off)");
-            if (holdingAlpha(frame)) {
-                // The bright pass keeps what its brightest channel has above the threshold.
-                const float brightest = std::max({c.r, c.g, c.b}) * holdAlpha_;
-                out.add("heldBrightest", cat(brightest),
-                        "the held particle's brightest channel (emission x alpha)");
-                out.add("heldGlows", brightest > threshold_ ? "yes" : "no",
-                        "above the bloom threshold: it glows");
-            }
-            break;
+    if (frame.step == Objects && !setup_.emitters.empty()) {
+        // The first emitter: the chapter's fire (the scene's first emitter, or the particle hold_alpha
+        // holds).
+        const glm::vec4 c = setup_.emitters.front().emitter.startColor;
+        // An opaque particle shows its emission, clipped at 1 and encoded as sRGB bytes (what step 1
+        // displays where the flame is opaque, with the bloom's intensity at 0).
+        auto shown = [](float v) { return int(toDisplayValue(v, ViewTransform::LinearToSrgb)); };
+        out.add("opaqueFlame", cat("(", shown(c.r), ", ", shown(c.g), ", ", shown(c.b), ")"),
+                "an opaque particle, clipped and encoded (bloom off)");
+        if (holdingAlpha(frame)) {
+            // The bright pass keeps what its brightest channel has above the threshold.
+            const float brightest = std::max({c.r, c.g, c.b}) * holdAlpha_;
+            out.add("heldBrightest", cat(brightest),
+                    "the held particle's brightest channel (emission x alpha)");
+            out.add("heldGlows", brightest > threshold_ ? "yes" : "no",
+                    "above the bloom threshold: it glows");
         }
     }
     if (frame.step <= Instanced)

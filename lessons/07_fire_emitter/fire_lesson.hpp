@@ -48,7 +48,8 @@ public:
     std::string benchTexture() const override { return "scene.color"; }
 
     enum Step { Objects, Hitch, Instanced, Gpu, Beyond };
-    enum class Path { objects, instanced, gpu };
+    enum class Path { objects, instanced, gpu };  // named by kPathNames, in this order
+    static constexpr Path kPaths[] = {Path::objects, Path::instanced, Path::gpu};
     enum class Offscreen { full, half, quarter };  // step 5's particle target against the output
 
     // What a step simulates and how: the emitters (with their rules), the path and the blend.

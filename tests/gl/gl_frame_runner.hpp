@@ -89,7 +89,7 @@ public:
     }
 
     // What the output texture holds after the last frame.
-    ByteImage presented() const {
+    ByteImage readOutput() const {
         return gl::readFramebufferRgba8(outputFbo_.name(), size_.width, size_.height);
     }
     GLuint outputFramebuffer() const { return outputFbo_.name(); }

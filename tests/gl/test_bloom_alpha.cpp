@@ -52,7 +52,7 @@ TEST_F(BloomAlpha, EveryLevelAndTheResultHoldAlphaOne) {
         int levels = 0;
         FloatImage result =
             runBloom(runner, effects, scene, TextureFormat::RGBA16F, settings, 2.0f, "result", &levels);
-        EXPECT_TRUE(everyAlphaIs(result, 1.0f)) << name << ": bloom.result " << runner.lastErrors;
+        EXPECT_TRUE(everyAlphaIs(result, 1.0f)) << name << ": bloom.result " << runner.lastError;
         ASSERT_GT(levels, 1) << name;
         for (int k = 0; k < levels; ++k) {
             FloatImage down = runChain(runner, effects, scene, TextureFormat::RGBA16F, settings,
@@ -87,7 +87,7 @@ TEST_F(BloomAlpha, ReferenceBlursWriteZeroAndItsSumHoldsOne) {
         FloatImage out = runner.run(scene, TextureFormat::RGBA32F, [&](FrameGraph& g, TextureHandle in) {
             return targets[i].second(g, effects.reference.declare(g, in, settings));
         });
-        EXPECT_TRUE(everyAlphaIs(out, expected[i])) << targets[i].first << " " << runner.lastErrors;
+        EXPECT_TRUE(everyAlphaIs(out, expected[i])) << targets[i].first << " " << runner.lastError;
     }
 }
 
@@ -101,5 +101,5 @@ TEST_F(BloomAlpha, FlickerMapHoldsAlphaOne) {
             BloomChain::Declared d = effects.chain.declare(g, in, bloomChapterChain(1.0f, 3));
             return flicker.declare(g, d.glow(), d.levels[0].size, true).output;
         });
-    EXPECT_TRUE(everyAlphaIs(out, 1.0f)) << "bloom.flicker " << runner.lastErrors;
+    EXPECT_TRUE(everyAlphaIs(out, 1.0f)) << "bloom.flicker " << runner.lastError;
 }

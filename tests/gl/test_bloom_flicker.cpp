@@ -78,9 +78,9 @@ TEST_F(BloomFlickerTest, KarisAverageSteadiesAMovingFirefly) {
         coverageChanges += t > 0 && coverage != lastCoverage ? 1 : 0;
         lastCoverage = coverage;
         FloatImage a = runBloom(runner, effects, input, TextureFormat::RGBA16F, plain, 2.0f, "glow");
-        ASSERT_FALSE(a.empty()) << runner.lastErrors;
+        ASSERT_FALSE(a.empty()) << runner.lastError;
         FloatImage b = runBloom(runner, effects, input, TextureFormat::RGBA16F, karis, 2.0f, "glow");
-        ASSERT_FALSE(b.empty()) << runner.lastErrors;
+        ASSERT_FALSE(b.empty()) << runner.lastError;
         withoutKaris.push_back(lumaSum(a));
         withKaris.push_back(lumaSum(b));
     }
@@ -122,7 +122,7 @@ TEST_F(BloomFlickerTest, FlickerPassWritesTheChangeAndMeasuresTheEnergy) {
             BloomChain::Declared d = effects.chain.declare(g, in, plain);
             return flicker.declare(g, d.glow(), d.levels.front().size, t == 0).output;
         });
-        ASSERT_FALSE(change.empty()) << runner.lastErrors;
+        ASSERT_FALSE(change.empty()) << runner.lastError;
         EXPECT_EQ(flicker.stats().measured, t == 1);
     }
     ASSERT_EQ(change.width, 64);

@@ -77,7 +77,7 @@ TEST_F(BloomHardCases, ValuesAboveHalfFloatRangeInfAndNanStayFinite) {
             FloatImage input = sceneWith(w, h, 50, 48, special);
             FloatImage glow =
                 runBloom(runner, effects, input, TextureFormat::RGBA16F, chain.settings, chain.scale, "glow");
-            ASSERT_FALSE(glow.empty()) << runner.lastErrors;
+            ASSERT_FALSE(glow.empty()) << runner.lastError;
             EXPECT_TRUE(allFinite(glow)) << chain.name << ": a level holds a NaN or an Inf";
             FloatImage out =
                 runBloom(runner, effects, input, TextureFormat::RGBA16F, chain.settings, chain.scale);
@@ -97,7 +97,7 @@ TEST_F(BloomHardCases, OneNanTexelDoesNotSpreadOverTheScreen) {
     for (const Chain& chain : lessonChains()) {
         FloatImage withNan = runBloom(runner, effects, sceneWith(w, h, 80, 64, {NAN, NAN, NAN, 1.0f}),
                                       TextureFormat::RGBA16F, chain.settings, chain.scale);
-        ASSERT_FALSE(withNan.empty()) << runner.lastErrors;
+        ASSERT_FALSE(withNan.empty()) << runner.lastError;
         FloatImage withZero = runBloom(runner, effects, sceneWith(w, h, 80, 64, {0.0f, 0.0f, 0.0f, 1.0f}),
                                        TextureFormat::RGBA16F, chain.settings, chain.scale);
         ASSERT_TRUE(allFinite(withNan)) << chain.name;
@@ -118,7 +118,7 @@ TEST_F(BloomHardCases, AccumulationThatWouldOverflowIsClampedFirst) {
         s.format = format;
         FloatImage in = uniformGrey(128, 64, 30000.0f);
         FloatImage glow = runBloom(runner, effects, in, TextureFormat::RGBA16F, s, 4.0f, "glow");
-        ASSERT_FALSE(glow.empty()) << runner.lastErrors;
+        ASSERT_FALSE(glow.empty()) << runner.lastError;
         ASSERT_TRUE(allFinite(glow)) << toString(format);
         // Six levels exist at 128x64 (64x32 .. 2x1), each holding the capped bright part.
         for (int c = 0; c < 3; ++c)
@@ -144,7 +144,7 @@ TEST_F(BloomHardCases, NegativeColoursMakeNoNegativeHalo) {
     for (const Chain& chain : lessonChains()) {
         FloatImage glow =
             runBloom(runner, effects, input, TextureFormat::RGBA16F, chain.settings, chain.scale, "glow");
-        ASSERT_FALSE(glow.empty()) << runner.lastErrors;
+        ASSERT_FALSE(glow.empty()) << runner.lastError;
         float lowest = 0;
         for (float v : glow.texels) lowest = std::min(lowest, v);
         EXPECT_GE(lowest, 0.0f) << chain.name << ": the chain holds negative light";
@@ -168,7 +168,7 @@ TEST_F(BloomHardCases, OddAndTinySizesMakeOnlyLevelsOfAtLeastOneTexel) {
             int made = -1;
             FloatImage out = runBloom(runner, effects, uniformGrey(size.width, size.height, 5.0f),
                                       TextureFormat::RGBA16F, chain.settings, chain.scale, "result", &made);
-            ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+            ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
             std::vector<BloomLevel> expected =
                 bloomLevels(size, firstLevelDivisor(chain.settings.filters), 6);
             EXPECT_EQ(made, int(expected.size())) << chain.name << " at " << size.width << "x" << size.height;
@@ -187,7 +187,7 @@ TEST_F(BloomHardCases, OddAndTinySizesMakeOnlyLevelsOfAtLeastOneTexel) {
         if (size.width > 100) continue;
         FloatImage ref = runReference(runner, effects, uniformGrey(size.width, size.height, 5.0f),
                                       beyondChapters(6), size, 0.5f);
-        EXPECT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+        EXPECT_TRUE(runner.lastError.empty()) << runner.lastError;
         EXPECT_TRUE(allFinite(ref));
     }
 }
@@ -206,7 +206,7 @@ TEST_F(BloomHardCases, BrightEdgeColumnDoesNotWrapRoundToTheOppositeEdge) {
     for (const Chain& chain : lessonChains()) {
         FloatImage out =
             runBloom(runner, effects, input, TextureFormat::RGBA16F, chain.settings, chain.scale);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         for (int y : {0, h / 2, h - 1}) {
             float near = out.texel(3, y, 0), farEdge = out.texel(w - 1, y, 0);
             ASSERT_GT(near, 0.0f) << chain.name;

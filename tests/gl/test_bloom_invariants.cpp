@@ -59,7 +59,7 @@ TEST_F(BloomOnGl, ShaderEffectsChapterUniformGreyGainsIntensityTimesItsBrightPar
         FloatImage out =
             runBloom(runner, effects, uniformGrey(128, 64, v), TextureFormat::RGBA16F,
                      shaderEffectsChain(1.0f, 2.0f, 6), averagedCompositeScale(5), "result", &levels);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         // A 128x64 output has room for 5 quarter-size levels (32x16 .. 2x1); the composite takes 1/5.
         ASSERT_EQ(levels, 5);
         float expected = v + 2.0f * std::max(v - 1.0f, 0.0f);
@@ -75,7 +75,7 @@ TEST_F(BloomOnGl, BloomChapterUniformGreyGainsLevelsTimesBloomScale) {
         int levels = 0;
         FloatImage out = runBloom(runner, effects, uniformGrey(128, 64, v), TextureFormat::RGBA16F,
                                   bloomChapterChain(1.0f, 6), 2.0f, "result", &levels);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         ASSERT_EQ(levels, 6);  // 64x32 .. 2x1
         float expected = v + 12.0f * std::max(v - 1.0f, 0.0f);
         EXPECT_LE(worstRelative(out, expected), kUniformTolerance) << "v = " << v;
@@ -89,7 +89,7 @@ TEST_F(BloomOnGl, NormalisedChainGainsTheIntensityForEveryLevelCount) {
     for (int levels : {1, 3, 6}) {
         FloatImage out = runBloom(runner, effects, uniformGrey(128, 64, 3.0f), TextureFormat::RGBA16F,
                                   beyondChapters(levels), normalisedCompositeScale(0.5f, levels));
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         EXPECT_LE(worstRelative(out, 3.0f + 0.5f * 2.0f), kUniformTolerance) << levels << " levels";
     }
 }
@@ -100,7 +100,7 @@ TEST_F(BloomOnGl, ReferenceGaussianGainsTheSameAsTheChain) {
     BloomChainSettings s = beyondChapters(4);
     FloatImage out = runReference(runner, effects, uniformGrey(64, 48, 2.0f), s, {64, 48},
                                   normalisedCompositeScale(1.0f, 4));
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     EXPECT_LE(worstRelative(out, 3.0f), 1e-5f);
 }
 
@@ -114,7 +114,7 @@ TEST_F(BloomOnGl, PointSourceSpreadsAsTheBloomChapterSays) {
     FloatImage input = spot(1280, 720, 640, 360, 2, v);
     FloatImage out =
         runBloom(runner, effects, input, TextureFormat::RGBA32F, bloomChapterChain(1.0f, 6), 2.0f);
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     double gain = energy(out, runner.storedInput) / (4.0 * (v - 1.0f));
     EXPECT_NEAR(gain, 12.97, 12.97 * 0.15);
 
@@ -143,7 +143,7 @@ TEST_F(BloomOnGl, NormalisedGlowEnergyDoesNotGrowWithTheLevelCount) {
         summed[i] = energy(plain, runner.storedInput) / (64.0 * (v - 1.0f));
         FloatImage out = runBloom(runner, effects, input, TextureFormat::RGBA32F, beyondChapters(counts[i]),
                                   normalisedCompositeScale(1.0f, counts[i]));
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         normalised[i] = energy(out, runner.storedInput) / (64.0 * (v - 1.0f));
     }
     EXPECT_GT(summed[1] / summed[0], 2.0) << "8 summed levels hold more than twice what 3 hold";
@@ -169,7 +169,7 @@ TEST_F(BloomOnGl, BlurAtHalfSizeMatchesTheFullSizeComposite) {
                              {std::nullopt, wide.upOffset, normalisedCompositeScale(0.5f, 4)})
                     .output;
             });
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         EXPECT_LE(worstRelative(out, 3.0f + 0.5f * 2.0f), kUniformTolerance);
     }
     EffectRunner runner(256, 128);
@@ -179,7 +179,7 @@ TEST_F(BloomOnGl, BlurAtHalfSizeMatchesTheFullSizeComposite) {
         BloomChain::Declared d = effects.chain.declare(g, in, wide);
         return effects.composite.declare(g, in, d.glow(), {std::nullopt, wide.upOffset, 1.0f}).output;
     });
-    ASSERT_FALSE(full.empty() || half.empty()) << runner.lastErrors;
+    ASSERT_FALSE(full.empty() || half.empty()) << runner.lastError;
     const double fullEnergy = energy(full, runner.storedInput), halfEnergy = energy(half, runner.storedInput);
     EXPECT_NEAR(halfEnergy / fullEnergy, 1.0, 0.02);
     // The glow on the spot (its own 101 taken off) and away from it (black there): the half-size blur

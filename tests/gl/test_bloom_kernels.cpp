@@ -131,7 +131,7 @@ FloatImage upsampleImpulse(const BloomEffects& fx, BloomFilters filters, float u
                            "test.glow", {glowSize, glowSize, TextureFormat::RGBA32F, 1}, glowTexture.name());
                        return fx.composite.declare(g, scene, glow, {filters, upOffset, 1.0f}).output;
                    });
-    errors = runner.lastErrors;
+    errors = runner.lastError;
     return out;
 }
 
@@ -153,7 +153,7 @@ TEST_F(BloomKernels, ShaderEffectsHighPassAtFourToOneWeighsSixteenTexelsByOneSix
     EffectRunner runner(w, h);
     FloatImage level0 = runChain(runner, effects, impulses(w, h, at, 16.0f), TextureFormat::RGBA32F, s,
                                  [](const BloomChain::Declared& d) { return d.down[0]; });
-    ASSERT_EQ(level0.width, 16) << runner.lastErrors;
+    ASSERT_EQ(level0.width, 16) << runner.lastError;
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x) {
             bool hit = std::find(blocks.begin(), blocks.end(), std::make_pair(x, y)) != blocks.end();
@@ -174,7 +174,7 @@ TEST_F(BloomKernels, ShaderEffectsDownsampleAtTwoToOneWeighsInnerFiveThirtySecon
                                      [](const BloomChain::Declared& d) { return d.down[0]; });
         FloatImage level1 = runChain(runner, effects, scene, TextureFormat::RGBA32F, s,
                                      [](const BloomChain::Declared& d) { return d.down[1]; });
-        ASSERT_EQ(level1.width, 8) << runner.lastErrors;
+        ASSERT_EQ(level1.width, 8) << runner.lastError;
         ASSERT_EQ(worstDifference(level0, impulses(16, 16, {{lx, ly}}, 32.0f)), 0.0f);
         // 32 x 5/32 = 5 in the destination whose 2x2 holds the impulse, 32 x 1/32 = 1 in the three
         // neighbours whose outer ring it is in, and the four add up to 8: 32 spread over 2x2 the area.
@@ -197,7 +197,7 @@ TEST_F(BloomKernels, BloomChapterBrightPassAndDownsampleAtTwoToOneAreTheOneSixty
                                      [](const BloomChain::Declared& d) { return d.down[0]; });
         FloatImage level1 = runChain(runner, effects, scene, TextureFormat::RGBA32F, s,
                                      [](const BloomChain::Declared& d) { return d.down[1]; });
-        ASSERT_EQ(level0.width, 32) << runner.lastErrors;
+        ASSERT_EQ(level0.width, 32) << runner.lastError;
         FloatImage input = impulses(64, 64, {at}, 64.0f);
         EXPECT_EQ(worstDifference(level0, downsampleOnCpu(input, binomialWeight)), 0.0f)
             << "impulse at (" << at.first << ", " << at.second << ")";

@@ -40,7 +40,7 @@ TEST_F(ToneCurveOnGl, CurvesMatchTheirFormulasAndKeepLampAndSunApart) {
             present.declare(g, in, std::nullopt, curve);
             return in;
         });
-        ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+        ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
         for (int x = 0; x < n; ++x) {
             // Inf counts as the largest half float; NaN and negatives as black. Without a curve a NaN
             // goes to the encoding as it is (the chapters' path, left unchanged), so it is not checked.

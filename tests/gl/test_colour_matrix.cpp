@@ -179,7 +179,7 @@ TEST_F(ColourMatrixOnGl, EveryPresetMatchesTheCpuWithinHalfFloatRounding) {
         FloatImage out =
             runner.run(colourRow(), TextureFormat::RGBA16F,
                        [&](FrameGraph& g, TextureHandle in) { return pass.declare(g, in).output; });
-        ASSERT_FALSE(out.empty()) << p.name << ": " << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << p.name << ": " << runner.lastError;
         for (int x = 0; x < out.width; ++x) {
             glm::vec3 expected = reference(p.transform, texelRgb(runner.storedInput, x, 0));
             glm::vec3 actual = texelRgb(out, x, 0);
@@ -203,7 +203,7 @@ TEST_F(ColourMatrixOnGl, GrayscaleRedIsNotTransposedOnTheGpu) {
         present.declare(g, graded.output);
         return graded.output;
     });
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.texel(0, 0, c), 0.2126f, halfTolerance(0.2126f)) << c;
     // On screen: 0.2126 encodes to 0.4984 with the sRGB curve, 8-bit 127, in every channel (the
     // chapter's 1/2.2 power gives 126).
@@ -224,7 +224,7 @@ TEST_F(ColourMatrixOnGl, InvertMapsZeroToOneAndOneToZero) {
         present.declare(g, graded.output);
         return graded.output;
     });
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     for (int c = 0; c < 3; ++c) {
         EXPECT_EQ(out.texel(0, 0, c), 1.0f) << "black becomes white, channel " << c;
         EXPECT_EQ(out.texel(1, 0, c), 0.0f) << "white becomes black, channel " << c;
@@ -255,7 +255,7 @@ TEST_F(ColourMatrixOnGl, NegativeOrLargeResultsNeverGiveNaN) {
             present.declare(g, graded.output);
             return graded.output;
         });
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         for (const ChannelStats& s : computeStats(out)) {
             EXPECT_EQ(s.nanCount, 0);
             EXPECT_EQ(s.infCount, 0);

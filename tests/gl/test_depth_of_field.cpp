@@ -60,7 +60,7 @@ protected:
                 g.importTexture("test.depth", {w, h, TextureFormat::R32F, 1}, depthTexture.name());
             return declare(g, in, d);
         });
-        lastErrors = runner.lastErrors;
+        lastError = runner.lastError;
         return out;
     }
 
@@ -73,7 +73,7 @@ protected:
     }
 
     DepthOfField effect;
-    std::string lastErrors;
+    std::string lastError;
 };
 
 }  // namespace
@@ -90,7 +90,7 @@ TEST_F(DepthOfFieldOnGl, CocMatchesTheCpuThinLensAtAHundredDistances) {
         }
         depths.push_back(1.0f);
         FloatImage out = coc(100, 1, model, [&](int x, int) { return depths[std::size_t(x)]; });
-        ASSERT_FALSE(out.empty()) << lastErrors;
+        ASSERT_FALSE(out.empty()) << lastError;
         double worst = 0;
         for (int x = 0; x < 100; ++x) {
             double cpu = signedCocPixelsFromDepth(model, depths[std::size_t(x)]);
@@ -105,7 +105,7 @@ TEST_F(DepthOfFieldOnGl, SkyFocusPlaneAndBeyondFar) {
     const float atFocus = float(windowDepth(15.264, 0.5, 500.0));
     const float values[] = {1.0f, atFocus, 1.5f, 1e30f, -0.5f, 0.0f};
     FloatImage out = coc(6, 1, model, [&](int x, int) { return values[x]; });
-    ASSERT_FALSE(out.empty()) << lastErrors;
+    ASSERT_FALSE(out.empty()) << lastError;
     ASSERT_TRUE(allFinite(out));
     // The sky is the far plane: a finite CoC (the chapter's 1.57 px at 1280 wide, hard case 9).
     EXPECT_NEAR(out.texel(0, 0, 0), signedCocPixelsFromDepth(model, 1.0), 1e-3);
@@ -141,7 +141,7 @@ TEST_F(DepthOfFieldOnGl, SliderExtremesStayFiniteAndClamped) {
     for (const ThinLensInput& in : inputs) {
         ThinLensModel model = thinLensModel(in);
         FloatImage out = coc(16, 1, model, [](int x, int) { return float(x) / 15.0f; });
-        ASSERT_FALSE(out.empty()) << lastErrors;
+        ASSERT_FALSE(out.empty()) << lastError;
         for (int x = 0; x < 16; ++x) {
             float c = out.texel(x, 0, 0);
             ASSERT_TRUE(std::isfinite(c)) << in.lens.focusDistanceM << " " << x;
@@ -167,7 +167,7 @@ TEST_F(DepthOfFieldOnGl, HugeCocIsClampedAndNeverWrapsAround) {
     DofLensUniforms lens = dofLensUniforms(thinLensModel(in));
     ASSERT_GT(std::abs(signedCocPixelsUnclamped(thinLensModel(in), 0.5)), 40.0);  // twice the clamp
     auto check = [&](const FloatImage& out, const char* what) {
-        ASSERT_FALSE(out.empty()) << lastErrors;
+        ASSERT_FALSE(out.empty()) << lastError;
         ASSERT_TRUE(allFinite(out)) << what;
         // (The gathered texture is half the size at half resolution.)
         for (int y = 0; y < out.height; ++y) {
@@ -213,7 +213,7 @@ TEST_F(DepthOfFieldOnGl, GatherKeepsAUniformImageAtEverySize) {
                             TextureHandle coc = effect.declareCoc(g, d, lens).output;
                             return effect.declareGather(g, c, coc, lens, {taps, half, separate, 1.0f}).result;
                         });
-                    ASSERT_FALSE(out.empty()) << lastErrors;
+                    ASSERT_FALSE(out.empty()) << lastError;
                     float worst = 0;
                     for (int y = 0; y < h; ++y)
                         for (int x = 0; x < w; ++x)
@@ -247,7 +247,7 @@ TEST_F(DepthOfFieldOnGl, BlurredForegroundSpreadsOverASharpBackgroundOnlyWithSep
                 TextureHandle coc = effect.declareCoc(g, d, lens).output;
                 return effect.declareGather(g, c, coc, lens, {43, false, separate, 0.0f}).result;
             });
-        EXPECT_FALSE(out.empty()) << lastErrors;
+        EXPECT_FALSE(out.empty()) << lastError;
         return out.empty() ? -1.0f : out.texel(x, h / 2, 0);
     };
     EXPECT_GT(redAt(true, 34), 0.1f);   // the foreground's blur reaches over the background
@@ -312,7 +312,7 @@ TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
         [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
             return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
         });
-    ASSERT_FALSE(chapter.empty()) << lastErrors;
+    ASSERT_FALSE(chapter.empty()) << lastError;
     // 13 equal taps summed and divided by 13 may land a float ulp below the value, and llvmpipe's
     // conversion to half floats truncates: one half-float step (2^-9 between 2 and 4) at most.
     EXPECT_LE(worstChange(chapter), 1.0f / 512.0f);
@@ -323,7 +323,7 @@ TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
                 TextureHandle coc = effect.declareCoc(g, d, lens).output;
                 return effect.declareGather(g, c, coc, lens, {43, half, true, 0.0f}).result;
             });
-        ASSERT_FALSE(gathered.empty()) << lastErrors;
+        ASSERT_FALSE(gathered.empty()) << lastError;
         EXPECT_EQ(worstChange(gathered), 0.0f) << "half " << half;
     }
     FloatImage naive = run(
@@ -331,7 +331,7 @@ TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
         [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
             return effect.declareNaive(g, c, d, {}).output;
         });
-    ASSERT_FALSE(naive.empty()) << lastErrors;
+    ASSERT_FALSE(naive.empty()) << lastError;
     EXPECT_LE(worstChange(naive), 1.0f / 512.0f);
     // And elsewhere it blurs: raw depth 1 (the sky) scales the disk by 0.0065 of the screen.
     FloatImage naiveSky = run(
@@ -339,7 +339,7 @@ TEST_F(DepthOfFieldOnGl, InFocusPicturesComeBackUnchanged) {
         [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
             return effect.declareNaive(g, c, d, {}).output;
         });
-    ASSERT_FALSE(naiveSky.empty()) << lastErrors;
+    ASSERT_FALSE(naiveSky.empty()) << lastError;
     EXPECT_GT(worstChange(naiveSky), 0.1f);
 }
 
@@ -364,7 +364,7 @@ TEST_F(DepthOfFieldOnGl, ASharpForegroundLeaksIntoABlurredBackgroundOnlyWithTheC
     FloatImage chapter = run(w, h, split, depth, [&](FrameGraph& g, TextureHandle c, TextureHandle d) {
         return effect.declareChapter(g, c, effect.declareCoc(g, d, lens).output, lens).output;
     });
-    ASSERT_FALSE(chapter.empty()) << lastErrors;
+    ASSERT_FALSE(chapter.empty()) << lastError;
     float leak = 0.0f;
     for (int x = 32; x < 38; ++x) leak = std::max(leak, chapter.texel(x, h / 2, 0));
     EXPECT_GT(leak, 0.05f) << "the chapter's taps should carry the sharp red into the blurred background";
@@ -374,7 +374,7 @@ TEST_F(DepthOfFieldOnGl, ASharpForegroundLeaksIntoABlurredBackgroundOnlyWithTheC
             TextureHandle coc = effect.declareCoc(g, d, lens).output;
             return effect.declareGather(g, c, coc, lens, {43, false, separate, 0.0f}).result;
         });
-        ASSERT_FALSE(gathered.empty()) << lastErrors;
+        ASSERT_FALSE(gathered.empty()) << lastError;
         ASSERT_TRUE(allFinite(gathered));
         for (int x = 32; x < w; ++x)
             EXPECT_LE(gathered.texel(x, h / 2, 0), 1e-3f) << "separate " << separate << ": red at x " << x;
@@ -404,7 +404,7 @@ TEST_F(DepthOfFieldOnGl, NearAndFarThatDisagreeWithTheProjectionMoveTheFocus) {
     auto depthAt = [&](int x, int) { return depths[std::size_t(x)]; };
     FloatImage right = coc(5, 1, agreeing, depthAt);
     FloatImage wrong = coc(5, 1, disagreeing, depthAt);
-    ASSERT_FALSE(right.empty() || wrong.empty()) << lastErrors;
+    ASSERT_FALSE(right.empty() || wrong.empty()) << lastError;
     for (int x = 0; x < 5; ++x) {
         const float d = depths[std::size_t(x)];
         EXPECT_NEAR(right.texel(x, 0, 0), signedCocPixelsFromDepth(agreeing, d), 1e-3)
@@ -480,7 +480,7 @@ TEST_F(DepthOfFieldOnGl, ALinearlyFilteredDepthGivesASilhouetteACocOfNeitherObje
     auto ofOneObject = [&](float c) { return std::abs(c - nearCoc) < 1e-3f || std::abs(c - farCoc) < 1e-3f; };
 
     FloatImage linear = halfResolutionCoc(GL_LINEAR);
-    ASSERT_FALSE(linear.empty()) << lastErrors;
+    ASSERT_FALSE(linear.empty()) << lastError;
     ASSERT_EQ(linear.width, w / 2);
     const float halo = linear.texel(16, 1, 0);
     std::printf("near %.3f px, far %.3f px; the silhouette's CoC from a filtered depth %.3f px\n", nearCoc,
@@ -490,10 +490,10 @@ TEST_F(DepthOfFieldOnGl, ALinearlyFilteredDepthGivesASilhouetteACocOfNeitherObje
     EXPECT_TRUE(ofOneObject(linear.texel(15, 1, 0)) && ofOneObject(linear.texel(17, 1, 0)));
 
     FloatImage nearest = halfResolutionCoc(GL_NEAREST);
-    ASSERT_FALSE(nearest.empty()) << lastErrors;
+    ASSERT_FALSE(nearest.empty()) << lastError;
     for (int x = 0; x < w / 2; ++x) EXPECT_TRUE(ofOneObject(nearest.texel(x, 1, 0))) << "NEAREST, x " << x;
     FloatImage fetched = coc(w, h, model, depth);
-    ASSERT_FALSE(fetched.empty()) << lastErrors;
+    ASSERT_FALSE(fetched.empty()) << lastError;
     for (int x = 0; x < w; ++x)
         EXPECT_NEAR(fetched.texel(x, 1, 0), x <= 32 ? nearCoc : farCoc, 1e-3f) << "texelFetch, x " << x;
 }

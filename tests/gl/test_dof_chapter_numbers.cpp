@@ -69,7 +69,7 @@ protected:
                 g.importTexture("test.depth", {w, h, TextureFormat::R32F, 1}, depthTexture.name());
             return declare(g, in, d);
         });
-        EXPECT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+        EXPECT_TRUE(runner.lastError.empty()) << runner.lastError;
         if (out.texels.empty()) return glm::vec2(NAN);
         return {out.texel(cx, cy, 0), out.texel(cx, cy, 1)};
     }

@@ -267,7 +267,7 @@ TEST_F(FireChapter, TheOpaqueFlameWithoutBloomShowsAbout255_230_123) {
         present.declare(g, in, std::nullopt, ToneCurve::clip);  // steps 1 and 2: the chapter's clip
         return in;
     });
-    ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+    ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
     EXPECT_EQ(int(runner.presented.texel(8, 8, 0)), 255);  // 3.0 clips
     EXPECT_NEAR(int(runner.presented.texel(8, 8, 1)), 230, 1);
     EXPECT_NEAR(int(runner.presented.texel(8, 8, 2)), 123, 1);
@@ -294,7 +294,7 @@ TEST_F(FireChapter, AParticleStopsGlowingOnceAlphaTimesThreeIsBelowOne) {
         settings.format = TextureFormat::RGBA32F;
         FloatImage bright = runChain(runner, effects, scene, TextureFormat::RGBA16F, settings,
                                      [](const BloomChain::Declared& d) { return d.down[0]; });
-        EXPECT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+        EXPECT_TRUE(runner.lastError.empty()) << runner.lastError;
         return extremes(bright).max;
     };
     EXPECT_EQ(brightest(0.30f), 0.0f) << "3 x 0.30 = 0.9: below the threshold, no glow";

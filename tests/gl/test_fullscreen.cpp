@@ -33,7 +33,7 @@ TEST_F(FullscreenOnGl, OutputTransformEncodesTheChaptersTestVectorsWithTheSrgbCu
         present.declare(g, in);
         return in;
     });
-    ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+    ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
     for (std::size_t i = 0; i < vectors.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
             EXPECT_EQ(runner.presented.texel(int(i), 0, c), vectors[i].second)
@@ -55,7 +55,7 @@ TEST_F(FullscreenOnGl, SepiaWhiteClipsInRed) {
         present.declare(g, graded.output);
         return graded.output;
     });
-    ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+    ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
     EXPECT_EQ(runner.presented.texel(0, 0, 0), 255);
     EXPECT_EQ(runner.presented.texel(0, 0, 1), 249);
     EXPECT_EQ(runner.presented.texel(0, 0, 2), 214);
@@ -74,7 +74,7 @@ TEST_F(FullscreenOnGl, SplitViewShowsBeforeLeftOfTheDividerAndAfterRightOfIt) {
             present.declare(g, graded.output, SplitView{in, divider});
             return graded.output;
         });
-        ASSERT_TRUE(runner.lastErrors.empty()) << runner.lastErrors;
+        ASSERT_TRUE(runner.lastError.empty()) << runner.lastError;
         int line = splitDividerPixel(divider, width);
         for (int x = 0; x < width; ++x) {
             int expected = x < line ? 0 : 255;  // before: black; after: inverted, white
@@ -142,7 +142,7 @@ TEST_F(FullscreenOnGl, TheHdrSceneIsWrittenFiniteAndWithinItsLimit) {
     FloatImage hdr = runner.run(unused, TextureFormat::RGBA16F, [&](FrameGraph& g, TextureHandle) {
         return scenePass.declare(g, World(scene, meshes, 0.0)).color;
     });
-    ASSERT_FALSE(hdr.empty()) << runner.lastErrors;
+    ASSERT_FALSE(hdr.empty()) << runner.lastError;
     EXPECT_EQ(hdr.texel(8, 8, 0), kSceneHdrMax) << "the ball, clamped";
     EXPECT_EQ(hdr.texel(0, 0, 0), kSceneHdrMax) << "the sky, clamped";
     EXPECT_NEAR(hdr.texel(0, 0, 1), 0.5f, 1e-3f) << "the sky's green is untouched";

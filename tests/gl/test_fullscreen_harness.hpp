@@ -43,38 +43,32 @@ FloatImage makeImage(int width, int height, F f) {
 }
 
 // An effect on a synthetic input: the input uploaded into a texture of the format asked for and
-// imported as "test.input", the effect declared on it, the result read back.
-class EffectRunner {
+// imported as "test.input", the effect declared on it, the result read back. The last frame's report
+// and error are the runner's (report, lastError).
+class EffectRunner : public GlFrameRunner {
 public:
     using Declare = std::function<TextureHandle(FrameGraph&, TextureHandle input)>;
 
-    EffectRunner(int width, int height) : runner_({width, height}) {}
+    EffectRunner(int width, int height) : GlFrameRunner({width, height}) {}
 
     // Uploads `input` into a texture of `format`, declares the effect on a fresh graph and runs it.
     // Returns the texture `declare` names, read back as floats (empty when the graph failed).
     FloatImage run(const FloatImage& input, TextureFormat format, const Declare& declare) {
-        Size2D size = runner_.size();
-        gl::Texture texture = gl::Texture::create2D(format, size.width, size.height, 1, "test.input");
-        glTextureSubImage2D(texture.name(), 0, 0, 0, size.width, size.height, GL_RGBA, GL_FLOAT,
+        const Size2D s = size();
+        gl::Texture texture = gl::Texture::create2D(format, s.width, s.height, 1, "test.input");
+        glTextureSubImage2D(texture.name(), 0, 0, 0, s.width, s.height, GL_RGBA, GL_FLOAT,
                             input.texels.data());
         storedInput = gl::readTexture(texture);
-        FloatImage out = runner_.frameAndRead([&](FrameGraph& graph) {
-            return declare(graph, graph.importTexture("test.input", {size.width, size.height, format, 1},
-                                                      texture.name()));
+        FloatImage out = frameAndRead([&](FrameGraph& graph) {
+            return declare(graph,
+                           graph.importTexture("test.input", {s.width, s.height, format, 1}, texture.name()));
         });
-        lastErrors = runner_.lastError;
-        report = runner_.report;
-        if (lastErrors.empty()) presented = runner_.presented();
+        if (lastError.empty()) presented = readOutput();
         return out;
     }
 
     FloatImage storedInput;  // the input as the GPU stored it (rounded to the format)
-    ByteImage presented;     // what the graph's output holds after the last run
-    FrameReport report;
-    std::string lastErrors;
-
-private:
-    GlFrameRunner runner_;
+    ByteImage presented;     // what the graph's output held after the last run that ran
 };
 
 }  // namespace fx::test

@@ -68,7 +68,7 @@ TEST_F(RadialBlurOnGl, LengthZeroIsTheIdentityBitForBit) {
             params.formula = formula;
             params.samples = 64;
             FloatImage out = blur(runner, effect, patterned(37, 23), params, format);
-            ASSERT_FALSE(out.empty()) << runner.lastErrors;
+            ASSERT_FALSE(out.empty()) << runner.lastError;
             std::size_t differing = 0;
             for (std::size_t i = 0; i < out.texels.size(); ++i)
                 differing += !sameBits(out.texels[i], runner.storedInput.texels[i]);
@@ -90,7 +90,7 @@ TEST_F(RadialBlurOnGl, UniformImageIsUnchangedForEverySampleCount) {
             params.length = 0.05f;
             params.start = 0.1f;
             FloatImage out = blur(runner, effect, grey, params, format);
-            ASSERT_FALSE(out.empty()) << runner.lastErrors;
+            ASSERT_FALSE(out.empty()) << runner.lastError;
             float worst = 0;
             for (std::size_t i = 0; i < out.texels.size(); ++i) {
                 float expected = runner.storedInput.texels[i];
@@ -111,7 +111,7 @@ TEST_F(RadialBlurOnGl, PixelsInsideTheStartRadiusAreUnchangedExactly) {
     params.start = 0.2f;
     params.length = 0.08f;
     FloatImage out = blur(runner, effect, patterned(48, 48), params, TextureFormat::RGBA32F);
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     int inside = 0, changedOutside = 0;
     for (int y = 0; y < 48; ++y) {
         for (int x = 0; x < 48; ++x) {
@@ -148,7 +148,7 @@ TEST_F(RadialBlurOnGl, LinearRampGainsThreeAndAHalfTapOffsets) {
         params.start = 0.1f;
         params.samples = samples;
         FloatImage out = blur(runner, effect, ramp, params, TextureFormat::RGBA32F);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         for (int x : {2, 10, 20, 30}) {
             float u = (float(x) + 0.5f) / float(width);
             float distance = 0.75f - u;
@@ -170,7 +170,7 @@ TEST_F(RadialBlurOnGl, CentrePixelIsFiniteGuardedAndNaNWithTheChaptersFormula) {
     params.formula = RadialBlurFormula::guarded;
     FloatImage offsets = blur(runner, effect, input, params, TextureFormat::RGBA16F, true);
     FloatImage result = blur(runner, effect, input, params, TextureFormat::RGBA16F);
-    ASSERT_FALSE(offsets.empty() || result.empty()) << runner.lastErrors;
+    ASSERT_FALSE(offsets.empty() || result.empty()) << runner.lastError;
     EXPECT_EQ(offsets.texel(16, 8, 0), 0.0f);
     EXPECT_EQ(offsets.texel(16, 8, 1), 0.0f);
     for (const ChannelStats& s : computeStats(result)) EXPECT_EQ(s.nanCount + s.infCount, 0);
@@ -180,7 +180,7 @@ TEST_F(RadialBlurOnGl, CentrePixelIsFiniteGuardedAndNaNWithTheChaptersFormula) {
 
     params.formula = RadialBlurFormula::chapter;
     offsets = blur(runner, effect, input, params, TextureFormat::RGBA16F, true);
-    ASSERT_FALSE(offsets.empty()) << runner.lastErrors;
+    ASSERT_FALSE(offsets.empty()) << runner.lastError;
     EXPECT_TRUE(std::isnan(offsets.texel(16, 8, 0)) && std::isnan(offsets.texel(16, 8, 1)))
         << "the chapter's formula divides 0 by 0 at the centre pixel; got " << offsets.texel(16, 8, 0);
     // Only there: every other pixel has a direction.
@@ -215,7 +215,7 @@ TEST_F(RadialBlurOnGl, CentreOffScreenGivesFiniteOutput) {
         params.formula = formula;
         FloatImage out = blur(runner, effect, input, params, TextureFormat::RGBA16F);
         FloatImage offsets = blur(runner, effect, input, params, TextureFormat::RGBA16F, true);
-        ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastError;
         for (int y = 0; y < 30; ++y) {
             for (int x = 0; x < 40; ++x)
                 ASSERT_TRUE(finite(out, x, y) && finite(offsets, x, y)) << x << ", " << y;
@@ -234,7 +234,7 @@ TEST_F(RadialBlurOnGl, GpuOffsetsMatchTheCpuReference) {
     for (RadialBlurFormula formula : {RadialBlurFormula::guarded, RadialBlurFormula::firstVersion}) {
         params.formula = formula;
         FloatImage offsets = blur(runner, effect, patterned(50, 20), params, TextureFormat::RGBA16F, true);
-        ASSERT_FALSE(offsets.empty()) << runner.lastErrors;
+        ASSERT_FALSE(offsets.empty()) << runner.lastError;
         for (int y = 0; y < 20; ++y) {
             for (int x = 0; x < 50; ++x) {
                 glm::vec2 v = radialBlurTapOffset(params, {50, 20}, {x + 0.5f, y + 0.5f});
@@ -279,7 +279,7 @@ void expectRightEdgeDark(const FloatImage& out) {
 TEST_F(RadialBlurOnGl, TapsPastTheRightEdgeDoNotFetchTheLeftEdge) {
     EffectRunner runner(kEdgeW, kEdgeH);
     FloatImage out = blur(runner, effect, brightLeftColumn(), pastTheRightEdge(), TextureFormat::RGBA32F);
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     expectRightEdgeDark(out);
 }
 
@@ -297,7 +297,7 @@ TEST_F(RadialBlurOnGl, TheBlurSamplesWithItsOwnSamplerNotTheTexturesParameters) 
             glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             return effect.declare(g, in, pastTheRightEdge(), TextureFormat::RGBA32F).blur.output;
         });
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     expectRightEdgeDark(out);
 }
 
@@ -312,7 +312,7 @@ TEST_F(RadialBlurOnGl, NegativeLengthIsNoBlurAndNoOffset) {
         params.length = length;
         FloatImage out = blur(runner, effect, patterned(40, 30), params, TextureFormat::RGBA32F);
         FloatImage offsets = blur(runner, effect, patterned(40, 30), params, TextureFormat::RGBA32F, true);
-        ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastError;
         std::size_t differing = 0, moved = 0;
         for (std::size_t i = 0; i < out.texels.size(); ++i)
             differing += !sameBits(out.texels[i], runner.storedInput.texels[i]);
@@ -331,12 +331,12 @@ TEST_F(RadialBlurOnGl, NegativeStartIsStartZero) {
     zero.start = 0.0f;
     zero.length = 0.05f;
     FloatImage expected = blur(runner, effect, patterned(33, 17), zero, TextureFormat::RGBA32F);
-    ASSERT_FALSE(expected.empty()) << runner.lastErrors;
+    ASSERT_FALSE(expected.empty()) << runner.lastError;
     for (float start : {-0.3f, NAN}) {
         RadialBlurParams negative = zero;
         negative.start = start;
         FloatImage out = blur(runner, effect, patterned(33, 17), negative, TextureFormat::RGBA32F);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         std::size_t differing = 0;
         for (std::size_t i = 0; i < out.texels.size(); ++i)
             differing += !sameBits(out.texels[i], expected.texels[i]);
@@ -362,7 +362,7 @@ TEST_F(RadialBlurOnGl, LengthAboveOneSeventhOvershootsTheCentre) {
     FloatImage shortOf = blur(runner, effect, input, params, TextureFormat::RGBA32F);
     params.length = 0.16f;
     FloatImage past = blur(runner, effect, input, params, TextureFormat::RGBA32F);
-    ASSERT_FALSE(shortOf.empty() || past.empty()) << runner.lastErrors;
+    ASSERT_FALSE(shortOf.empty() || past.empty()) << runner.lastError;
     EXPECT_EQ(shortOf.texel(x, y, 0), 0.0f);
     EXPECT_NEAR(past.texel(x, y, 0), 1.0f / 8.0f, 1e-6f) << "the farthest tap crossed to the other side";
 }
@@ -376,7 +376,7 @@ TEST_F(RadialBlurOnGl, StartBeyondTheCornerDistanceBlursNothing) {
     for (float start : {0.7072f, 0.68f}) {
         params.start = start;
         FloatImage out = blur(runner, effect, patterned(64, 48), params, TextureFormat::RGBA32F);
-        ASSERT_FALSE(out.empty()) << runner.lastErrors;
+        ASSERT_FALSE(out.empty()) << runner.lastError;
         std::size_t differing = 0;
         for (std::size_t i = 0; i < out.texels.size(); ++i)
             differing += !sameBits(out.texels[i], runner.storedInput.texels[i]);
@@ -398,7 +398,7 @@ TEST_F(RadialBlurOnGl, StartRadiusIsAnEllipseOnANonSquareTarget) {
     params.start = 0.25f;
     params.length = 0.1f;
     FloatImage out = blur(runner, effect, patterned(w, h), params, TextureFormat::RGBA32F);
-    ASSERT_FALSE(out.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty()) << runner.lastError;
     auto unchanged = [&](int x, int y) {
         bool same = true;
         for (int c = 0; c < 4; ++c)
@@ -427,7 +427,7 @@ TEST_F(RadialBlurOnGl, ChaptersFormulaHasNoNanOnAnEvenSizedTarget) {
     params.formula = RadialBlurFormula::chapter;
     FloatImage out = blur(runner, effect, patterned(64, 32), params, TextureFormat::RGBA16F);
     FloatImage offsets = blur(runner, effect, patterned(64, 32), params, TextureFormat::RGBA16F, true);
-    ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastErrors;
+    ASSERT_FALSE(out.empty() || offsets.empty()) << runner.lastError;
     for (const ChannelStats& s : computeStats(out)) EXPECT_EQ(s.nanCount + s.infCount, 0);
     for (const ChannelStats& s : computeStats(offsets)) EXPECT_EQ(s.nanCount + s.infCount, 0);
     EXPECT_EQ(radialBlurCentrePixels(params, {64, 32}), glm::vec2(32.0f, 16.0f)) << "a pixel corner";

@@ -33,7 +33,7 @@ struct UiHarness : GlFrameRunner {
             model.frame = &report;
             model.graph = nullptr;
             overlay.draw(model, width, height, 1.0 / 60.0);
-            return presented();
+            return readOutput();
         }
         GlFrameRunner::frame(
             [&](FrameGraph& graph) {
@@ -52,7 +52,7 @@ struct UiHarness : GlFrameRunner {
                     overlay.draw(model, width, height, 1.0 / 60.0);
                 }
             });
-        return presented();
+        return readOutput();
     }
 };
 
