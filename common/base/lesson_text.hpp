@@ -38,7 +38,8 @@ struct LessonSection {
 };
 std::vector<LessonSection> parseLessonSections(std::string_view markdown);
 // Whether a section is a step's ("## Step ..."): such a heading must be "## Step N: title". Another
-// `word` asks the same of another kind of numbered section ("Checked exercise").
+// `word` asks the same of another kind of numbered section ("Checked exercise"). A translation heads
+// them in its own words, taken alike in any file: "## ステップ N: title", "## 確認課題 N: title".
 bool isStepSection(const LessonSection& section, std::string_view word = "Step");
 
 // The step sections of a markdown file, in the order written, with nothing checked against a

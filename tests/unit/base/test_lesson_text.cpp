@@ -142,4 +142,37 @@ TEST(LessonText, TranslationMayLackStepsButNotRepeatOrReorderThem) {
     EXPECT_EQ(error("## Step 1: a\n\n## Step 2: b\nx\n"), "lesson.ja.md:1: step 1 has no text");
 }
 
+// A translation heads its sections in its own words: "## ステップ N: title" is a step's section and
+// "## 確認課題 N: title" a checked exercise's, read as the English headings are; a malformed one is
+// an error that names the Japanese form.
+TEST(LessonText, JapaneseHeadingsAreStepsAndCheckedExercises) {
+    const std::string md =
+        "# レッスン 01：テスト\n\n## 章の課題\n\n課題01。\n\n## ステップ 1: 一つ目\n一。\n\n"
+        "## Step 2: 二つ目\n二。\n\n## 確認課題 1: 積の順序\n確認。\n";
+    auto steps = parseStepSections(md, "lesson.ja.md");
+    ASSERT_TRUE(steps.ok()) << steps.error();
+    ASSERT_EQ(steps->size(), 2u);
+    EXPECT_EQ((*steps)[0].number, 1);
+    EXPECT_EQ((*steps)[0].title, "一つ目");
+    EXPECT_EQ((*steps)[0].text, "一。");
+    EXPECT_EQ((*steps)[1].title, "二つ目");
+    auto exercises = parseStepSections(md, "lesson.ja.md", "Checked exercise");
+    ASSERT_TRUE(exercises.ok()) << exercises.error();
+    ASSERT_EQ(exercises->size(), 1u);
+    EXPECT_EQ((*exercises)[0].title, "積の順序");
+    EXPECT_EQ((*exercises)[0].text, "確認。");
+    // The part before the steps is no step, in either language.
+    const auto sections = fx::parseLessonSections(md);
+    ASSERT_EQ(sections.size(), 5u);
+    EXPECT_FALSE(fx::isStepSection(sections[1]));
+    EXPECT_TRUE(fx::isStepSection(sections[2]));
+    EXPECT_TRUE(fx::isStepSection(sections[4], "Checked exercise"));
+
+    auto bad = parseStepSections("## ステップ一: x\ntext\n", "lesson.ja.md");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(
+        bad.error(),
+        "lesson.ja.md:1: \"## ステップ一: x\" is not a step heading; write \"## ステップ N: title\" (N from 1)");
+}
+
 }  // namespace
