@@ -88,6 +88,15 @@ bool isStepSection(const LessonSection& section, std::string_view word) {
     return !headingWord(section, word).empty();
 }
 
+std::vector<LessonSection> lessonPages(std::string_view markdown) {
+    std::vector<LessonSection> pages;
+    for (LessonSection& section : parseLessonSections(markdown)) {
+        if (section.level == 2 && !isStepSection(section) && !isStepSection(section, "Checked exercise"))
+            pages.push_back(std::move(section));
+    }
+    return pages;
+}
+
 Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file,
                                                    std::string_view word) {
     std::vector<StepSection> steps;

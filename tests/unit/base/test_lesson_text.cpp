@@ -175,4 +175,20 @@ TEST(LessonText, JapaneseHeadingsAreStepsAndCheckedExercises) {
         "lesson.ja.md:1: \"## ステップ一: x\" is not a step heading; write \"## ステップ N: title\" (N from 1)");
 }
 
+// The pages beside the steps: every "## " section that is neither a step nor a checked exercise, in
+// either language's headings, in order; "### " stays inside its section, code is not a heading.
+TEST(LessonText, PagesAreTheSectionsBesideTheSteps) {
+    const auto pages = fx::lessonPages(
+        "# Lesson 01: x\n\nIntro.\n\n## The frame\n\nFrame.\n\n## Step 1: First\n\nOne.\n\n### Exercise\n\nIn step 1."
+        "\n\n## ステップ 2: 二\n\n二。\n\n## Pitfalls\n\n```\n## Step 9: code\n```\n\n## Checked exercise 1: Mine\n\n"
+        "Check.\n\n## 確認課題 2: 自分の\n\n確認。\n\n## 章の課題02\n\n課題。\n");
+    ASSERT_EQ(pages.size(), 3u);
+    EXPECT_EQ(pages[0].heading, "The frame");
+    EXPECT_EQ(pages[0].text, "Frame.");
+    EXPECT_EQ(pages[1].heading, "Pitfalls");
+    EXPECT_EQ(pages[1].text, "```\n## Step 9: code\n```");
+    EXPECT_EQ(pages[2].heading, "章の課題02");
+    EXPECT_TRUE(fx::lessonPages("## Step 1: First\n\nOne.\n").empty());
+}
+
 }  // namespace
