@@ -503,6 +503,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     model.title = cat(lesson.info().number, ". ", lesson.info().title);
     if (lessonText_) {
         model.steps = lessonText_->steps();
+        model.pages = lessonText_->pages();
         model.textError = lessonText_->error();
         model.textRevision = lessonText_->revision();
         model.language = lessonText_->language();

@@ -108,9 +108,9 @@ Result<LessonPage> lessonPage(const std::string& language, const LessonText& eng
             own.title = translated->title;
             own.intro = translated->intro;
             introFile = ownFile;
-            page.englishIntro = english.intro;
-            own.before.insert(own.before.end(), translated->before.begin(), translated->before.end());
-            own.after.insert(own.after.end(), translated->after.begin(), translated->after.end());
+            if (own.intro.empty()) page.englishIntro = english.intro;  // a translation without an intro
+            own.before = translatedParts(english.before, translated->before);
+            own.after = translatedParts(english.after, translated->after);
         }
     }
     page.title = own.title;

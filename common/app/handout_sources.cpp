@@ -31,6 +31,15 @@ Result<LessonText> readLessonText(const fs::path& file) {
     return out;
 }
 
+std::vector<Part> translatedParts(const std::vector<Part>& english, const std::vector<Part>& translated) {
+    std::vector<Part> parts = translated;
+    for (std::size_t i = translated.size(); i < english.size(); ++i) {
+        parts.push_back(english[i]);
+        parts.back().englishOnly = true;
+    }
+    return parts;
+}
+
 TextPictures::TextPictures(fs::path lessonFolder, fs::path handout)
     : lesson_(std::move(lessonFolder)), handout_(std::move(handout)) {}
 

@@ -20,6 +20,9 @@ struct LessonText {
     std::vector<Part> before, after;  // the "## " parts before the first step, and the others
 };
 Result<LessonText> readLessonText(const std::filesystem::path& file);
+// The parts of a translation's page: the translation's nth part for lesson.md's nth (lesson.ja.md
+// gives them in the same order), and where it has fewer, lesson.md's, marked English only.
+std::vector<Part> translatedParts(const std::vector<Part>& english, const std::vector<Part>& translated);
 
 // The pictures a lesson's texts show (their targets relative to the lesson's folder), copied into
 // <handout>/figures/ once each; a picture that is not there is an error naming the text and the file.

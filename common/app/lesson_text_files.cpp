@@ -1,5 +1,6 @@
 #include "app/lesson_text_files.hpp"
 
+#include <algorithm>
 #include <system_error>
 
 #include "base/file_io.hpp"
@@ -75,6 +76,7 @@ void LessonTextFiles::read() {
         englishError_ = texts.error();
     } else {
         english_ = std::move(*texts);
+        englishPages_ = lessonPages(*text);
         englishError_.clear();
     }
 
@@ -82,12 +84,14 @@ void LessonTextFiles::read() {
     if (language_ == "en") {
         translation_.clear();
         hasTranslation_.clear();
+        translationPages_.clear();
     } else {
         const fs::path translated = file(language_);
         std::error_code ec;
         if (!fs::exists(translated, ec)) {
             translation_.clear();
             hasTranslation_.clear();
+            translationPages_.clear();
             log::info("lesson text: there is no ", translated.string(),
                       "; every step shows its English text");
         } else if (auto text = readTextFile(translated); !text) {
@@ -97,6 +101,7 @@ void LessonTextFiles::read() {
         } else if (auto byStep = matchTranslation(*sections, titles_.size(), translated.string()); !byStep) {
             translationError_ = byStep.error();
         } else {
+            translationPages_ = lessonPages(*text);
             translation_.assign(titles_.size(), StepSection{});
             hasTranslation_.assign(titles_.size(), false);
             for (std::size_t i = 0; i < titles_.size(); ++i) {
@@ -128,6 +133,16 @@ void LessonTextFiles::compose() {
         LessonStep step{titles_[i], i < english_.size() ? english_[i] : std::string(), {}};
         if (language_ != "en") step.note = cat("not in lesson.", language_, ".md yet: the English text");
         shown_.push_back(std::move(step));
+    }
+    shownPages_.clear();
+    for (std::size_t i = 0; i < std::max(englishPages_.size(), translationPages_.size()); ++i) {
+        if (i < translationPages_.size()) {
+            shownPages_.push_back({translationPages_[i].heading, translationPages_[i].text, {}});
+            continue;
+        }
+        LessonStep page{englishPages_[i].heading, englishPages_[i].text, {}};
+        if (language_ != "en") page.note = cat("not in lesson.", language_, ".md yet: the English text");
+        shownPages_.push_back(std::move(page));
     }
     ++revision_;
 }

@@ -4,7 +4,7 @@
 // the step titles the lesson's code declares, and read again when a file changes (the runner polls,
 // as it does for shaders). A file that is missing or does not match is an error naming the file and
 // the step; the text read before stays, and with none the steps show their titles only. A step the
-// translation lacks shows the English text with a note.
+// translation lacks shows the English text with a note; so does a page beside the steps.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,6 +33,10 @@ public:
 
     // One per step: its title and text in the language shown, English where the translation lacks it.
     const std::vector<LessonStep>& steps() const { return shown_; }
+    // The lesson's own pages (the sections beside the steps: the chapter's pitfalls, hard cases, its
+    // other exercises), each with its heading as title, in the language shown; the nth page of the
+    // translation stands for lesson.md's nth, and a page it lacks shows the English with a note.
+    const std::vector<LessonStep>& pages() const { return shownPages_; }
     // What is wrong with the files now ("" when nothing is): shown in the overlay until fixed.
     const std::string& error() const { return error_; }
     // Grows whenever steps() changes, so the overlay knows when to look at the text again.
@@ -53,6 +57,8 @@ private:
     std::vector<std::string> english_;      // the last good lesson.md text, one per step
     std::vector<StepSection> translation_;  // the last good translation's section of each step
     std::vector<bool> hasTranslation_;      // per step: the translation has its section
+    std::vector<LessonSection> englishPages_, translationPages_;
+    std::vector<LessonStep> shownPages_;
     std::string englishError_, translationError_, error_;
     std::vector<LessonStep> shown_;
     int revision_ = 0;

@@ -36,6 +36,23 @@ std::string joinedText(const std::vector<std::string_view>& lines) {
     return text;
 }
 
+// The heading's word in the lesson's other language: a translation heads its sections in its own
+// words ("## ステップ 1: ...", "## 確認課題 1: ..."), and either word starts the same kind of section.
+std::string_view translatedWord(std::string_view word) {
+    if (word == "Step") return "ステップ";
+    if (word == "Checked exercise") return "確認課題";
+    return {};
+}
+
+// The word the heading starts with, of the two that name `word`'s kind of section ("" for neither).
+std::string_view headingWord(const LessonSection& section, std::string_view word) {
+    if (section.level != 2) return {};
+    if (startsWith(section.heading, word)) return word;
+    const std::string_view translated = translatedWord(word);
+    if (!translated.empty() && startsWith(section.heading, translated)) return translated;
+    return {};
+}
+
 }  // namespace
 
 std::vector<LessonSection> parseLessonSections(std::string_view markdown) {
@@ -68,7 +85,16 @@ std::vector<LessonSection> parseLessonSections(std::string_view markdown) {
 }
 
 bool isStepSection(const LessonSection& section, std::string_view word) {
-    return section.level == 2 && startsWith(section.heading, word);
+    return !headingWord(section, word).empty();
+}
+
+std::vector<LessonSection> lessonPages(std::string_view markdown) {
+    std::vector<LessonSection> pages;
+    for (LessonSection& section : parseLessonSections(markdown)) {
+        if (section.level == 2 && !isStepSection(section) && !isStepSection(section, "Checked exercise"))
+            pages.push_back(std::move(section));
+    }
+    return pages;
 }
 
 Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, const std::string& file,
@@ -76,9 +102,10 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
     std::vector<StepSection> steps;
     for (const LessonSection& section : parseLessonSections(markdown)) {
         const std::string_view heading = section.heading;
-        if (!isStepSection(section, word)) continue;
-        // "## Step N: title" (or another word: "## Checked exercise N: title")
-        std::string_view rest = heading.substr(word.size());
+        const std::string_view written = headingWord(section, word);
+        if (written.empty()) continue;
+        // "## Step N: title" (or another word: "## Checked exercise N: title"; or the translation's)
+        std::string_view rest = heading.substr(written.size());
         std::size_t colon = rest.find(':');
         std::string_view number =
             colon == std::string_view::npos ? std::string_view{} : trimmed(rest.substr(0, colon));
@@ -90,7 +117,7 @@ Result<std::vector<StepSection>> parseStepSections(std::string_view markdown, co
             ptr != number.data() + number.size() || n < 1 || title.empty()) {
             const std::string kind = word == "Step" ? "step" : cat("\"", word, "\"");
             return Error{cat(file, ":", section.line, ": \"## ", heading, "\" is not a ", kind,
-                             " heading; write \"## ", word, " N: title\" (N from 1)")};
+                             " heading; write \"## ", written, " N: title\" (N from 1)")};
         }
         steps.push_back({n, std::string(title), section.text, section.line});
     }

@@ -38,8 +38,15 @@ struct LessonSection {
 };
 std::vector<LessonSection> parseLessonSections(std::string_view markdown);
 // Whether a section is a step's ("## Step ..."): such a heading must be "## Step N: title". Another
-// `word` asks the same of another kind of numbered section ("Checked exercise").
+// `word` asks the same of another kind of numbered section ("Checked exercise"). A translation heads
+// them in its own words, taken alike in any file: "## ステップ N: title", "## 確認課題 N: title".
 bool isStepSection(const LessonSection& section, std::string_view word = "Step");
+
+// The sections beside the steps, which are the lesson's own pages after them in the overlay and
+// parts of the handout: every "## " section of a lesson.md that is neither a step's nor a checked
+// exercise's (those are shown in their own places), in the order written. A translation gives its
+// pages in the same order as lesson.md, so the nth page of one is the nth of the other.
+std::vector<LessonSection> lessonPages(std::string_view markdown);
 
 // The step sections of a markdown file, in the order written, with nothing checked against a
 // lesson. Other sections ("## The frame") are prose around the steps and are skipped; headings inside

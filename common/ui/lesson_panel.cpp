@@ -108,6 +108,24 @@ void drawStepText(const std::string& text, int step) {
     ImGui::PopID();
 }
 
+// The lesson's own pages beside the steps (the chapter's pitfalls, hard cases and other exercises),
+// folded under the step's text: one node a page, its text as the steps' is drawn.
+void drawLessonPages(const OverlayModel& m) {
+    if (m.pages.empty()) return;
+    const char* label = m.language == "ja" ? "このレッスンの補足" : "Beside the steps";
+    if (!ImGui::CollapsingHeader(cat(label, " (", m.pages.size(), ")###lesson pages").c_str())) return;
+    for (std::size_t i = 0; i < m.pages.size(); ++i) {
+        const LessonStep& page = m.pages[i];
+        ImGui::PushID(int(i));
+        if (ImGui::TreeNode("page", "%s", page.title.c_str())) {
+            if (!page.note.empty()) ImGui::TextDisabled("%s", page.note.c_str());
+            drawMarkdown(page.text);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+}
+
 }  // namespace
 
 void drawLessonWindowContents(const OverlayModel& m) {
@@ -146,6 +164,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
         ImGui::PopTextWrapPos();
         drawStepText(s.text, step);
+        drawLessonPages(m);
     }
     if (!m.textError.empty()) {
         ImGui::TextColored(ui_style::kError,

@@ -106,14 +106,16 @@ void Overlay::resetLayout() {
 }
 
 void Overlay::prepareFonts(const OverlayModel& m) {
-    // Between frames: the atlas holds the glyphs of every step's text (so stepping needs no reload).
+    // Between frames: the atlas holds the glyphs of every step's text and of the lesson's pages (so
+    // stepping needs no reload).
     fontsForRevision_ = m.textRevision;
     std::vector<std::string_view> texts;
-    for (const LessonStep& s : m.steps) {
-        texts.push_back(s.title);
-        texts.push_back(s.text);
-        texts.push_back(s.note);
-    }
+    for (const std::vector<LessonStep>* list : {&m.steps, &m.pages})
+        for (const LessonStep& s : *list) {
+            texts.push_back(s.title);
+            texts.push_back(s.text);
+            texts.push_back(s.note);
+        }
     texts.push_back(m.textError);
     if (Status loaded = fonts_.prepare(texts, textScale_); !loaded) {
         log::error(loaded.error());

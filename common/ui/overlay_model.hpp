@@ -23,10 +23,13 @@ struct OverlayKey {
 struct OverlayModel {
     std::string title;
     std::vector<LessonStep> steps;  // title and markdown text of each, from lesson.md (or its translation)
-    int* step = nullptr;            // 0-based, the overlay may change it
-    std::string textError;          // what is wrong with lesson.md, shown until fixed
-    int textRevision = 0;           // changes when the steps' text does (the overlay loads glyphs then)
-    std::string language = "en";    // of the text shown; languages: those the lesson has a file for
+    // The lesson's own pages beside the steps (pitfalls, hard cases, the chapter's other exercises):
+    // heading as title, markdown text, and a note where the language shown lacks the page.
+    std::vector<LessonStep> pages;
+    int* step = nullptr;          // 0-based, the overlay may change it
+    std::string textError;        // what is wrong with lesson.md, shown until fixed
+    int textRevision = 0;         // changes when the steps' text does (the overlay loads glyphs then)
+    std::string language = "en";  // of the text shown; languages: those the lesson has a file for
     std::vector<std::string> languages;
     std::function<void(const std::string&)> setLanguage;
     ParamSet* params = nullptr;

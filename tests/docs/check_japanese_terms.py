@@ -1,11 +1,26 @@
 #!/usr/bin/env python3
-"""Fails when a lesson's Japanese step text uses a rendering docs/japanese-terms.md says to avoid.
+"""Fails when a lesson's Japanese text uses a rendering docs/japanese-terms.md says to avoid.
 
-The glossary's one table has the columns | English | Japanese | not | note |: "Japanese" is the term
-to write, "not" the variants to avoid, separated by " / ". Every lessons/*/lesson.ja.md is read line
-by line, and each line that contains a variant is reported with the term to use instead. The table
-is checked first: a missing or malformed table is an error of its own, since a checker that reads
-nothing would pass everything.
+The glossary's one table has the columns | English | Japanese | lessons | chapters | not | note |:
+"Japanese" is the term to write, "lessons" where the row holds ("all", or lesson numbers and ranges
+such as "01-08, 10"; "app" for the app's own words), "chapters" the chapters' own counts (free text,
+not checked), "not" the variants to avoid, separated by " / ". The chapters come from two courses
+and do not spell every word alike, so a row can hold for some lessons only (シェーダ in most,
+シェーダー in the FBO / depth of field chapter's lesson 09).
+
+Checked: every lessons/NN_*/lesson.ja.md and every other Japanese file of a lesson's folder (a name
+with ".ja."), against the rows of that lesson; common/app/handout_words.cpp against the rows that
+hold for "all" or "app". A line is reported for each variant it contains, with the term to use
+instead, except where the variant is part of a term that holds there (ブラー inside 放射状ブラー,
+インスペクタ inside インスペクター): so a variant may be part of a correct term and is reported only
+on its own. In markdown, code (`...` and ``` blocks) is not prose and is not checked, nor is an
+emphasis in ASCII (*uniform lookups last frame*: an item of the overlay's information panel quoted by
+its English name). A variant in
+ASCII letters ("uniform", "## Step") is checked in the markdown files only, and as a whole word
+(so "uniform" does not match "glProgramUniform" or `uniform_count`).
+
+The table is checked first: a missing or malformed table is an error of its own, since a checker that
+reads nothing would pass everything.
 
   check_japanese_terms.py [ROOT]                check the tree at ROOT (default: this repository)
   check_japanese_terms.py ROOT --expect FILE    check the checker: what it reports at ROOT must be
@@ -13,13 +28,16 @@ nothing would pass everything.
 Standard library only (python3 is on CI).
 """
 import pathlib
+import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
 import checker_cli  # noqa: E402 (tests/checker_cli.py: the command line every checker shares)
 
 GLOSSARY = "docs/japanese-terms.md"
-COLUMNS = ["English", "Japanese", "not", "note"]
+COLUMNS = ["English", "Japanese", "lessons", "chapters", "not", "note"]
+APP_FILES = ["common/app/handout_words.cpp"]  # the app's own Japanese words
+APP = "app"
 
 
 class TableError(Exception):
@@ -38,8 +56,25 @@ def is_separator(row):
     return bool(row) and all(cell and set(cell) <= set("-: ") and "-" in cell for cell in row)
 
 
+def read_scope(cell, where):
+    """The set of lessons a "lessons" cell names (numbers, and APP for the app's words)."""
+    if cell == "all":
+        return set(range(1, 100)) | {APP}
+    scope = set()
+    for item in [part.strip() for part in cell.split(",")]:
+        match = re.fullmatch(r"(\d\d)(?:-(\d\d))?", item)
+        if item == APP:
+            scope.add(APP)
+        elif match and int(match.group(1)) <= int(match.group(2) or match.group(1)):
+            scope.update(range(int(match.group(1)), int(match.group(2) or match.group(1)) + 1))
+        else:
+            raise TableError(f'{where}: the lessons cell "{cell}" is not "all" or a list such as '
+                             f'"01-08, 10, app" (two-digit numbers, ranges low-high)')
+    return scope
+
+
 def read_terms(path):
-    """[(line number, English, Japanese, [variants])] from the glossary's table; TableError if unusable."""
+    """[(line, English, Japanese, scope, [variants])] from the glossary's table; TableError if unusable."""
     if not path.is_file():
         raise TableError(f"{GLOSSARY}: missing (the table of Japanese terms the lessons follow)")
     lines = path.read_text(encoding="utf-8").splitlines()
@@ -64,47 +99,100 @@ def read_terms(path):
         row = cells(lines[i])
         if len(row) != len(COLUMNS):
             raise TableError(f"{where}: {len(row)} cells, expected {len(COLUMNS)} ({' | '.join(COLUMNS)})")
-        english, japanese, avoid, _note = row
+        english, japanese, lessons, _chapters, avoid, _note = row
         if not english:
             raise TableError(f"{where}: empty English cell")
         if not japanese:
             raise TableError(f'{where}: empty Japanese cell for "{english}"')
+        scope = read_scope(lessons, where)
         variants = [v.strip() for v in avoid.split(" / ")] if avoid else []
         if any(not v for v in variants):
             raise TableError(f'{where}: an empty variant in the "not" cell of "{english}" '
                              f'(variants are separated by " / ")')
-        for variant in variants:
-            if variant in japanese:
-                raise TableError(f'{where}: the variant "{variant}" is part of its own term "{japanese}", '
-                                 f"so every correct use would be reported")
-        terms.append((i + 1, english, japanese, variants))
+        terms.append((i + 1, english, japanese, scope, variants))
     if not terms:
         raise TableError(f"{GLOSSARY}:{start + 1}: the table has no rows")
-    # A variant inside a term another row prescribes would report that correct term too.
-    for line, english, _japanese, variants in terms:
+    # A variant that is itself a term where both rows hold could never be reported: the table
+    # contradicts itself.
+    for line, english, _japanese, scope, variants in terms:
         for variant in variants:
-            for other_line, _other_english, other_japanese, _ in terms:
-                if variant in other_japanese:
-                    raise TableError(f'{GLOSSARY}:{line}: the variant "{variant}" of "{english}" is part of '
-                                     f'"{other_japanese}", the term of line {other_line}')
+            for other_line, _other, other_japanese, other_scope, _ in terms:
+                if variant == other_japanese and scope & other_scope:
+                    raise TableError(f'{GLOSSARY}:{line}: the variant "{variant}" of "{english}" is the term of '
+                                     f"line {other_line} for the same lessons, so it is never reported")
     return terms
 
 
+def prose_lines(path):
+    """(number, text) of each line to check; in markdown, code spans and ``` blocks blanked."""
+    markdown = path.suffix == ".md"
+    in_code = False
+    for number, text in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if markdown:
+            if text.lstrip().startswith("```"):
+                in_code = not in_code
+                continue
+            if in_code:
+                continue
+            text = re.sub(r"`[^`]*`", lambda m: " " * len(m.group(0)), text)
+            # An item of the information panel quoted by its name, in English: *uniform lookups last frame*
+            text = re.sub(r"\*[ -~]+?\*", lambda m: " " * len(m.group(0)) if m.group(0).isascii() else m.group(0), text)
+        yield number, text
+
+
+def is_ascii_word(variant):
+    return variant.isascii()
+
+
+def occurrences(text, variant):
+    """The (start, end) of each occurrence; an ASCII variant only as a whole word."""
+    if is_ascii_word(variant):
+        pattern = (r"(?<![A-Za-z0-9_])" if variant[0].isalnum() else "") + re.escape(variant) + \
+                  (r"(?![A-Za-z0-9_])" if variant[-1].isalnum() else "")
+        return [(m.start(), m.end()) for m in re.finditer(pattern, text)]
+    return [(m.start(), m.end()) for m in re.finditer(re.escape(variant), text)]
+
+
+def found_in(path, name, rows, markdown):
+    found = []
+    terms = [japanese for _line, _english, japanese, _scope, _variants in rows]
+    for number, text in prose_lines(path):
+        covered = [span for term in terms for span in occurrences(text, term)]
+        for _line, _english, japanese, _scope, variants in rows:
+            for variant in variants:
+                if is_ascii_word(variant) and not markdown:
+                    continue
+                for start, end in occurrences(text, variant):
+                    if any(s <= start and end <= e and (s, e) != (start, end) for s, e in covered):
+                        continue  # part of a term that holds here
+                    found.append(f'{name}:{number}: "{variant}" is written "{japanese}" in this project '
+                                 f"({GLOSSARY})")
+                    break
+    return found
+
+
+def lesson_number(folder):
+    match = re.match(r"(\d\d)_", folder.name)
+    return int(match.group(1)) if match else None
+
+
 def problems(root):
-    """(the lines to print, number of files, number of terms); TableError if the table is unusable."""
+    """(the lines to print, number of lesson.ja.md files, number of terms); TableError if unusable."""
     terms = read_terms(root / GLOSSARY)
     files = sorted((root / "lessons").glob("*/lesson.ja.md"))
-    # The handout's own Japanese words (headings, captions, column names) follow the same table.
-    handout_words = [path for path in [root / "common/app/handout_words.cpp"] if path.is_file()]
+    checked = []  # (path, scope key)
+    for folder in sorted(path for path in (root / "lessons").glob("*") if path.is_dir()):
+        number = lesson_number(folder)
+        if number is None:
+            continue
+        for path in sorted(folder.iterdir()):
+            if path.is_file() and (path.name == "lesson.ja.md" or ".ja." in path.name):
+                checked.append((path, number))
+    checked += [(root / name, APP) for name in APP_FILES if (root / name).is_file()]
     found = []
-    for path in files + handout_words:
-        name = path.relative_to(root).as_posix()
-        for number, text in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
-            for _line, _english, japanese, variants in terms:
-                for variant in variants:
-                    if variant in text:
-                        found.append(f'{name}:{number}: "{variant}" is written "{japanese}" in this project '
-                                     f"({GLOSSARY})")
+    for path, key in checked:
+        rows = [term for term in terms if key in term[3]]
+        found += found_in(path, path.relative_to(root).as_posix(), rows, path.suffix == ".md")
     return found, len(files), len(terms)
 
 

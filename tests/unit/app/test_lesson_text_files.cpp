@@ -98,6 +98,45 @@ TEST(LessonTextFiles, ABrokenTranslationIsAnErrorNamingItsFile) {
     EXPECT_EQ(text.steps()[1].text, "Two.");  // English, with the note
 }
 
+// The sections beside the steps are the lesson's own pages, in the language shown: the nth page of
+// lesson.ja.md stands for lesson.md's nth, a page it lacks is the English with a note, and neither
+// the steps nor the checked exercises are pages.
+TEST(LessonTextFiles, PagesBesideTheStepsInTheLanguageShown) {
+    fx::test::TempFolder dir;
+    write(dir.path() / "lesson.md",
+          "# Lesson 99: test\n\nIntro.\n\n## The frame\n\nFrame.\n\n## Step 1: First\n\nOne.\n\n"
+          "## Step 2: Second\n\nTwo.\n\n## Pitfalls the chapter warns about\n\n- `glClear`\n\n"
+          "## Hard cases and their tests\n\nHard.\n\n## Checked exercise 1: Mine\n\nCheck.\n");
+    write(dir.path() / "lesson.ja.md",
+          "# レッスン 99：テスト\n\n## フレーム\n\nフレーム。\n\n## ステップ 1: 一つ目\n\n一。\n\n"
+          "## ステップ 2: 二つ目\n\n二。\n\n## 章が注意している点\n\n- `glClear` は…\n\n"
+          "## 確認課題 1: 自分の\n\n確認。\n");
+    LessonTextFiles english(dir.path(), kTitles, "en");
+    (void)english.reloadIfChanged();
+    ASSERT_TRUE(english.error().empty()) << english.error();
+    ASSERT_EQ(english.pages().size(), 3u);
+    EXPECT_EQ(english.pages()[0].title, "The frame");
+    EXPECT_EQ(english.pages()[1].title, "Pitfalls the chapter warns about");
+    EXPECT_EQ(english.pages()[1].text, "- `glClear`");
+    EXPECT_EQ(english.pages()[2].title, "Hard cases and their tests");
+    for (const auto& page : english.pages()) EXPECT_TRUE(page.note.empty());
+
+    LessonTextFiles japanese(dir.path(), kTitles, "ja");
+    (void)japanese.reloadIfChanged();
+    ASSERT_TRUE(japanese.error().empty()) << japanese.error();
+    ASSERT_EQ(japanese.steps().size(), 2u);
+    EXPECT_EQ(japanese.steps()[0].title, "一つ目");
+    EXPECT_EQ(japanese.steps()[1].text, "二。");
+    ASSERT_EQ(japanese.pages().size(), 3u);
+    EXPECT_EQ(japanese.pages()[0].title, "フレーム");
+    EXPECT_TRUE(japanese.pages()[0].note.empty());
+    EXPECT_EQ(japanese.pages()[1].title, "章が注意している点");
+    EXPECT_EQ(japanese.pages()[1].text, "- `glClear` は…");
+    EXPECT_EQ(japanese.pages()[2].title, "Hard cases and their tests");
+    EXPECT_EQ(japanese.pages()[2].text, "Hard.");
+    EXPECT_NE(japanese.pages()[2].note.find("lesson.ja.md"), std::string::npos);
+}
+
 TEST(LessonTextFiles, LangOptionIsCheckedOnTheCommandLine) {
     EXPECT_EQ(fx::parseRunOptions({}, 1)->language, "en");
     EXPECT_EQ(fx::parseRunOptions({"--lang", "ja"}, 1)->language, "ja");

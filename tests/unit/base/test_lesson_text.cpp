@@ -142,4 +142,53 @@ TEST(LessonText, TranslationMayLackStepsButNotRepeatOrReorderThem) {
     EXPECT_EQ(error("## Step 1: a\n\n## Step 2: b\nx\n"), "lesson.ja.md:1: step 1 has no text");
 }
 
+// A translation heads its sections in its own words: "## ステップ N: title" is a step's section and
+// "## 確認課題 N: title" a checked exercise's, read as the English headings are; a malformed one is
+// an error that names the Japanese form.
+TEST(LessonText, JapaneseHeadingsAreStepsAndCheckedExercises) {
+    const std::string md =
+        "# レッスン 01：テスト\n\n## 章の課題\n\n課題01。\n\n## ステップ 1: 一つ目\n一。\n\n"
+        "## Step 2: 二つ目\n二。\n\n## 確認課題 1: 積の順序\n確認。\n";
+    auto steps = parseStepSections(md, "lesson.ja.md");
+    ASSERT_TRUE(steps.ok()) << steps.error();
+    ASSERT_EQ(steps->size(), 2u);
+    EXPECT_EQ((*steps)[0].number, 1);
+    EXPECT_EQ((*steps)[0].title, "一つ目");
+    EXPECT_EQ((*steps)[0].text, "一。");
+    EXPECT_EQ((*steps)[1].title, "二つ目");
+    auto exercises = parseStepSections(md, "lesson.ja.md", "Checked exercise");
+    ASSERT_TRUE(exercises.ok()) << exercises.error();
+    ASSERT_EQ(exercises->size(), 1u);
+    EXPECT_EQ((*exercises)[0].title, "積の順序");
+    EXPECT_EQ((*exercises)[0].text, "確認。");
+    // The part before the steps is no step, in either language.
+    const auto sections = fx::parseLessonSections(md);
+    ASSERT_EQ(sections.size(), 5u);
+    EXPECT_FALSE(fx::isStepSection(sections[1]));
+    EXPECT_TRUE(fx::isStepSection(sections[2]));
+    EXPECT_TRUE(fx::isStepSection(sections[4], "Checked exercise"));
+
+    auto bad = parseStepSections("## ステップ一: x\ntext\n", "lesson.ja.md");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(
+        bad.error(),
+        "lesson.ja.md:1: \"## ステップ一: x\" is not a step heading; write \"## ステップ N: title\" (N from 1)");
+}
+
+// The pages beside the steps: every "## " section that is neither a step nor a checked exercise, in
+// either language's headings, in order; "### " stays inside its section, code is not a heading.
+TEST(LessonText, PagesAreTheSectionsBesideTheSteps) {
+    const auto pages = fx::lessonPages(
+        "# Lesson 01: x\n\nIntro.\n\n## The frame\n\nFrame.\n\n## Step 1: First\n\nOne.\n\n### Exercise\n\nIn step 1."
+        "\n\n## ステップ 2: 二\n\n二。\n\n## Pitfalls\n\n```\n## Step 9: code\n```\n\n## Checked exercise 1: Mine\n\n"
+        "Check.\n\n## 確認課題 2: 自分の\n\n確認。\n\n## 章の課題02\n\n課題。\n");
+    ASSERT_EQ(pages.size(), 3u);
+    EXPECT_EQ(pages[0].heading, "The frame");
+    EXPECT_EQ(pages[0].text, "Frame.");
+    EXPECT_EQ(pages[1].heading, "Pitfalls");
+    EXPECT_EQ(pages[1].text, "```\n## Step 9: code\n```");
+    EXPECT_EQ(pages[2].heading, "章の課題02");
+    EXPECT_TRUE(fx::lessonPages("## Step 1: First\n\nOne.\n").empty());
+}
+
 }  // namespace
