@@ -1,5 +1,6 @@
 #include "app/handout_build.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 
@@ -10,6 +11,7 @@
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
 #include "app/lesson_text_files.hpp"
+#include "base/fact_references.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "base/paths.hpp"
@@ -66,6 +68,8 @@ Result<std::vector<StepPage>> stepPages(const std::vector<CapturedStep>& capture
             return Error{cat(what, " has no picture: ", s.error())};
         for (const json& f : member(c.report, "shownFacts"))
             step.facts.emplace_back(f.value("label", std::string()), f.value("value", std::string()));
+        for (const auto& [key, value] : member(c.report, "facts").items())
+            step.factValues[key] = value.is_string() ? value.get<std::string>() : value.dump();
         // The English text chooses the views, so every language shows the same textures.
         auto views = takeViews(c, english[i].text, step.number, folder);
         if (!views) return Error{cat(what, ": ", views.error())};
@@ -109,8 +113,10 @@ Result<LessonPage> lessonPage(const std::string& language, const LessonText& eng
             own.intro = translated->intro;
             introFile = ownFile;
             page.englishIntro = english.intro;
-            own.before.insert(own.before.end(), translated->before.begin(), translated->before.end());
-            own.after.insert(own.after.end(), translated->after.begin(), translated->after.end());
+            // A translated part takes its English part's place; the others stay, marked English only.
+            for (auto [mine, theirs] :
+                 {std::pair{&own.before, &translated->before}, {&own.after, &translated->after}})
+                for (const Part& p : *theirs) replaceOrAdd(*mine, p);
         }
     }
     page.title = own.title;
@@ -125,7 +131,11 @@ Result<LessonPage> lessonPage(const std::string& language, const LessonText& eng
     for (std::size_t i = 0; i < steps.size(); ++i) {
         StepPage& step = page.steps[i];
         step.title = text.steps()[i].title;
-        step.text = text.steps()[i].text;
+        // The numbers the text quotes from its step's facts, as this run computed them.
+        step.text = resolveFactReferences(text.steps()[i].text, [&step](const std::string& fact) {
+            auto it = step.factValues.find(fact);
+            return it == step.factValues.end() ? std::nullopt : std::optional(it->second);
+        });
         step.note = text.steps()[i].note;
         step.picture.caption = cat(wordsFor(language).step, " ", i + 1, ": ", step.title);
     }

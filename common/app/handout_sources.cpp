@@ -31,6 +31,27 @@ Result<LessonText> readLessonText(const fs::path& file) {
     return out;
 }
 
+std::string partKey(const std::string& heading) {
+    const std::size_t colon = heading.find(':');
+    if (colon == std::string::npos || colon == 0) return heading;
+    const std::size_t space = heading.rfind(' ', colon);
+    const bool numbered =
+        space != std::string::npos && space + 1 < colon &&
+        std::all_of(heading.begin() + std::ptrdiff_t(space + 1), heading.begin() + std::ptrdiff_t(colon),
+                    [](char c) { return c >= '0' && c <= '9'; });
+    return numbered ? heading.substr(0, colon) : heading;
+}
+
+void replaceOrAdd(std::vector<Part>& parts, const Part& translated) {
+    for (Part& p : parts) {
+        if (p.englishOnly && partKey(p.heading) == partKey(translated.heading)) {
+            p = translated;
+            return;
+        }
+    }
+    parts.push_back(translated);
+}
+
 TextPictures::TextPictures(fs::path lessonFolder, fs::path handout)
     : lesson_(std::move(lessonFolder)), handout_(std::move(handout)) {}
 

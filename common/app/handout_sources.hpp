@@ -21,6 +21,14 @@ struct LessonText {
 };
 Result<LessonText> readLessonText(const std::filesystem::path& file);
 
+// What a part is, whatever its language: "Checked exercise 1" of "Checked exercise 1: 平面反射" (a
+// numbered section's word and number stay English in every language), else the whole heading.
+std::string partKey(const std::string& heading);
+
+// A translated part in place of the English-only part it translates, or after the others: each
+// section is listed once (the Japanese page had "Checked exercise 1" twice, once marked English only).
+void replaceOrAdd(std::vector<Part>& parts, const Part& translated);
+
 // The pictures a lesson's texts show (their targets relative to the lesson's folder), copied into
 // <handout>/figures/ once each; a picture that is not there is an error naming the text and the file.
 class TextPictures {

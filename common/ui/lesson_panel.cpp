@@ -8,6 +8,7 @@
 #include "base/log.hpp"
 #include "ui/markdown_view.hpp"
 #include "ui/ui_style.hpp"
+#include "ui/word_wrap.hpp"
 
 namespace fx {
 
@@ -141,7 +142,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
-        ImGui::TextUnformatted(s.title.c_str());
+        drawWrappedText(s.title);  // Japanese titles too: no lone "る" or "8" on the last line
         ImGui::PopStyleColor();
         if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
         ImGui::PopTextWrapPos();
