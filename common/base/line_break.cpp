@@ -61,6 +61,14 @@ bool isNumberBeforeItsUnit(std::string_view piece, std::string_view next) {
     return false;
 }
 
+// "1/" before "F": a fraction or a ratio written with a slash stays whole ("1/F", "1/P", "a/b");
+// a slash between words with spaces around it still lets the line break.
+bool isInsideAFraction(std::string_view piece, std::string_view next) {
+    if (piece.size() < 2 || piece.back() != '/' || next.empty()) return false;
+    const auto alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    return alnum(piece[piece.size() - 2]) && alnum(next.front());
+}
+
 // Characters in a piece, counted as code points.
 std::size_t characters(std::string_view s) {
     std::size_t n = 0;
@@ -110,7 +118,8 @@ std::vector<std::string_view> lineBreakPieces(std::string_view text) {
         while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) ++end;
         if (end <= start) continue;
         const std::string_view piece = text.substr(start, end - start);
-        if (!pieces.empty() && isNumberBeforeItsUnit(pieces.back(), piece)) {
+        if (!pieces.empty() &&
+            (isNumberBeforeItsUnit(pieces.back(), piece) || isInsideAFraction(pieces.back(), piece))) {
             const std::size_t from = std::size_t(pieces.back().data() - text.data());
             pieces.back() = text.substr(from, end - from);
         } else {

@@ -86,25 +86,31 @@ float drawTable(std::vector<Block*> rows, ImVec2 origin, float width) {
         columns = std::max(columns, r->cells.size());
     }
     if (columns == 0) return 0.0f;
-    std::vector<float> natural(columns, 0.0f);
+    // Each column between its widest word (a line cannot break inside one) and its widest cell on one
+    // line; what the text's width leaves over the least goes to the columns that want more, in
+    // proportion to what they want, so a table never runs past the text's right edge if it can help it.
+    std::vector<float> natural(columns, 0.0f), least(columns, 0.0f);
     for (const Block* r : rows) {
         for (std::size_t c = 0; c < r->cells.size(); ++c) {
             float w = 0.0f;
-            for (const Span& s : r->cells[c]) w += widthOf(s.text);
+            for (const Span& s : r->cells[c]) {
+                w += widthOf(s.text);
+                for (std::string_view piece : lineBreakPieces(s.text))
+                    least[c] = std::max(least[c], widthOf(withoutTrailingSpaces(piece)) + 2 * pad + 1.0f);
+            }
             natural[c] = std::max(natural[c], w + 2 * pad + 1.0f);
         }
     }
-    float total = 0.0f;
-    for (float w : natural) total += w;
-    std::vector<float> column = natural;
-    if (total > width) {
-        // Narrow columns keep their width; the wide ones share what is left.
-        const float fair = width / float(columns);
-        float fixed = 0.0f, wide = 0.0f;
-        for (float w : natural) (w <= fair ? fixed : wide) += w;
-        for (float& w : column)
-            if (w > fair) w = std::max(fair, (width - fixed) * w / wide);
+    float leastTotal = 0.0f, wanted = 0.0f;
+    for (std::size_t c = 0; c < columns; ++c) {
+        natural[c] = std::max(natural[c], least[c]);
+        leastTotal += least[c];
+        wanted += natural[c] - least[c];
     }
+    std::vector<float> column = least;
+    const float spare = std::max(width - leastTotal, 0.0f);
+    for (std::size_t c = 0; c < columns; ++c)
+        column[c] += wanted > 0.0f ? std::min(1.0f, spare / wanted) * (natural[c] - least[c]) : 0.0f;
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImU32 rule = ui_style::packed(ImVec4(1.0f, 1.0f, 1.0f, 0.18f));
     float y = 0.0f;

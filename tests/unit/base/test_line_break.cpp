@@ -39,6 +39,10 @@ TEST(LineBreak, EnglishWrapsAtWordsAndNeverInsideANumber) {
         EXPECT_LE(characters(line), 12.0f) << line;
     }
     EXPECT_EQ(lines, (std::vector<std::string>{"bloom = b +", "0.0000 (the", "threshold)"}));
+    // A fraction stays whole: lesson 09's "With 1/F = 1/P + 1/I" broke as "1/" / "F".
+    for (const std::string& line :
+         wrapLines("this is it. With 1/F = 1/P + 1/I (I: the distance)", 19, characters))
+        EXPECT_NE(line.back(), '/') << line;
     // Sizes and ratios stay whole: "1280x720", "1/4".
     for (const std::string& line : wrapLines("a window of 1280x720 at 1/4 size", 10, characters))
         EXPECT_TRUE(line.find("1280x720") != std::string::npos || line.find("1280") == std::string::npos)
