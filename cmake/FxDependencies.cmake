@@ -8,6 +8,10 @@ find_package(TinyGLTF REQUIRED)
 find_package(GTest REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# The lesson text's markdown (md4c: CommonMark with GitHub's tables) and its line breaking (ICU's
+# line BreakIterator, Unicode's rules with the Japanese ones).
+pkg_check_modules(MD4C REQUIRED IMPORTED_TARGET md4c)
+pkg_check_modules(ICU REQUIRED IMPORTED_TARGET icu-uc)
 
 # Dear ImGui's Debian build is a static library with the GLFW and OpenGL3 backends inside; its
 # headers live in /usr/include/imgui (backends in /usr/include/imgui/backends).

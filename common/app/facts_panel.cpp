@@ -2,6 +2,9 @@
 
 #include <imgui.h>
 
+#include "base/log.hpp"
+#include "ui/word_wrap.hpp"
+
 namespace fx {
 
 void drawFacts(const Facts& facts, Size2D picture) {
@@ -15,7 +18,8 @@ void drawFacts(const Facts& facts, Size2D picture) {
             ImGui::ProgressBar(float(f.done) / float(f.total), ImVec2(-1.0f, 0.0f), f.value.c_str());
             continue;
         }
-        ImGui::TextWrapped("%s: %s", label.c_str(), f.value.c_str());
+        // Wrapped by Unicode's rules, so a number is never split across lines ("b + 0." / "0000").
+        drawWrappedText(cat(label, ": ", f.value));
     }
 }
 

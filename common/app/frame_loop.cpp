@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include "app/bench.hpp"
@@ -13,6 +14,7 @@
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
 #include "app/run_options.hpp"
+#include "base/fact_references.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
@@ -511,6 +513,17 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
         model.setLanguage = [this](const std::string& language) { (void)lessonText_->setLanguage(language); };
     }
     if (s_.exercise) s_.exercise->annotate(model.steps, model.textRevision);
+    // The lesson's facts of this frame: the panel lists them, and the step's text quotes them by
+    // reference ({fact:NAME}), so its numbers are this frame's (base/fact_references.hpp).
+    Facts facts;
+    lesson.facts(facts, frame);
+    if (s_.step >= 0 && std::size_t(s_.step) < model.steps.size()) {
+        std::string& text = model.steps[std::size_t(s_.step)].text;
+        text = resolveFactReferences(text, [&facts](const std::string& name) -> std::optional<std::string> {
+            const std::string* value = facts.find(name);
+            return value ? std::optional(*value) : std::nullopt;
+        });
+    }
     model.step = &s_.step;
     model.params = &s_.params;
     model.frame = &report;
@@ -526,8 +539,6 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     model.status = s_.status;
     if (Clock::now() < noticeUntil_) model.notice = notice_;
     model.lessonPanel = [&] {
-        Facts facts;
-        lesson.facts(facts, frame);
         drawFacts(facts, frame.size);
         lesson.drawPanel(frame);
     };

@@ -31,6 +31,8 @@ struct StepPage {
     std::string title, text, note;  // the text is markdown, as the overlay shows it
     Picture picture;
     std::vector<std::pair<std::string, std::string>> facts;  // label, value
+    // Every fact of the run by name, shown or not: the text's {fact:NAME} references read them.
+    std::map<std::string, std::string> factValues;
     std::vector<View> views;
     // Where the step changes the frame: the graph's picture and the report's passes. Otherwise
     // sameFrameAs names the earlier step whose frame this is.

@@ -1,8 +1,9 @@
 #pragma once
-// The little markdown a lesson's step text uses, parsed for display: paragraphs, bullet and numbered
-// lists, ``` code blocks, ### headings, table rows, and inside text **bold**, *emphasis*, `code`,
-// [links](url) (their text) and ![pictures](file) (their alt text). Anything else is plain text.
-// GL-free: the overlay draws the blocks (ui/markdown_view), the tests check the parse.
+// A lesson's step text, read by md4c (CommonMark with GitHub's tables) into the few blocks the overlay
+// (ui/markdown_view) and the handout (app/handout_html) draw, so both read lesson.md through one
+// parser: paragraphs, bullet and numbered lists, ``` code blocks, headings, table rows, and inside
+// text **bold**, *emphasis*, `code`, [links](url) (their text) and ![pictures](file) (their alt
+// text). Raw HTML is shown as the text it is. GL-free: the tests check the parse.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,12 +32,8 @@ struct Block {
 };
 
 std::vector<Block> parseBlocks(std::string_view text);
+// The spans of a text's blocks in one run (a heading or one paragraph's worth of text).
 std::vector<Span> parseSpans(std::string_view text);
-
-// Where a line of text may break: each piece is a word with the spaces after it, or one CJK
-// character (Japanese has no spaces; a line may break between any two characters, except before
-// closing punctuation such as 、。」), so a renderer wraps by measuring pieces.
-std::vector<std::string_view> breakPieces(std::string_view text);
 
 // The code point at text[i] (UTF-8), and how many bytes it takes; a broken byte reads as U+FFFD.
 char32_t decodeUtf8(std::string_view text, std::size_t i, std::size_t& length);

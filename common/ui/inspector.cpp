@@ -15,6 +15,8 @@ namespace {
 constexpr std::size_t kThumbnailsPerFrame = 2;  // textures kept alive in turn to refresh thumbnails
 constexpr float kListWidth = 250.0f;
 constexpr float kStripTileHeight = 64.0f;
+// The least a strip's first tile gets: its 1x1 level a visible square, the picture in it readable.
+constexpr float kLeastStripTileHeight = 40.0f;
 
 // The probe's lines: the texel and its values, and the chain's table (a header and up to 4 rows).
 float probeHeightFor(std::size_t chainRows, bool hasStrip, float line) {
@@ -221,19 +223,25 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     // The rest of the height: the view, the probe, the strip.
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const bool hasStrip = chain_.kind != TextureChain::Kind::None;
-    const std::size_t chainRows = hasStrip ? std::min<std::size_t>(chain_.members.size(), 4) : 0;
-    // In a short inspector (the lower part of a 720-line window) the strip's tiles give up height
-    // before the view goes below its least: the whole chain stays on the screen, labels included.
-    const float stripText = 3.0f * line + 18.0f;
+    // In a short inspector (the default one: the lower part of a 720-line window) the chain's probe
+    // table shows two members (it scrolls) and the large view gives up height before the strip's tiles
+    // go below a readable size: the whole chain stays on the screen, its labels and sizes included
+    // ("inspect bloom mip textures live" at the default layout).
+    const bool shortInspector = ImGui::GetContentRegionAvail().y < 20.0f * line;
+    const std::size_t chainRows =
+        hasStrip ? std::min<std::size_t>(chain_.members.size(), shortInspector ? 2 : 4) : 0;
+    // The strip's heading, each tile's label and size, the spacing between them and the scrollbar.
+    const float stripText = 4.0f * line + ImGui::GetStyle().ScrollbarSize;
+    const float leastView = shortInspector ? 40.0f : 64.0f;
     const float tileHeight =
         hasStrip ? std::clamp(ImGui::GetContentRegionAvail().y - probeHeightFor(chainRows, hasStrip, line) -
-                                  64.0f - stripText,
-                              24.0f, kStripTileHeight)
+                                  leastView - stripText,
+                              kLeastStripTileHeight, kStripTileHeight)
                  : 0.0f;
     const float stripHeight = hasStrip ? tileHeight + stripText : 0.0f;
     const float probeHeight = probeHeightFor(chainRows, hasStrip, line);
     ImVec2 avail = ImGui::GetContentRegionAvail();
-    ImVec2 viewSize(avail.x, std::max(avail.y - stripHeight - probeHeight, 64.0f));
+    ImVec2 viewSize(avail.x, std::max(avail.y - stripHeight - probeHeight, leastView));
 
     std::optional<PixelProbe::Target> target = probe_.target(hovered_);
     auto inView = [&](const PixelProbe::Target& t) { return t.texture.empty() || t.texture == selected_; };

@@ -8,6 +8,7 @@
 #include "base/log.hpp"
 #include "ui/markdown_view.hpp"
 #include "ui/ui_style.hpp"
+#include "ui/word_wrap.hpp"
 
 namespace fx {
 
@@ -72,6 +73,17 @@ void drawParam(ParamSet& params, const Param& p) {
 }  // namespace
 
 void drawParams(ParamSet& params, int step) {
+    // Every name and its source tag fit beside the widgets ("grid_size [default]" was cut at the
+    // column's edge): the widgets give up width for the widest, down to half the column.
+    float widest = 0.0f;
+    for (const Param& p : params.all())
+        widest = std::max(widest, ImGui::CalcTextSize(p.name.c_str()).x +
+                                      ImGui::CalcTextSize(cat("[", toString(p.source()), "]").c_str()).x);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float labels = widest + 2.0f * style.ItemInnerSpacing.x + style.ItemSpacing.x +
+                         ImGui::GetTreeNodeToLabelSpacing();  // the folded ones are indented
+    ImGui::PushItemWidth(
+        std::max(ImGui::GetContentRegionAvail().x - labels, 0.5f * ImGui::GetContentRegionAvail().x));
     // The step's own parameters first; those that act only in other steps folded underneath, so a
     // step's panel shows what changes its picture and the rest stays one click away.
     std::vector<const Param*> others;
@@ -81,11 +93,11 @@ void drawParams(ParamSet& params, int step) {
         else
             others.push_back(&p);
     }
-    if (others.empty()) return;
-    if (ImGui::TreeNode("other steps", "other steps (%d)", int(others.size()))) {
+    if (!others.empty() && ImGui::TreeNode("other steps", "other steps (%d)", int(others.size()))) {
         for (const Param* p : others) drawParam(params, *p);
         ImGui::TreePop();
     }
+    ImGui::PopItemWidth();
 }
 
 namespace {
@@ -159,7 +171,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
-        ImGui::TextUnformatted(s.title.c_str());
+        drawWrappedText(s.title);  // Japanese titles too: no lone "る" or "8" on the last line
         ImGui::PopStyleColor();
         if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
         ImGui::PopTextWrapPos();

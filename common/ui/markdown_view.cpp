@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "base/line_break.hpp"
 #include "base/markdown_text.hpp"
 #include "ui/ui_style.hpp"
 
@@ -43,7 +44,7 @@ float drawFlow(const std::vector<Span>& spans, ImVec2 origin, float width) {
                               : span.style == Style::Code     ? kCode
                               : span.style == Style::Emphasis ? kEmphasis
                                                               : ImGui::GetStyle().Colors[ImGuiCol_Text];
-        for (std::string_view piece : markdown::breakPieces(text)) {
+        for (std::string_view piece : lineBreakPieces(text)) {
             if (x == 0.0f) {
                 while (!piece.empty() && piece.front() == ' ') piece.remove_prefix(1);
                 if (piece.empty()) continue;
@@ -72,6 +73,72 @@ float drawFlow(const std::vector<Span>& spans, ImVec2 origin, float width) {
     return x > 0.0f || y > 0.0f ? y + lineHeight : 0.0f;
 }
 
+// A table's rows (blocks with cells; the first may be its header) in columns: each column as wide as
+// its widest cell where the text's width allows, otherwise shared in proportion, its cells wrapped.
+// Returns the height used.
+float drawTable(std::vector<Block*> rows, ImVec2 origin, float width) {
+    const float em = ImGui::GetFontSize();
+    const float pad = 0.4f * em;
+    std::size_t columns = 0;
+    for (Block* r : rows) {
+        for (auto& cell : r->cells)
+            std::erase_if(cell, [](const Span& s) { return s.style == Style::Picture; });
+        columns = std::max(columns, r->cells.size());
+    }
+    if (columns == 0) return 0.0f;
+    // Each column between its widest word (a line cannot break inside one) and its widest cell on one
+    // line; what the text's width leaves over the least goes to the columns that want more, in
+    // proportion to what they want, so a table never runs past the text's right edge if it can help it.
+    std::vector<float> natural(columns, 0.0f), least(columns, 0.0f);
+    for (const Block* r : rows) {
+        for (std::size_t c = 0; c < r->cells.size(); ++c) {
+            float w = 0.0f;
+            for (const Span& s : r->cells[c]) {
+                w += widthOf(s.text);
+                for (std::string_view piece : lineBreakPieces(s.text))
+                    least[c] = std::max(least[c], widthOf(withoutTrailingSpaces(piece)) + 2 * pad + 1.0f);
+            }
+            natural[c] = std::max(natural[c], w + 2 * pad + 1.0f);
+        }
+    }
+    float leastTotal = 0.0f, wanted = 0.0f;
+    for (std::size_t c = 0; c < columns; ++c) {
+        natural[c] = std::max(natural[c], least[c]);
+        leastTotal += least[c];
+        wanted += natural[c] - least[c];
+    }
+    std::vector<float> column = least;
+    const float spare = std::max(width - leastTotal, 0.0f);
+    for (std::size_t c = 0; c < columns; ++c)
+        column[c] += wanted > 0.0f ? std::min(1.0f, spare / wanted) * (natural[c] - least[c]) : 0.0f;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImU32 rule = ui_style::packed(ImVec4(1.0f, 1.0f, 1.0f, 0.18f));
+    float y = 0.0f;
+    for (const Block* r : rows) {
+        float x = 0.0f, height = 0.0f;
+        for (std::size_t c = 0; c < columns; ++c) {
+            if (c < r->cells.size()) {
+                std::vector<Span> cell = r->cells[c];
+                if (r->tableHeader)
+                    for (Span& s : cell) s.style = Style::Strong;
+                height = std::max(height, drawFlow(cell, ImVec2(origin.x + x + pad, origin.y + y + 2.0f),
+                                                   column[c] - 2 * pad));
+            }
+            x += column[c];
+        }
+        height = std::max(height, ImGui::GetTextLineHeight()) + 4.0f;
+        y += height;
+        draw->AddLine(ImVec2(origin.x, origin.y + y), ImVec2(origin.x + x, origin.y + y), rule,
+                      r->tableHeader ? 2.0f : 1.0f);
+    }
+    float x = 0.0f;
+    for (std::size_t c = 0; c + 1 < columns; ++c) {
+        x += column[c];
+        draw->AddLine(ImVec2(origin.x + x, origin.y), ImVec2(origin.x + x, origin.y + y), rule);
+    }
+    return y;
+}
+
 }  // namespace
 
 void drawMarkdown(std::string_view text) {
@@ -80,7 +147,26 @@ void drawMarkdown(std::string_view text) {
     const ImVec2 start = ImGui::GetCursorScreenPos();
     float y = 0.0f;
     bool first = true;
-    for (Block& block : markdown::parseBlocks(text)) {
+    std::vector<Block> blocks = markdown::parseBlocks(text);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        Block& block = blocks[i];
+        if (!block.cells.empty()) {
+            // A table: this row and those after it up to the next table's header.
+            std::vector<Block*> rows{&block};
+            while (i + 1 < blocks.size() && !blocks[i + 1].cells.empty() && !blocks[i + 1].tableHeader)
+                rows.push_back(&blocks[++i]);
+            const bool onlyPictures = std::all_of(rows.begin(), rows.end(), [](const Block* r) {
+                return std::all_of(r->cells.begin(), r->cells.end(), [](const std::vector<Span>& cell) {
+                    return std::all_of(cell.begin(), cell.end(),
+                                       [](const Span& s) { return s.style == Style::Picture; });
+                });
+            });
+            if (onlyPictures) continue;  // a table of pictures: the picture is on the screen already
+            if (!first) y += 0.5f * em;
+            first = false;
+            y += drawTable(rows, ImVec2(start.x, start.y + y), width);
+            continue;
+        }
         // Pictures are left out: the picture is on the screen already, and the step's text reads
         // without them.
         std::erase_if(block.spans, [](const Span& s) { return s.style == Style::Picture; });

@@ -1,8 +1,8 @@
 #pragma once
-// Draws a step's markdown text in the overlay (the subset base/markdown_text.hpp parses): paragraphs
-// wrapped to the window, lists with bullets or numbers, `code` on a dark ground, **bold** in the
-// heading colour, *emphasis* tinted, ``` blocks unwrapped; pictures are left out. Japanese
-// wraps between characters, since it has no spaces.
+// Draws a step's markdown text in the overlay (the blocks base/markdown_text.hpp reads): paragraphs
+// wrapped to the window where Unicode's rules let a line break (base/line_break.hpp, Japanese rules
+// included), lists with bullets or numbers, tables in columns, `code` on a dark ground, **bold** in
+// the heading colour, *emphasis* tinted, ``` blocks unwrapped; pictures are left out.
 #include <string_view>
 
 namespace fx {

@@ -61,9 +61,10 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
         ImGui::TextColored(ui_style::kError, "graph error: %s", e.c_str());
     const int columns = oneMethod ? 8 : 9;
 
-    // The frame window is a narrow column: every column keeps a width its header and its words fit
-    // in, the pass (and its number) stay in place, and the columns to the right scroll sideways, so no
-    // name is squeezed to a letter a line and no header is cut. Widths follow the text size.
+    // The frame window is a narrow column: every column keeps a width its header fits in, the pass
+    // (and its number) stay in place, and the columns to the right scroll sideways. Each pass is one
+    // line, so a 1280x720 window shows many: a cell wider than its column is cut with "..." and shows
+    // the whole text on hover (columns can be dragged wider). Widths follow the text size.
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_Resizable | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
@@ -96,7 +97,7 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
             ImGui::TextUnformatted("-");
         }
         ImGui::TableNextColumn();
-        drawWrappedName(p.name);
+        drawOneLine(p.name);
         ImGui::TableNextColumn();
         if (p.timeMs && copyMs > 0.0) {
             ImGui::Text("%.3f (%.2f)", *p.timeMs, *p.timeMs / copyMs);
@@ -121,35 +122,32 @@ void drawPassTable(const FrameReport& frame, double copyMs) {
                 "modelled memory traffic at 1920x1080 (MB) / texture lookups per pixel written");
         if (!oneMethod) {
             ImGui::TableNextColumn();
-            ImGui::PushTextWrapPos(0.0f);
-            ImGui::TextUnformatted(p.timingMethod.c_str());
-            ImGui::PopTextWrapPos();
+            drawOneLine(p.timingMethod);
         }
         ImGui::TableNextColumn();
         if (p.executed) {
             ImGui::TextUnformatted("ran");
         } else {
-            ImGui::PushTextWrapPos(0.0f);
             std::string status(toString(p.status));
             bool saysStatus = p.reason.rfind(status, 0) == 0;
-            ImGui::TextUnformatted(saysStatus || p.reason.empty()
-                                       ? (p.reason.empty() ? status : p.reason).c_str()
-                                       : cat(status, ": ", p.reason).c_str());
-            ImGui::PopTextWrapPos();
+            drawOneLine(saysStatus || p.reason.empty() ? (p.reason.empty() ? status : p.reason)
+                                                       : cat(status, ": ", p.reason));
         }
         ImGui::TableNextColumn();
         if (!p.stateLeft.empty() || !p.stateInherited.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
-            ImGui::PushTextWrapPos(0.0f);
             // Inherited first: it is what the pass ran with without asking for it.
-            for (const std::string& s : p.stateInherited) ImGui::TextUnformatted(s.c_str());
-            for (const std::string& s : p.stateLeft) ImGui::TextUnformatted(cat("left ", s).c_str());
-            ImGui::PopTextWrapPos();
+            std::string state;
+            for (const std::string& s : p.stateInherited) state += cat(state.empty() ? "" : "; ", s);
+            for (const std::string& s : p.stateLeft) state += cat(state.empty() ? "" : "; ", "left ", s);
+            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
+            drawOneLine(state);
             ImGui::PopStyleColor();
         }
         ImGui::TableNextColumn();
+        std::string wrote;
         for (const TextureUseRecord& w : p.writes)
-            drawWrappedName(w.alsoRead ? cat(w.texture, " (+=)") : w.texture);
+            wrote += cat(wrote.empty() ? "" : ", ", w.texture, w.alsoRead ? " (+=)" : "");
+        drawOneLine(wrote);
         if (!p.executed) ImGui::PopStyleColor();
         ImGui::PopID();
     }

@@ -1,25 +1,36 @@
 #include "ui/word_wrap.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include <imgui.h>
+
+#include "base/line_break.hpp"
 
 namespace fx {
 namespace {
 
 bool breaksAfter(char c) {
-    return c == ' ' || c == '.' || c == '_' || c == '/' || c == '(';
+    return c == '.' || c == '_' || c == '/' || c == '(';
 }
 
-// The words with what follows them: "a.b c" -> "a.", "b ", "c".
+// The places a line may break (Unicode's rules, base/line_break.hpp), and inside a name after the
+// ".", "_", "/" and "(" that join its words: "particles.pool view" -> "particles.", "pool ", "view".
+// A dot between digits is a number's ("0.25") and stays.
 std::vector<std::string_view> words(std::string_view text) {
     std::vector<std::string_view> out;
-    std::size_t start = 0;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const bool last = i + 1 == text.size();
-        // A run of spaces stays with the word before it.
-        if (last || (breaksAfter(text[i]) && text[i + 1] != ' ')) {
-            out.push_back(text.substr(start, i + 1 - start));
-            start = i + 1;
+    for (std::string_view piece : lineBreakPieces(text)) {
+        std::size_t start = 0;
+        for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+            const bool digits = i > 0 && std::isdigit(static_cast<unsigned char>(piece[i - 1])) &&
+                                std::isdigit(static_cast<unsigned char>(piece[i + 1]));
+            // A space always ends a word of a name, even before "/" ("inherited / left").
+            if ((breaksAfter(piece[i]) || piece[i] == ' ') && piece[i + 1] != ' ' && !digits) {
+                out.push_back(piece.substr(start, i + 1 - start));
+                start = i + 1;
+            }
         }
+        out.push_back(piece.substr(start));
     }
     return out;
 }
@@ -65,6 +76,28 @@ WrappedText wrapAtWords(std::string_view text, float width,
     return out;
 }
 
+WrappedText oneLine(std::string_view text, float width,
+                    const std::function<float(std::string_view)>& measure) {
+    WrappedText out;
+    if (text.empty()) return out;
+    if (measure(text) <= width) {
+        out.lines.emplace_back(text);
+    } else {
+        out.lines.push_back(elide(text, width, measure));
+        out.elided = true;
+    }
+    return out;
+}
+
+void drawOneLine(const std::string& text) {
+    const WrappedText line = oneLine(text, ImGui::GetContentRegionAvail().x, [](std::string_view s) {
+        return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x;
+    });
+    if (line.lines.empty()) return;
+    ImGui::TextUnformatted(line.lines.front().c_str());
+    if (line.elided && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
 void drawWrappedName(const std::string& text) {
     const float width = ImGui::GetContentRegionAvail().x;
     const WrappedText wrapped = wrapAtWords(
@@ -73,6 +106,16 @@ void drawWrappedName(const std::string& text) {
     for (const std::string& line : wrapped.lines) ImGui::TextUnformatted(line.c_str());
     ImGui::EndGroup();
     if (wrapped.elided && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
+void drawWrappedText(std::string_view text) {
+    const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
+    ImGui::BeginGroup();
+    for (const std::string& line : wrapLines(text, width, [](std::string_view s) {
+             return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x;
+         }))
+        ImGui::TextUnformatted(line.c_str());
+    ImGui::EndGroup();
 }
 
 }  // namespace fx

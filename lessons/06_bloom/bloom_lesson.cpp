@@ -366,6 +366,8 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
                 "the scene's brightest emitters");
         return;
     }
+    // The emitters stay in the report: the chains' text quotes the firefly and the sun from it.
+    out.check("brightestEmitters", brightestEmitters(frame.world.scene(), 3));
     BloomChainSettings s = chainFor(step);
     std::vector<BloomLevel> levels = bloomLevels(frame.size, firstLevelDivisor(s.filters), s.levels);
     out.add("chainFormat", std::string(toString(s.format)), "chain format");

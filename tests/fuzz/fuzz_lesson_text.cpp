@@ -1,6 +1,7 @@
 // Lesson text (base/lesson_text.hpp, base/markdown_text.hpp) on any bytes: the step sections, matched
 // as a lesson.md and as a translation, and each section's markdown as the overlay lays it out.
 #include "base/lesson_text.hpp"
+#include "base/line_break.hpp"
 #include "base/markdown_text.hpp"
 #include "fuzz_input.hpp"
 
@@ -16,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const fx::StepSection& section : *sections) {
         for (const auto& block : fx::markdown::parseBlocks(section.text)) (void)block;
         for (const auto& span : fx::markdown::parseSpans(section.text)) (void)span;
-        for (auto piece : fx::markdown::breakPieces(section.text)) (void)piece;
+        for (auto piece : fx::lineBreakPieces(section.text)) (void)piece;
     }
     return 0;
 }

@@ -3,6 +3,8 @@
 #include "test_ui_harness.hpp"
 #include "ui/texture_chain.hpp"
 
+#include <imgui.h>
+
 using namespace fx;
 using namespace fx::test;
 
@@ -123,5 +125,12 @@ TEST_F(UiChain, ASixLevelNamedChainFitsTheInspectorAt1280x720) {
         EXPECT_GE(tile.screenX, 0.0f) << tile.label;
         EXPECT_LE(tile.screenX + float(tile.width), 1280.0f) << tile.label << " is off the right edge";
         EXPECT_LE(tile.screenY + float(tile.height), 720.0f) << tile.label << " is below the window";
+        // Its label and size under it, inside the inspector's padding: "134x75" was cut at the
+        // window's foot at the default inspector height.
+        const float textBelow =
+            2.0f * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y;
+        EXPECT_LE(tile.screenY + float(tile.height) + textBelow, 720.0f) << tile.label << "'s size is cut";
     }
+    // Readable at the default layout: the first level's tile is no 24-pixel sliver.
+    EXPECT_GE(tiles.front().height, 40) << "the chain strip at the default inspector height";
 }

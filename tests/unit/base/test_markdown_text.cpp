@@ -1,4 +1,5 @@
-// The markdown a step's text uses, as the overlay draws it.
+// The markdown a step's text uses, read by md4c (CommonMark with GitHub's tables), as the overlay and
+// the handout draw it.
 #include <gtest/gtest.h>
 
 #include "base/markdown_text.hpp"
@@ -23,17 +24,20 @@ std::string styles(const std::vector<Span>& spans) {
 TEST(Markdown, InlineStyles) {
     EXPECT_EQ(styles(parseSpans("a **bold** and `T*J*p` and *soft* [link](x.md) ![pic](p.png) \\*x")),
               "[a ][B:bold][ and ][C:T*J*p][ and ][I:soft][ link ][P:pic][ *x]");
-    // A star inside a product is not emphasis; an unclosed mark stays as it is.
-    EXPECT_EQ(styles(parseSpans("T*J and (T*J)*p cost `64` **open")),
+    // CommonMark: stars between words pair up as emphasis, so a product in the text is escaped or
+    // written as code; an unclosed mark stays as it is.
+    EXPECT_EQ(styles(parseSpans("T\\*J and (T\\*J)\\*p cost `64` **open")),
               "[T*J and (T*J)*p cost ][C:64][ **open]");
+    EXPECT_EQ(styles(parseSpans("T*J and (T*J)*p")), "[T][I:J and (T][J)*p]");
     // Bold drops the marks inside it: it is one colour.
     EXPECT_EQ(styles(parseSpans("**Seed `000`'s bloom.**")), "[B:Seed 000's bloom.]");
 }
 
 TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
     // Each "[" used to search the rest of the text for "](": four million of them (a lesson.md may be 64
-    // MiB) took hours. Now one pass, and the link after them still reads as a link.
-    const std::string many(4'000'000, '[');
+    // MiB) took hours. md4c reads them in time linear in the text (a million here: under a second),
+    // and the link after them still reads as a link.
+    const std::string many(1'000'000, '[');
     auto spans = parseSpans(many + "[a](x.md) ![pic](p.png)");
     ASSERT_EQ(spans.size(), 2u);
     EXPECT_EQ(spans[0].text, many + "a ");
@@ -41,9 +45,9 @@ TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
     // Many "[" each with a long label that holds another "[" before the one link.
     std::string labels;
     for (int i = 0; i < 20000; ++i) labels += "[" + std::string(200, 'a');
-    // A million pictures that never close: each used to search the rest for ")".
+    // Pictures that never close: each used to search the rest for ")".
     std::string pictures;
-    for (int i = 0; i < 1'000'000; ++i) pictures += "![a](";
+    for (int i = 0; i < 250'000; ++i) pictures += "![a](";
     EXPECT_EQ(styles(parseSpans(pictures)), "[" + pictures + "]");
     std::string read = "b " + labels;
     read.erase(read.rfind('['), 1);  // the last "[" opens the link; its label is read as text
@@ -52,11 +56,12 @@ TEST(Markdown, ManyOpenBracketsAreReadInOnePass) {
 
 TEST(Markdown, APictureWhoseAltTextHoldsBrackets) {
     // Lesson 10 step 3's picture: the alt text quotes an interval, the target has parentheses.
-    EXPECT_EQ(
-        styles(parseSpans("![Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8](../x (1).png) "
-                          "after")),
-        "[P:Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8][ after]");
+    EXPECT_EQ(styles(parseSpans(
+                  "![Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8](<../x (1).png>) "
+                  "after")),
+              "[P:Step 3: where the sum leaves [0, 1] (red above 1); right, RGBA8][ after]");
     EXPECT_EQ(styles(parseSpans("see [the [1] table](t.md)")), "[see the [1] table]");
+    EXPECT_EQ(parseSpans("![a [0, 1]](<../x (1).png>)").front().target, "../x (1).png");
     // Unbalanced: left as text, never a crash or a lost tail.
     EXPECT_EQ(styles(parseSpans("![open [0, 1](p.png")), "[![open [0, 1](p.png]");
     EXPECT_EQ(styles(parseSpans("[a] (b)")), "[[a] (b)]");
@@ -114,28 +119,35 @@ TEST(Markdown, JapaneseLinesJoinWithoutASpace) {
     EXPECT_EQ(blocks[0].spans[0].text, "大きいレベルに足し込みます。 RGBA8 に書く。 A B");
 }
 
+TEST(Markdown, ReadsAsCommonMark) {
+    // Bold holds code and line breaks as one bold span (lesson 09's hard cases).
+    EXPECT_EQ(styles(parseBlocks("**Field of view near 0 and near\n180°**: kept, `x`").front().spans),
+              "[B:Field of view near 0 and near 180°][: kept, ][C:x]");
+    EXPECT_EQ(styles(parseSpans("**bold `code` bold**")), "[B:bold code bold]");
+    // A line that starts with "+ " starts a list, as in any CommonMark reader (lesson 08 wraps its
+    // formula so that no line does).
+    auto blocks = parseBlocks("The factor `x 0.5\n+ 0.5` rises.");
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_EQ(blocks[1].kind, BlockKind::ListItem);
+    EXPECT_EQ(parseBlocks("The factor `x 0.5 +\n0.5` rises.").size(), 1u);
+    // Raw HTML is shown as the text it is; entities read as their characters.
+    EXPECT_EQ(styles(parseSpans("<b>x</b> &amp; &#x41; &#66; &unknown;")), "[<b>x</b> & A B &unknown;]");
+    // Numbered lists keep their numbers, loose items their text; a nested list is deeper.
+    blocks = parseBlocks("3. a\n\n4. b\n   - c\n");
+    ASSERT_EQ(blocks.size(), 3u);
+    EXPECT_EQ(blocks[0].marker, "3.");
+    EXPECT_EQ(blocks[1].marker, "4.");
+    EXPECT_EQ(styles(blocks[1].spans), "[b]");
+    EXPECT_EQ(blocks[2].indent, 1);
+    // A row of bars without a separator line is no table.
+    blocks = parseBlocks("| a | b |\n| c | d |\n");
+    ASSERT_EQ(blocks.size(), 1u);
+    EXPECT_TRUE(blocks[0].cells.empty());
+}
+
 TEST(Markdown, EmptyTextHasNoBlocks) {
     EXPECT_TRUE(parseBlocks("").empty());
     EXPECT_TRUE(parseBlocks("\n\n  \n").empty());
-}
-
-TEST(Markdown, BreakPiecesKeepSpacesWithWordsAndSplitJapanese) {
-    std::vector<std::string_view> words = breakPieces("two words  here");
-    ASSERT_EQ(words.size(), 3u);
-    EXPECT_EQ(words[0], "two ");
-    EXPECT_EQ(words[1], "words  ");
-    EXPECT_EQ(words[2], "here");
-    // Japanese: one character a piece, closing punctuation kept with the character before it;
-    // a Latin word inside Japanese stays whole.
-    std::vector<std::string_view> ja = breakPieces("明るい。RGBA8に");
-    ASSERT_EQ(ja.size(), 5u);
-    EXPECT_EQ(ja[0], "明");
-    EXPECT_EQ(ja[2], "い。");
-    EXPECT_EQ(ja[3], "RGBA8");
-    EXPECT_EQ(ja[4], "に");
-    std::string joined;
-    for (auto p : breakPieces("a 明るい b")) joined += p;
-    EXPECT_EQ(joined, "a 明るい b");
 }
 
 TEST(Markdown, DecodesUtf8AndReplacesBrokenBytes) {
