@@ -296,7 +296,7 @@ TEST(Params, AStepOpensWithItsOwnValuesAndAChangeStaysWithItsStep) {
     params.addFloat("exposure", &exposure, 0.0f, 4.0f, "every step");
     params.addInt("grid_size", &grid, 1, 64, "step 3").inSteps({2});
     const fx::Param& b = *params.find("broken_shader");  // after the last add: the list may move
-    ASSERT_TRUE(params.assign("exposure=2").ok());  // the command line: every step's start
+    ASSERT_TRUE(params.assign("exposure=2").ok());       // the command line: every step's start
     params.markStartingValues();
 
     broken = 0;
