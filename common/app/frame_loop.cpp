@@ -95,6 +95,7 @@ void FrameLoop::run() {
     const std::uint64_t frames = std::uint64_t(plan_.frames);
     lastReloadCheck_ = Clock::now();
     gl::resetDebugCounters();
+    paramStep_ = s_.step;
 
     for (std::uint64_t index = 0; frames == 0 || index < frames; ++index) {
         resources_.atFrame(index, s_.step, context_.framebufferSize());
@@ -110,6 +111,7 @@ void FrameLoop::run() {
         }
         const Clock::time_point frameStart = Clock::now();
         if (!takeKeys(frameStart, index)) break;
+        enterStep();
         const bool drawOverlay = overlay_ && overlayVisible_;
         const Placement at = placeFrame(drawOverlay);
         if (drawOverlay && overlay_->costPanel().measurePending() && !at.extent.empty()) {
@@ -120,6 +122,10 @@ void FrameLoop::run() {
         if (s_.exercise) (void)s_.exercise->recheckIfChanged();
         const double delta = clock_.advance();
         FrameInfo frame = frameInfo(index, delta, at);
+        // The step before at this picture's size: the place or the scale changed while comparing.
+        if (compare_ != CompareMode::Off && picture_ && picture_->previousStep() &&
+            picture_->previousSize() != at.extent)
+            refreshPrevious_ = true;
         if (refreshPrevious_ && !at.extent.empty()) renderPreviousStepNow(at, index);
         if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, frame.deltaSeconds);
         s_.lesson->update(frame);
@@ -290,6 +296,9 @@ void FrameLoop::setCompare(CompareMode mode) {
     // Both steps at one moment: the clock holds while comparing, and the step before is drawn again at
     // this moment when the view opens.
     clock_.hold(on);
+    // And at one scale: an automatic scale holds while comparing (F6 still changes it, and then the step
+    // before is drawn again at the new size).
+    pictureScale_.hold(on);
     if (on && !wasOn) refreshPrevious_ = true;
     // While it is on the lesson window says what is compared (FrameLoop::drawOverlay); off, a notice.
     if (on) {
@@ -303,8 +312,10 @@ void FrameLoop::setCompare(CompareMode mode) {
 void FrameLoop::renderPreviousStepNow(const Placement& at, std::uint64_t index) {
     refreshPrevious_ = false;
     const std::optional<int> previous = picture_->previousStep();
-    if (!previous || *previous == s_.step || previousSeconds_ == clock_.seconds()) return;
+    if (!previous || *previous == s_.step) return;
+    if (previousSeconds_ == clock_.seconds() && picture_->previousSize() == at.extent) return;
     const int current = std::exchange(s_.step, *previous);
+    s_.params.changeStep(current, *previous);  // the step before with its own values
     FrameInfo frame = frameInfo(index, 0.0, at);
     if (SceneWork* work = renderer_.sceneWork()) work->update(frame.seconds, 0.0);
     s_.lesson->update(frame);
@@ -313,7 +324,15 @@ void FrameLoop::renderPreviousStepNow(const Placement& at, std::uint64_t index) 
     (void)renderer_.render(*s_.lesson, frame, request);
     picture_->keepAsPrevious(*previous);
     previousSeconds_ = frame.seconds;
+    s_.params.changeStep(*previous, current);
     s_.step = current;
+}
+
+void FrameLoop::enterStep() {
+    if (s_.step == paramStep_) return;
+    s_.params.changeStep(paramStep_, s_.step);
+    paramStep_ = s_.step;
+    record_.expectedErrorsBeforeStep = gl::debugCounters().expectedErrors;
 }
 
 bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
@@ -534,7 +553,7 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     model.renderer = cat(context_.renderer(), " (", context_.kind(), ")");
     model.frameMs = record_.facts.frameCpuMs.empty() ? 0 : record_.facts.frameCpuMs.back();
     model.glErrors = gl::debugCounters().errors;
-    model.glExpectedErrors = gl::debugCounters().expectedErrors;
+    model.glExpectedErrors = gl::debugCounters().expectedErrors - record_.expectedErrorsBeforeStep;
     model.shaderErrors = programs_.errors();
     model.status = s_.status;
     if (Clock::now() < noticeUntil_) model.notice = notice_;

@@ -53,6 +53,8 @@ struct RunRecord {
     double clockSeconds = 0;
     std::uint64_t clockSteps = 0;
     bool clockPaused = false;
+    // The run's count of GL errors shown on purpose when the step on screen began.
+    std::int64_t expectedErrorsBeforeStep = 0;
 };
 
 class FrameLoop {
@@ -90,6 +92,8 @@ private:
 
     // False when the run should end (Esc, or another lesson asked for).
     bool takeKeys(Clock::time_point now, std::uint64_t index);
+    // After the keys and the overlay may have changed the step: the step's own parameters and counts.
+    void enterStep();
     void setCompare(CompareMode mode);
     // On a probe exercise's step F3 shows the student's result, the reference's and their difference
     // (app/exercise_session.hpp) instead of comparing steps.
@@ -133,6 +137,9 @@ private:
     ExerciseView exerciseView_ = ExerciseView::Off;
     ExerciseView loggedExerciseView_ = ExerciseView::Off;  // the view whose place the log has said
     int renderedStep_ = -1;                                // the step the picture now in picture_ shows
+    // The step whose parameters and counts are in force: a step change moves the parameters to the new
+    // step's own (ParamSet::changeStep) and starts its count of the GL errors it shows on purpose.
+    int paramStep_ = -1;
     double previousSeconds_ = -1.0;  // the lesson clock's time of the kept picture of the step before
     bool refreshPrevious_ = false;   // draw the step before again, at this moment, before this frame
     Size2D lastPlace_;               // the picture's place last frame (the scale restarts on a change)

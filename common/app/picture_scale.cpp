@@ -11,7 +11,9 @@ namespace {
 // Scales are whole multiples of 5%, so a steady renderer settles on one and the textures of the
 // frame graph keep their size from frame to frame.
 constexpr double kQuantum = 0.05;
-constexpr double kSmallest = 0.10;
+// A pinned scale may be anything from 1%; an automatic one never goes below half the place's width and
+// height: below that the picture is a blur, whatever the frame gains.
+constexpr double kSmallest = 0.01;
 // Aim below the budget, so that a frame's noise does not push it over; grow only when the larger
 // picture would still be well inside it.
 constexpr double kAim = 0.75;
@@ -111,8 +113,25 @@ void PictureScale::remember(double typical) {
     if (measured_.size() > 4) measured_.erase(measured_.begin());
 }
 
+double PictureScale::chooseScale(const Cost& c) const {
+    // The frame the model expects at a scale; the scales worth having are on the grid from the
+    // smallest an automatic scale goes to up to the whole picture.
+    auto predicted = [&c](double scale) { return c.fixed + c.pixels * scale * scale; };
+    const double full = predicted(1.0);
+    const double aim = kAim * budgetMs_;
+    const int steps = int(std::lround((1.0 - kSmallestAutomatic) / kQuantum));
+    // The largest scale whose frame is within the aim.
+    for (int i = 0; i <= steps; ++i) {
+        const double scale = quantizeDown(1.0 - i * kQuantum);
+        if (predicted(scale) <= aim) return scale;
+    }
+    // None is: the smallest scale answers soonest, and it is worth its blur only when it at least halves
+    // the whole picture's frame; otherwise the picture stays whole (the drop would buy nothing).
+    return predicted(kSmallestAutomatic) <= 0.5 * full ? kSmallestAutomatic : 1.0;
+}
+
 void PictureScale::frameTook(double ms) {
-    if (pinned_ || !(ms >= 0)) return;
+    if (pinned_ || held_ || !(ms >= 0)) return;
     if (settle_ > 0) {
         --settle_;
         return;
@@ -122,21 +141,16 @@ void PictureScale::frameTook(double ms) {
     const bool farOver = ms > 2.0 * budgetMs_;
     if (!farOver && int(samples_.size()) < kSamples) return;
     const double typical = farOver ? ms : median(samples_);
+    lastTypical_ = typical;
     remember(typical);
     const Cost c = cost();
-    const double aim = kAim * budgetMs_;
-    // The smallest picture worth having: below it the pixels are under a tenth of the frame, and a
-    // frame whose time is not in its pixels would lose its picture for nothing.
-    const double worthwhile = c.pixels > 0 ? std::sqrt(std::min(1.0, 0.1 * c.fixed / c.pixels)) : 1.0;
-    notPixels_ = c.fixed >= aim;
+    const double chosen = chooseScale(c);
+    // Over the budget however small the picture (within the smallest worth having): the time is not in
+    // the pixels, and the notice says so.
+    notPixels_ = c.fixed + c.pixels * kSmallestAutomatic * kSmallestAutomatic > kAim * budgetMs_;
     if (typical > budgetMs_) {
-        double wanted = c.fixed < aim && c.pixels > 0 ? std::sqrt((aim - c.fixed) / c.pixels) : worthwhile;
-        wanted = std::max(wanted, worthwhile);
-        // Down by at least one step while the model says it helps; never below the smallest worth having.
-        double next = quantizeDown(wanted);
-        if (next >= scale_ && !notPixels_) next = std::max(scale_ - kQuantum, kSmallest);
-        if (notPixels_) next = std::max(next, quantizeDown(worthwhile));
-        setScale(std::clamp(next, kSmallest, 1.0));
+        // Down to what pays (or back up when the scale tried showed that it does not).
+        setScale(chosen);
     } else if (scale_ < 1.0) {
         // Up to the largest scale whose frame the model keeps well inside the budget: a cheap step after a
         // slow one gets its picture back in a frame or two, not fifty.
@@ -145,23 +159,30 @@ void PictureScale::frameTook(double ms) {
             if (c.fixed + c.pixels * next * next >= kGrowBelow * budgetMs_) break;
             larger = std::min(next, 1.0);
         }
-        setScale(larger);
+        setScale(std::max(larger, chosen));
     }
     if (samples_.size() > std::size_t(kSamples)) samples_.erase(samples_.begin());
 }
 
 std::string PictureScale::notice(Size2D place) const {
-    if (scale_ >= 1.0 || place.empty()) return {};
+    if (place.empty()) return {};
     const Size2D r = rendered(place);
-    const std::string size = cat(place.width, "x", place.height, " (", r.width, "x", r.height, ")");
-    if (pinned_) return cat("picture at ", percentText(scale_), " of ", size, ", pinned (F6 changes it)");
-    if (notPixels_)
+    const std::string picture = cat("picture at ", percentText(scale_), " of ", place.width, "x",
+                                    place.height, " (", r.width, "x", r.height, ")");
+    if (pinned_) return scale_ < 1.0 ? cat(picture, ", pinned (F6 changes it)") : std::string();
+    const bool over = lastTypical_ > budgetMs_;
+    if (!over && scale_ >= 1.0) return {};
+    if (!over)
+        return cat(picture, ": slow renderer, frame budget ", int(budgetMs_), " ms (F6 pins the scale)");
+    // Over the budget at the scale that pays best: say what the frame costs and where the time is.
+    const Cost c = cost();
+    const std::string frame = cat("this step's frame takes ", int(std::lround(lastTypical_)), " ms, about ",
+                                  int(std::lround(c.fixed)), " ms of it whatever the picture's size");
+    if (scale_ >= 1.0)
         return cat(
-            "picture at ", percentText(scale_), " of ", size,
-            ": slow renderer; most of this step's frame is not in its pixels, so a smaller picture would not bring it within the ",
-            int(budgetMs_), " ms budget (F6 pins the scale)");
-    return cat("picture at ", percentText(scale_), " of ", size, ": slow renderer, frame budget ",
-               int(budgetMs_), " ms (F6 pins the scale)");
+            frame, ": a smaller picture would not bring it within the ", int(budgetMs_),
+            " ms budget, so the picture stays whole; keys and clicks wait in order (F6 pins the scale)");
+    return cat(picture, ": ", frame, "; keys and clicks wait in order (F6 pins the scale)");
 }
 
 }  // namespace fx

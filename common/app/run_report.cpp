@@ -49,6 +49,7 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     j["glVersion"] = f.glVersion;
     j["glErrors"] = f.glErrors;
     j["glExpectedErrors"] = f.glExpectedErrors;
+    j["glExpectedErrorsThisStep"] = f.glExpectedErrorsThisStep;
     j["glWarnings"] = f.glWarnings;
     if (!f.lastGlError.empty()) j["lastGlError"] = f.lastGlError;
     j["timing"] = {{"method", f.timingMethod}, {"reason", f.timingReason}};
@@ -127,8 +128,16 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     for (auto& [label, value] : f.shownFacts) shown.push_back({{"label", label}, {"value", value}});
     j["shownFacts"] = shown;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
-    for (const ParamFact& p : f.params)
-        params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});
+    for (const ParamFact& p : f.params) {
+        nlohmann::ordered_json param = {{"name", p.name}, {"value", p.value}, {"source", p.source}};
+        if (!p.changedInSteps.empty()) {
+            nlohmann::ordered_json steps = nlohmann::ordered_json::object();
+            for (const auto& [step, value] : p.changedInSteps) steps[std::to_string(step)] = value;
+            param["changedInSteps"] = steps;
+        }
+        if (p.pinned) param["pinned"] = true;
+        params.push_back(param);
+    }
     j["params"] = params;
     return j;
 }

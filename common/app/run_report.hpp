@@ -17,6 +17,9 @@ namespace fx {
 // A parameter's value at the end of the run and where it came from ("scene", "command line"...).
 struct ParamFact {
     std::string name, value, source;
+    // The values changed in other steps than the one shown (1-based step, value text), and a pin.
+    std::vector<std::pair<int, std::string>> changedInSteps;
+    bool pinned = false;
 };
 
 struct RunFacts {
@@ -31,6 +34,8 @@ struct RunFacts {
     std::uint64_t framesRun = 0;
     void addFrame(double cpuMs, double passMs);
     std::int64_t glErrors = 0, glExpectedErrors = 0, glWarnings = 0;
+    // Of glExpectedErrors, those since the last step began (the panel's "this step shows on purpose").
+    std::int64_t glExpectedErrorsThisStep = 0;
     std::string lastGlError;
     std::vector<std::string> shaderErrors;
     std::vector<std::pair<std::string, std::string>> lessonFacts;

@@ -55,6 +55,7 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
     facts.stepTitle = s.step < int(steps.size()) ? steps[std::size_t(s.step)] : "";
     facts.glErrors = gl::debugCounters().errors;
     facts.glExpectedErrors = gl::debugCounters().expectedErrors;
+    facts.glExpectedErrorsThisStep = facts.glExpectedErrors - record.expectedErrorsBeforeStep;
     facts.glWarnings = gl::debugCounters().warnings;
     facts.lastGlError = gl::debugCounters().lastError;
     facts.shaderErrors = programs.errors();
@@ -64,8 +65,13 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         facts.lessonFacts.emplace_back(f.name, f.value);
         if (f.shown) facts.shownFacts.emplace_back(f.shownLabel(), f.value);
     }
-    for (const Param& p : s.params.all())
-        facts.params.push_back({p.name, p.text(), std::string(toString(p.source()))});
+    for (const Param& p : s.params.all()) {
+        ParamFact fact{p.name, p.text(), std::string(toString(p.source())), {}, p.pinned};
+        for (const auto& [step, value] : p.stepValues) {
+            if (step != s.step) fact.changedInSteps.emplace_back(step + 1, p.valueText(value));
+        }
+        facts.params.push_back(fact);
+    }
 
     int exitCode = 0;
     if (!plan.captureDir.empty()) {

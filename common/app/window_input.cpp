@@ -3,6 +3,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <deque>
 #include <utility>
 
 namespace fx {
@@ -50,28 +51,62 @@ constexpr WindowKey kWindowKeys[] = {
      &KeyPresses::quit},
 };
 
-// GLFW callbacks are plain functions: the presses of the one lesson window go here.
-KeyPresses* pending = nullptr;
-KeyPresses presses;
+// GLFW callbacks are plain functions: the presses of the one lesson window go here, one entry a press
+// in the order they came (a slow frame must not fold three presses of F6 into one).
+std::deque<KeyPresses>* pending = nullptr;
+std::deque<KeyPresses> queued;
+// More than a person presses during any frame; a stuck key repeating cannot grow the queue past it.
+constexpr std::size_t kMostQueued = 256;
+
+void enqueue(const KeyPresses& press) {
+    if (pending && pending->size() < kMostQueued) pending->push_back(press);
+}
 
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action != GLFW_PRESS || !pending) return;
+    KeyPresses press;
     if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER || key == GLFW_KEY_ESCAPE)
-        pending->enterOrEscape = true;
+        press.enterOrEscape = true;
     // Ctrl/Alt/Super chords are someone else's (the window manager's, ImGui's text fields').
-    if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return;
-    // Shift+= is "+" on most layouts; the key is the same.
-    for (const WindowKey& k : kWindowKeys) {
-        if (k.key != key && (k.alternate == 0 || k.alternate != key)) continue;
-        pending->*k.press = true;
+    if (!(mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER))) {
+        // Shift+= is "+" on most layouts; the key is the same.
+        for (const WindowKey& k : kWindowKeys) {
+            if (k.key != key && (k.alternate == 0 || k.alternate != key)) continue;
+            press.*k.press = true;
+        }
     }
+    if (press.any()) enqueue(press);
 }
 
 void onMouseButton(GLFWwindow*, int, int action, int) {
-    if (action == GLFW_PRESS && pending) pending->clicked = true;
+    if (action != GLFW_PRESS) return;
+    KeyPresses press;
+    press.clicked = true;
+    enqueue(press);
+}
+
+// Keys whose effect the next frame must show before another key acts: the step, the lesson, the
+// compare view, the overlay, a screenshot, quitting.
+bool endsABatch(const KeyPresses& p) {
+    return p.next || p.previous || p.nextLesson || p.previousLesson || p.compare || p.toggleOverlay ||
+           p.screenshot || p.quit;
 }
 
 }  // namespace
+
+bool KeyPresses::any() const {
+    for (const WindowKey& k : kWindowKeys) {
+        if (this->*k.press) return true;
+    }
+    return clicked || enterOrEscape;
+}
+
+bool KeyPresses::overlaps(const KeyPresses& o) const {
+    for (const WindowKey& k : kWindowKeys) {
+        if (this->*k.press && o.*k.press) return true;
+    }
+    return (clicked && o.clicked) || (enterOrEscape && o.enterOrEscape);
+}
 
 KeyPresses& KeyPresses::operator|=(const KeyPresses& o) {
     for (const WindowKey& k : kWindowKeys) this->*k.press = this->*k.press || o.*k.press;
@@ -114,8 +149,8 @@ std::optional<KeyPresses> keyPressNamed(std::string_view token) {
 
 WindowInput::WindowInput(GLFWwindow* window) : window_(window) {
     if (!window_) return;
-    presses = {};
-    pending = &presses;
+    queued.clear();
+    pending = &queued;
     glfwSetKeyCallback(window_, onKey);
     glfwSetMouseButtonCallback(window_, onMouseButton);
 }
@@ -125,9 +160,19 @@ WindowInput::~WindowInput() {
 }
 
 KeyPresses WindowInput::takeKeyPresses() {
-    KeyPresses taken = presses;
-    presses = {};
-    return window_ ? taken : KeyPresses{};
+    KeyPresses batch;
+    if (!window_) return batch;
+    while (!queued.empty() && !batch.overlaps(queued.front())) {
+        const KeyPresses press = queued.front();
+        queued.pop_front();
+        batch |= press;
+        if (endsABatch(press)) break;
+    }
+    return batch;
+}
+
+std::size_t WindowInput::waiting() const {
+    return window_ ? queued.size() : 0;
 }
 
 Pointer WindowInput::pointer(Size2D framebuffer, int placeX, int placeY, Size2D place, Size2D picture,

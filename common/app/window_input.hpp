@@ -26,6 +26,8 @@ struct KeyPresses {
     bool clicked = false, enterOrEscape = false;
 
     KeyPresses& operator|=(const KeyPresses& o);
+    bool any() const;
+    bool overlaps(const KeyPresses& o) const;  // a key (or a click) pressed in both
 };
 
 // The keys a text field being edited uses itself (arrows, space, ".", "+", "-", Esc), moved out of
@@ -53,8 +55,13 @@ public:
     WindowInput(const WindowInput&) = delete;
     WindowInput& operator=(const WindowInput&) = delete;
 
-    // The presses since the last call.
+    // The presses for this frame, in the order they came: every press is queued, and a frame takes
+    // them up to a second press of a key it already has (three F6 presses during one slow frame are
+    // three frames' presses, not one) or up to a key whose effect the next frame must show (a step
+    // change, F3, F12...); the rest wait for the frames that follow.
     KeyPresses takeKeyPresses();
+    // Presses still queued for later frames.
+    std::size_t waiting() const;
     // The mouse in the picture's pixels, bottom-left origin. The picture is drawn into `placeX`,
     // `placeY` (from the top-left, framebuffer pixels) at `place`'s size, scaled from `picture` (the
     // size it was rendered at: the frame budget's scale); the pointer is present only over it.

@@ -260,9 +260,46 @@ void ParamSet::assignFrom(Param& p, double value, ParamSource source) {
 
 void ParamSet::markEdited(const Param& param) {
     if (Param* p = findMutable(param.name)) {
+        if (p->origin != ParamSource::overlay) {
+            p->stepBaseValue = p->originValue;
+            p->stepBaseOrigin = p->origin;
+        }
         p->origin = ParamSource::overlay;
         p->originValue = p->get();
     }
+}
+
+void ParamSet::changeStep(int from, int to) {
+    if (from == to) return;
+    for (Param& p : params_) {
+        if (p.pinned) continue;
+        const bool changed = p.source() == ParamSource::overlay;
+        // The value the steps start from: what the value came from before the program changed it.
+        const bool overlayOrigin = p.origin == ParamSource::overlay;
+        const double baseValue = overlayOrigin ? p.stepBaseValue : p.originValue;
+        const ParamSource baseOrigin = overlayOrigin ? p.stepBaseOrigin : p.origin;
+        // A value back at the base where it acts is no longer a change there; a change made while a
+        // step it does not act in was shown is its steps'.
+        std::vector<int> owners{from};
+        if (!p.actsIn(from)) owners = changed ? p.steps : std::vector<int>{};
+        for (int owner : owners) {
+            std::erase_if(p.stepValues, [owner](const auto& v) { return v.first == owner; });
+            if (changed) p.stepValues.emplace_back(owner, p.get());
+        }
+        assignFrom(p, baseValue, baseOrigin);
+        p.stepBaseValue = baseValue;
+        p.stepBaseOrigin = baseOrigin;
+        for (const auto& [step, value] : p.stepValues) {
+            if (step != to) continue;
+            p.set(value);
+            p.origin = ParamSource::overlay;
+            p.originValue = p.get();
+        }
+    }
+}
+
+void ParamSet::setPinned(const Param& param, bool pinned) {
+    if (Param* p = findMutable(param.name)) p->pinned = pinned;
 }
 
 void ParamSet::markStartingValues() {
@@ -295,7 +332,11 @@ void ParamSet::restore(const std::vector<Saved>& saved) {
 }
 
 void ParamSet::resetAll() {
-    for (auto& p : params_) assignFrom(p, p.startValue, p.startOrigin);
+    for (auto& p : params_) {
+        assignFrom(p, p.startValue, p.startOrigin);
+        p.stepValues.clear();
+        p.pinned = false;
+    }
 }
 
 namespace {

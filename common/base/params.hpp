@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "base/result.hpp"
@@ -87,6 +88,14 @@ struct Param {
     // The steps (0-based) the parameter acts in; empty: every step. The overlay lists only the
     // parameters of the step on screen, so a step never shows another step's settings.
     std::vector<int> steps;
+
+    // A value changed in the running program belongs to the step it was changed in (ParamSet::changeStep):
+    // the value changed in each step (0-based), the value every other step starts from (what the run, a
+    // preset or Reset gave before the change), and whether the teacher pinned it for every step.
+    std::vector<std::pair<int, double>> stepValues;
+    double stepBaseValue = 0;
+    ParamSource stepBaseOrigin = ParamSource::lessonDefault;
+    bool pinned = false;
 
     // Names the scene setting that gives this parameter its starting value.
     Param& fromScene(std::string setting) {
@@ -211,6 +220,14 @@ public:
 
     // The overlay changed this parameter.
     void markEdited(const Param& param);
+    // The step shown changes from `from` to `to` (0-based): each value changed in the running program
+    // (source overlay) is kept as the step's own where it was changed (a change made while the step
+    // shown is not one the parameter acts in belongs to the steps it acts in), and every parameter that
+    // is not pinned takes `to`'s value: the one changed there, or else the one the steps start from. So
+    // a step opens with its own values, never with a change made for another step's point.
+    void changeStep(int from, int to);
+    // Pinned: the value stays whatever the step (until unpinned or Reset).
+    void setPinned(const Param& param, bool pinned);
     // The current values become what resetAll() returns to (the runner calls this once the scene,
     // preset and command line are applied).
     void markStartingValues();
@@ -220,7 +237,8 @@ public:
     std::vector<const Param*> forStep(int step) const;
     const std::vector<Param>& all() const { return params_; }
     std::vector<const Param*> knobs() const;
-    // Back to the starting values (the lesson's defaults until markStartingValues()).
+    // Back to the starting values (the lesson's defaults until markStartingValues()), in every step:
+    // the steps' changes are forgotten and nothing stays pinned.
     void resetAll();
 
     // Every value with its source, to put back after a temporary change (the bench's sweep).

@@ -7,6 +7,12 @@
 // down for the one frame that follows, so Dear ImGui sees each press exactly once; a modifier let go
 // since the last frame reads as down too, so a quick Ctrl+click stays one. (Dear ImGui 1.87
 // queues input events itself; the text typed goes through the character callback and was never lost.)
+//
+// The mouse buttons likewise: 1.86 reads the cursor where it is when the frame begins, so a click made
+// during a slow frame acted on whatever was under the cursor a second later, and two clicks in one
+// frame were one. The latch queues each press and release with the cursor where it was at that moment
+// and hands Dear ImGui one a frame (as 1.87's queue trickles them), so a click acts on what was under
+// the mouse when it was pressed.
 struct GLFWwindow;
 
 namespace fx {
@@ -20,7 +26,8 @@ public:
     KeyLatch& operator=(const KeyLatch&) = delete;
 
     // After the backend's NewFrame, before ImGui::NewFrame: the keys pressed since the last frame
-    // read as down this frame; a key held down for ImGui last frame and let go since reads as up.
+    // read as down this frame; a key held down for ImGui last frame and let go since reads as up; the
+    // oldest queued mouse press or release is this frame's, at the cursor position it had then.
     void beforeNewFrame();
 
 private:

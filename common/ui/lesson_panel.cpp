@@ -45,27 +45,41 @@ bool drawParamWidget(const Param& p) {
     return false;
 }
 
+// Right-click on a parameter: keep its value in every step, or let it belong to this step again.
+void pinMenu(ParamSet& params, const Param& p) {
+    if (!ImGui::BeginPopupContextItem("pin")) return;
+    bool pinned = p.pinned;
+    if (ImGui::MenuItem("keep this value in every step", nullptr, &pinned)) params.setPinned(p, pinned);
+    ImGui::EndPopup();
+}
+
 void drawParam(ParamSet& params, const Param& p) {
     ImGui::PushID(p.name.c_str());
     if (drawParamWidget(p)) params.markEdited(p);
     bool hovered = ImGui::IsItemHovered();
-    // Where the value came from, beside it: a teacher sees at once what the scene set.
+    pinMenu(params, p);
+    // Where the value came from, beside it: a teacher sees at once what the scene set, and which values
+    // were changed here (they belong to this step: ParamSet::changeStep) or are kept in every step.
     ParamSource source = p.source();
     ImGui::SameLine();
-    std::string tag = cat("[", toString(source), "]");
-    if (source == ParamSource::lessonDefault) {
+    std::string tag = p.pinned                         ? "[kept in every step]"
+                      : source == ParamSource::overlay ? "[changed in this step]"
+                                                       : cat("[", toString(source), "]");
+    if (source == ParamSource::lessonDefault && !p.pinned) {
         ImGui::TextDisabled("%s", tag.c_str());
     } else {
         ImGui::TextColored(ui_style::kHeading, "%s", tag.c_str());
     }
     hovered = hovered || ImGui::IsItemHovered();
+    pinMenu(params, p);
     if (hovered) {
         std::string from = cat("from: ", toString(source));
         if (source == ParamSource::scene) from += cat(" (", p.sceneSetting, ")");
         if (!p.sceneSetting.empty() && source != ParamSource::scene)
             from += cat("; the scene setting ", p.sceneSetting, " starts it when the scene has one");
-        ImGui::SetTooltip("%s\n(%s%s)\n%s", p.description.c_str(), p.rangeText().c_str(),
-                          p.knob ? "; a quality knob" : "", from.c_str());
+        ImGui::SetTooltip("%s\n(%s%s)\n%s\n%s", p.description.c_str(), p.rangeText().c_str(),
+                          p.knob ? "; a quality knob" : "", from.c_str(),
+                          "A change belongs to the step it is made in; right-click keeps it in every step.");
     }
     ImGui::PopID();
 }
@@ -103,9 +117,9 @@ void drawParams(ParamSet& params, int step) {
 namespace {
 
 // The step's text scrolls in a region of its own, so the parameters under it stay in reach: as tall
-// as the text was last frame, at most about half the window. Each step has its own region, so a new
-// step starts at the top of its text.
-void drawStepText(const std::string& text, int step) {
+// as the text was last frame, at most about half the window. Each step has its own region, opened at
+// the top of its text whenever the step is (`opened`).
+void drawStepText(const std::string& text, int step, bool opened) {
     if (text.empty()) return;
     ImGui::PushID(step);
     ImGuiStorage* storage = ImGui::GetStateStorage();
@@ -114,6 +128,7 @@ void drawStepText(const std::string& text, int step) {
     const float most =
         std::max(ImGui::GetWindowHeight() * 0.5f, 6.0f * ImGui::GetTextLineHeightWithSpacing());
     ImGui::BeginChild("step text", ImVec2(0.0f, std::min(wanted, most)), false);
+    if (opened) ImGui::SetScrollY(0.0f);
     drawMarkdown(text);
     storage->SetFloat(key, ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y);
     ImGui::EndChild();
@@ -138,36 +153,74 @@ void drawLessonPages(const OverlayModel& m) {
     }
 }
 
+// What the teacher just did and what holds now (a notice, the paused clock, the compare view, the
+// picture's scale), in a strip of fixed height under the step's row: notices come and go with the
+// automatic scale and a teacher's keys, and nothing under them may move while a click is on its way.
+// More than fits scrolls inside the strip.
+void drawNotices(const OverlayModel& m) {
+    const float height = 3.0f * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y;
+    ImGui::BeginChild("notices", ImVec2(0.0f, height), false);
+    if (!m.notice.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kNotice);
+        ImGui::TextWrapped("%s", m.notice.c_str());
+        ImGui::PopStyleColor();
+    }
+    for (const std::string* line : {&m.clock, &m.compare, &m.pictureScale}) {
+        if (line->empty()) continue;
+        ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
+        ImGui::TextWrapped("%s", line->c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::EndChild();
+}
+
+// The step's row: its number, the arrows and the text's languages.
+void drawStepRow(const OverlayModel& m) {
+    int& step = *m.step;
+    ImGui::Text("Step %d of %d", step + 1, int(m.steps.size()));
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("prev", ImGuiDir_Left) && step > 0) --step;
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("next", ImGuiDir_Right) && step + 1 < int(m.steps.size())) ++step;
+    if (m.languages.size() > 1 && m.setLanguage) {
+        // The text's language: lesson.md or its translation (--lang on the command line).
+        for (const std::string& language : m.languages) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
+        }
+    }
+}
+
+void drawStepBody(const OverlayModel& m, bool opened);
+
 }  // namespace
 
 void drawLessonWindowContents(const OverlayModel& m) {
+    // The step's row and the notices hold still at the top; the rest scrolls under them, and a step
+    // change opens it at the step's title.
+    const bool hasSteps = m.step && !m.steps.empty();
+    if (hasSteps) {
+        drawStepRow(m);
+        drawNotices(m);
+    }
+    ImGui::BeginChild("step body", ImVec2(0.0f, 0.0f), false);
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID shownKey = ImGui::GetID("step shown");
+    const int shown = hasSteps ? *m.step : -1;
+    const bool opened = storage->GetInt(shownKey, -1) != shown;
+    if (opened) {
+        ImGui::SetScrollY(0.0f);
+        storage->SetInt(shownKey, shown);
+    }
+    drawStepBody(m, opened);
+    ImGui::EndChild();
+}
+
+namespace {
+
+void drawStepBody(const OverlayModel& m, bool opened) {
     if (m.step && !m.steps.empty()) {
-        int& step = *m.step;
-        ImGui::Text("Step %d of %d", step + 1, int(m.steps.size()));
-        ImGui::SameLine();
-        if (ImGui::ArrowButton("prev", ImGuiDir_Left) && step > 0) --step;
-        ImGui::SameLine();
-        if (ImGui::ArrowButton("next", ImGuiDir_Right) && step + 1 < int(m.steps.size())) ++step;
-        if (m.languages.size() > 1 && m.setLanguage) {
-            // The text's language: lesson.md or its translation (--lang on the command line).
-            for (const std::string& language : m.languages) {
-                ImGui::SameLine();
-                if (ImGui::RadioButton(language.c_str(), language == m.language)) m.setLanguage(language);
-            }
-        }
-        // What the teacher just did, confirmed where the eye is; then while the clock stands still, the
-        // picture compares or gives way to a slow renderer, the lesson window says so (wrapped).
-        if (!m.notice.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kNotice);
-            ImGui::TextWrapped("%s", m.notice.c_str());
-            ImGui::PopStyleColor();
-        }
-        for (const std::string* line : {&m.clock, &m.compare, &m.pictureScale}) {
-            if (line->empty()) continue;
-            ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kWarning);
-            ImGui::TextWrapped("%s", line->c_str());
-            ImGui::PopStyleColor();
-        }
+        const int step = *m.step;
         const LessonStep& s = m.steps[std::size_t(step)];
         ImGui::PushTextWrapPos(0.0f);
         ImGui::PushStyleColor(ImGuiCol_Text, ui_style::kHeading);
@@ -175,7 +228,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
         ImGui::PopStyleColor();
         if (!s.note.empty()) ImGui::TextDisabled("%s", s.note.c_str());
         ImGui::PopTextWrapPos();
-        drawStepText(s.text, step);
+        drawStepText(s.text, step, opened);
         drawLessonPages(m);
     }
     if (!m.textError.empty()) {
@@ -196,7 +249,8 @@ void drawLessonWindowContents(const OverlayModel& m) {
         drawParams(*m.params, step);
         if (ImGui::Button("Reset")) m.params->resetAll();
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Back to the values the run started with (scene, preset, command line)");
+            ImGui::SetTooltip(
+                "Back to the values the run started with (scene, preset, command line), in every step");
         if (m.onSavePreset) {
             ImGui::SameLine();
             if (ImGui::Button("Save preset")) m.onSavePreset();
@@ -223,5 +277,7 @@ void drawLessonWindowContents(const OverlayModel& m) {
     }
     if (!m.status.empty()) ImGui::TextDisabled("%s", m.status.c_str());
 }
+
+}  // namespace
 
 }  // namespace fx

@@ -85,6 +85,11 @@ void PictureView::keepAsPrevious(int step) {
     previousStep_ = step;
 }
 
+Size2D PictureView::previousSize() const {
+    if (!previous_ || !previousStep_) return {};
+    return {previous_.width(), previous_.height()};
+}
+
 void PictureView::present(GLuint window, int windowHeight, const LayoutRect& place, CompareMode mode) const {
     if (!target_.framebuffer.name() || place.width < 1 || place.height < 1) return;
     GlStateScope keep;

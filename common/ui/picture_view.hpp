@@ -57,6 +57,8 @@ public:
     // the new step renders). `step` is 0-based.
     void keepAsPrevious(int step);
     std::optional<int> previousStep() const { return previousStep_; }
+    // The size the kept picture was rendered at (empty when none is kept).
+    Size2D previousSize() const;
 
     // Draws the picture (or the compare view) into `window` at `place` (top-left origin, window pixels;
     // the window's framebuffer is windowHeight tall). GL state is left as it was found.

@@ -15,7 +15,8 @@
 #   measure      F7 in lesson 05 step 4 with the inspector open: the cost panel's sweep runs a slice a
 #                frame to its end without a GL error; a second run cancels it with Esc and goes on
 #   focus        lesson 05 step 2: ctrl+click a parameter's slider, type a value, Enter, the right arrow,
-#                Esc (xdotool): the value is the parameter's, the step moved, "." never paused the clock
+#                Esc (xdotool): the value is the parameter's in step 2 (step 3 opens with its own), the
+#                step moved, "." never paused the clock
 #   lesson-clock lesson 07 step 2 at a forced 150 ms a frame: the hitch and its burst on the third frame
 #                only, and the window's picture byte for byte the headless capture of the same frames
 #   compare-moment lesson 08 step 6 to 7 with 0.5 s clock steps, then F3 twice: the difference of the two
@@ -24,6 +25,11 @@
 #                the first frame, and the finished picture byte for byte the headless one
 #   picture-scale lesson 10 step 4 with --picture-scale 40%: the picture rendered at 40% of its place and
 #                scaled into it; from the automatic scale, F6 pins it at 100%
+#   compare-scale compare-moment's steps, F3 twice, then F6 halves the picture while comparing: both
+#                pictures at the new scale (the step before drawn again), so only the shadows differ
+#   slow-input   lesson 04 step 2 at a forced 1.2 s a frame (xdotool): F6 three times within one frame is
+#                three presses in order, and a click made at the same moment, while the picture-scale
+#                notice changes from one frame to the next, lands on split_view's checkbox
 # Each run gets its own settings folder (FXLAB_CONFIG_DIR), so no teacher's ui.json is read or written.
 # The picture scale is pinned at 100% (unless the case is about it): the checks compare the window's
 # pixels with the lesson's own picture, and a loaded machine would otherwise shrink it.
@@ -38,7 +44,7 @@ if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
 fi
 rm -rf "$work" && mkdir -p "$work"
 export FXLAB_CONFIG_DIR="$work/config"
-lesson() { ls "$lessons"/fxlab-"$1"-* 2>/dev/null | head -1; }
+lesson() { ls "$lessons"/fxlab-"$1"-* 2>/dev/null | sed -n 1p; }
 # run <folder> <exe> [flags]: the run's captures and report in <folder>, its log beside it.
 run() {
   local out="$1" exe="$2"; shift 2
@@ -127,7 +133,7 @@ case "$case_" in
     "$exe" --size 1280x720 --step 2 --picture-scale 1 --capture "$work/focus" --report "$work/focus/report.json" \
       >"$work/focus.log" 2>&1 &
     app=$!
-    wid="$(timeout 30 xdotool search --sync --onlyvisible --name "fxlab 5:" | head -1)"
+    wid="$(timeout 30 xdotool search --sync --onlyvisible --name "fxlab 5:" | sed -n 1p)"
     [ -n "$wid" ] || { kill "$app"; echo "FAIL: no lesson window"; exit 1; }
     xdotool windowfocus --sync "$wid"
     # The overlay has drawn (its font is made at its first frame), so clicks land on its widgets.
@@ -159,7 +165,10 @@ def check(cond, what):
     global ok
     print(("ok:   " if cond else "FAIL: ") + what)
     ok = ok and cond
-check(params["centre_x"]["value"] == "0.3", f"the typed value is the parameter's (centre_x = {params['centre_x']['value']})")
+# The value typed belongs to step 2, where it was typed; step 3 opens with its own.
+typed = params["centre_x"].get("changedInSteps", {}).get("2")
+check(typed == "0.3", f"the typed value is the parameter's in step 2 (centre_x there = {typed})")
+check(params["centre_x"]["source"] != "overlay", f"and step 3 opened with its own (centre_x = {params['centre_x']['value']}, {params['centre_x']['source']})")
 check(r["step"] == 3, f"Enter let go of the keyboard: the right arrow moved to step 3 (step {r['step']})")
 check(not r["clock"]["paused"], "the '.' typed into the field did not pause the clock")
 sys.exit(0 if ok else 1)
@@ -210,6 +219,58 @@ PY
     cmp -s "$work/done/picture.png" "$work/headless/final.png" ||
       { echo "FAIL: the reference summed over frames is not the headless one"; exit 1; }
     checked "$work/done" ;;
+  compare-scale)
+    # As compare-moment, then F6 (pinned 100% to 50%) while the difference shows: the step before is
+    # drawn again at the new scale; compared at two scales every edge of the clouds would light.
+    frames=9 run scaled "$(lesson 08)" --size 1280x720 --step 6 --time-step 0.5 --press right@2 --press F3@5 --press F3@6 --press F6@7
+    python3 - "$work/scaled/report.json" <<'PY' || { echo "FAIL: F6 did not halve the picture while comparing"; exit 1; }
+import json, sys
+p = json.load(open(sys.argv[1]))["picture"]
+print(p)
+sys.exit(0 if p["rendered"] == [448, 252] else 1)
+PY
+    checked "$work/scaled" --difference --lit-below 0.08 ;;
+  slow-input)
+    command -v xdotool >/dev/null || { echo "FAIL: xdotool is missing (Debian package xdotool)"; exit 1; }
+    exe="$(lesson 04)"
+    mkdir -p "$work/slow"
+    "$exe" --size 1280x720 --step 2 --picture-scale 50% --min-frame-time 1200 --capture "$work/slow" \
+      --report "$work/slow/report.json" >"$work/slow.log" 2>&1 &
+    app=$!
+    wid="$(timeout 30 xdotool search --sync --onlyvisible --name "fxlab 4:" | sed -n 1p)"
+    [ -n "$wid" ] || { kill "$app"; echo "FAIL: no lesson window"; exit 1; }
+    xdotool windowfocus --sync "$wid"
+    for _ in $(seq 1 120); do grep -q "overlay font" "$work/slow.log" && break; sleep 0.5; done
+    sleep 3
+    # Within one frame: F6 three times (50% pinned -> 25% -> automatic -> 100%: the notice changes on
+    # each of the next three frames, and is gone on the third), then a click on split_view's checkbox.
+    xdotool key --delay 30 F6 F6 F6
+    xdotool mousemove --window "$wid" "${SLOW_X:-17}" "${SLOW_Y:-345}" click 1
+    sleep 8
+    xdotool key Escape
+    if ! timeout 30 tail --pid="$app" -f /dev/null; then
+      kill "$app"; echo "FAIL: Esc did not quit the lesson (log: $work/slow.log)"; exit 1
+    fi
+    wait "$app" || { echo "FAIL: the lesson exited with an error:"; cat "$work/slow.log"; exit 1; }
+    python3 - "$work/slow.log" "$work/slow/report.json" <<'PY' || { echo "FAIL: slow-input (log: $work/slow.log)"; exit 1; }
+import json, sys
+log = open(sys.argv[1]).read()
+r = json.load(open(sys.argv[2]))
+ok = True
+def check(cond, what):
+    global ok
+    print(("ok:   " if cond else "FAIL: ") + what)
+    ok = ok and cond
+said = [line.split("picture scale ", 1)[1].strip() for line in log.splitlines() if "picture scale pinned" in line or "picture scale automatic" in line]
+check(len(said) == 3 and said[0].startswith("pinned at 25%") and said[1].startswith("automatic") and said[2].startswith("pinned at 100%"),
+      f"three F6 presses in one frame acted three times, in order: {said}")
+params = {p["name"]: p for p in r["params"]}
+check(params["split_view"]["value"] == "false", f"the click landed on split_view's checkbox (split_view = {params['split_view']['value']})")
+others = [n for n, p in params.items() if p["source"] == "overlay" and n != "split_view"]
+check(not others, f"and on nothing else: {others}")
+sys.exit(0 if ok else 1)
+PY
+    ;;
   picture-scale)
     frames=4 scale=40% run scaled "$(lesson 10)" --size 1280x720 --step 4
     python3 - "$work/scaled/report.json" <<'PY' || { echo "FAIL: picture-scale"; exit 1; }

@@ -27,7 +27,7 @@ wait_for() {  # a line in the log, for up to 60 s while the lesson runs
   done
   echo "FAIL: no \"$1\" in 60 s:"; cat "$log"; return 1
 }
-wid="$(timeout 30 xdotool search --sync --onlyvisible --name "fxlab 5:" | head -1 || true)"
+wid="$(timeout 30 xdotool search --sync --onlyvisible --name "fxlab 5:" | sed -n 1p || true)"
 [ -n "$wid" ] || { echo "FAIL: no lesson window:"; cat "$log"; exit 1; }
 # Each key to the lesson's window, focused again first.
 press() { xdotool windowfocus --sync "$wid"; xdotool key "$1"; }

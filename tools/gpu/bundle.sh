@@ -32,13 +32,13 @@ done | sort -u | while read -r lib; do
 done
 # Opened with dlopen by the glad loader (gladLoaderLoadEGL / gladLoaderLoadGL).
 for name in libEGL.so.1 libGLdispatch.so.0 libOpenGL.so.0 libGL.so.1 libGLX.so.0; do
-  path="$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ { print $NF; exit }')"
+  path="$(ldconfig -p | awk -v n="$name" '!found && $1 == n && /x86-64/ { print $NF; found = 1 }')"
   [ -n "$path" ] || { echo "bundle.sh: $name not found (Debian package libegl1 / libopengl0 / libgl1)" >&2; exit 2; }
   cp -L "$path" "$bundle/lib/$name"
 done
 {
   echo "made: $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "from: $(cd "$(dirname "$0")/../.." && git describe --always --dirty 2>/dev/null || echo unknown)"
-  echo "on: $(. /etc/os-release && echo "$PRETTY_NAME"), $(ldd --version | head -1)"
+  echo "on: $(. /etc/os-release && echo "$PRETTY_NAME"), $(ldd --version | sed -n 1p)"
 } >"$bundle/BUNDLE"
 echo "bundle: $(du -sh "$bundle" | cut -f1) in $bundle ($(ls "$bundle" | grep -c '^fx') programs, $(ls "$bundle/lib" | wc -l) libraries)"

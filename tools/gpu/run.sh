@@ -107,7 +107,7 @@ for exe in "${lessons[@]}"; do
       --tolerance "$tolerance" "${expect[@]}" >"$dir/check.log" 2>&1
     code=$?
     # "RMSE r, max difference m, n texels differ": the measured difference, whatever the verdict.
-    nums="$(grep -oE 'RMSE [0-9.e+-]+, max difference [0-9]+, [0-9]+ texels' "$dir/check.log" | head -1 |
+    nums="$(grep -oE 'RMSE [0-9.e+-]+, max difference [0-9]+, [0-9]+ texels' "$dir/check.log" | sed -n 1p |
             sed -E 's/RMSE ([^,]+), max difference ([0-9]+), ([0-9]+) texels/\1,\2,\3/')"
     result=pass; [ "$code" -eq 0 ] || { result=fail; failed "$name step $k: $(grep -m1 FAIL "$dir/check.log")"; }
     echo "$name,$k,$result,${nums:-,,}" >>"$out/smoke.csv"

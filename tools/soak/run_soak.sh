@@ -24,7 +24,7 @@ base=160x90
 segment=10  # frames per state: one --resource-log sample each
 status=0
 for number in "${numbers[@]}"; do
-  exe="$(ls "$lessons"/fxlab-"$number"-* 2>/dev/null | head -1)"
+  exe="$(ls "$lessons"/fxlab-"$number"-* 2>/dev/null | sed -n 1p)"
   [ -x "$exe" ] || { echo "FAIL: no lesson $number in $lessons"; status=1; continue; }
   name="$(basename "$exe")"
   steps="$("$exe" --list-steps 2>/dev/null | grep -c '^[0-9][0-9]*\. ')"

@@ -284,3 +284,64 @@ TEST(Params, ASliderSaysWhatZeroStandsForOnlyAtZero) {
     EXPECT_EQ(params.find("light_count")->sliderFormat(), "%d");
     EXPECT_EQ(params.find("blur")->sliderFormat(), "%.3f");
 }
+
+TEST(Params, AStepOpensWithItsOwnValuesAndAChangeStaysWithItsStep) {
+    // Lesson 01: broken_shader acts in steps 1 and 2 and starts at syntax_error; the teacher sets it to
+    // none in step 1 (as the text says), and step 2 must still open with its own broken shader.
+    int broken = 1;
+    float exposure = 1.0f;
+    int grid = 8;
+    fx::ParamSet params;
+    params.addChoice("broken_shader", &broken, {"none", "syntax_error"}, "broken").inSteps({0, 1});
+    params.addFloat("exposure", &exposure, 0.0f, 4.0f, "every step");
+    params.addInt("grid_size", &grid, 1, 64, "step 3").inSteps({2});
+    const fx::Param& b = *params.find("broken_shader");  // after the last add: the list may move
+    ASSERT_TRUE(params.assign("exposure=2").ok());       // the command line: every step's start
+    params.markStartingValues();
+
+    broken = 0;
+    params.markEdited(b);
+    params.changeStep(0, 1);
+    EXPECT_EQ(broken, 1) << "step 2 opens with its own broken shader";
+    EXPECT_EQ(b.source(), fx::ParamSource::lessonDefault);
+    EXPECT_FLOAT_EQ(exposure, 2.0f) << "a command-line value is every step's";
+    params.changeStep(1, 0);
+    EXPECT_EQ(broken, 0) << "back in step 1, the change made there";
+    EXPECT_EQ(b.source(), fx::ParamSource::overlay);
+
+    // A drag in the picture changes a value without markEdited: it belongs to its step too.
+    exposure = 3.0f;
+    params.changeStep(0, 1);
+    EXPECT_FLOAT_EQ(exposure, 2.0f);
+    EXPECT_EQ(params.find("exposure")->source(), fx::ParamSource::commandLine);
+    params.changeStep(1, 0);
+    EXPECT_FLOAT_EQ(exposure, 3.0f);
+
+    // A change made while another step is shown (the folded "other steps") belongs to the steps the
+    // parameter acts in.
+    grid = 20;
+    params.markEdited(*params.find("grid_size"));
+    params.changeStep(0, 2);
+    EXPECT_EQ(grid, 20);
+    params.changeStep(2, 3);
+    EXPECT_EQ(grid, 8);
+
+    // Pinned: kept in every step, then unpinned it is the step's own.
+    params.changeStep(3, 0);
+    params.setPinned(b, true);
+    params.changeStep(0, 1);
+    EXPECT_EQ(broken, 0) << "a pinned value is every step's";
+    params.setPinned(b, false);
+    params.changeStep(1, 4);
+    EXPECT_EQ(broken, 1);
+    params.changeStep(4, 1);
+    EXPECT_EQ(broken, 0) << "unpinned in step 2, the value is step 2's";
+
+    // Reset forgets every step's change and every pin.
+    params.setPinned(b, true);
+    params.resetAll();
+    EXPECT_FALSE(b.pinned);
+    params.changeStep(1, 0);
+    EXPECT_EQ(broken, 1);
+    EXPECT_FLOAT_EQ(exposure, 2.0f);
+}
