@@ -45,7 +45,7 @@ const Words kJapanese{
     .handout = "fxlab ハンドアウト",
     .contents = "目次",
     .step = "ステップ",
-    .facts = "事実",
+    .facts = "情報",
     .inspector = "インスペクターで見るテクスチャ",
     .frameGraph = "フレームグラフ",
     .passTable = "パステーブル",

@@ -128,8 +128,10 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     j["shownFacts"] = shown;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const ParamFact& p : f.params)
-        params.push_back({{"name", p.name}, {"value", p.value}, {"source", p.source}});
+        params.push_back({{"name", p.name}, {"label", p.label}, {"value", p.value}, {"source", p.source}});
     j["params"] = params;
+    j["language"] = f.language;
+    j["missingWords"] = f.missingWords;
     return j;
 }
 

@@ -22,6 +22,8 @@ struct OverlayKey {
 
 struct OverlayModel {
     std::string title;
+    // Every text of the run's words files (base/words.hpp): the font atlas loads their glyphs.
+    std::vector<std::string_view> words;
     std::vector<LessonStep> steps;  // title and markdown text of each, from lesson.md (or its translation)
     int* step = nullptr;            // 0-based, the overlay may change it
     std::string textError;          // what is wrong with lesson.md, shown until fixed
