@@ -2,7 +2,7 @@
 # underscores turned into dashes (01_program_objects -> fxlab-01-program-objects).
 #
 # A lesson is one folder: its .cpp files (the last line of one of them is FX_LESSON, app/runner.hpp),
-# lesson.md and lesson.ja.md, and, found by the lesson's number, its shaders (shaders/lessons/<dir>/)
+# lesson.md and lesson.ja.md, its words (words.en, words.ja: base/words.hpp), and, found by the lesson's number, its shaders (shaders/lessons/<dir>/)
 # and its scene (res/scenes/NN_*.json). The text, shaders and scene are sources of the target too
 # (not compiled), so an IDE shows the whole lesson in one place. The folder's name gives the lesson
 # its number and slug (FXLAB_LESSON_NUMBER, FXLAB_LESSON_SLUG): written once, and checked here.
@@ -22,7 +22,7 @@ function(fxlab_add_lesson dir)
   set(folder "${CMAKE_CURRENT_SOURCE_DIR}/${dir}")
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${folder}/*.cpp")
   file(GLOB headers CONFIGURE_DEPENDS "${folder}/*.hpp")
-  file(GLOB texts CONFIGURE_DEPENDS "${folder}/*.md")
+  file(GLOB texts CONFIGURE_DEPENDS "${folder}/*.md" "${folder}/words.*")
   file(GLOB_RECURSE shaders CONFIGURE_DEPENDS "${FXLAB_ROOT}/shaders/lessons/${dir}/*")
   file(GLOB scenes CONFIGURE_DEPENDS "${FXLAB_ROOT}/res/scenes/${number_text}_*.json")
   set(shown ${texts} ${shaders} ${scenes})

@@ -9,6 +9,7 @@
 #include "app/child_watchdog.hpp"
 #include "app/exercise_scene_check.hpp"
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
@@ -145,7 +146,8 @@ Comparison compareRuns(const Exercise& exercise, const ProbeRun& student, const 
                 if (finite) continue;
                 if (out.nonFinite++ == 0)
                     out.firstNonFinite =
-                        cat("pixel (", x, ", ", y, ") at ", sizeText(exercise.cases[i].size));
+                        say("check.pixelAt",
+                            {{"x", cat(x)}, {"y", cat(y)}, {"size", sizeText(exercise.cases[i].size)}});
             }
         }
     }
@@ -157,7 +159,7 @@ bool passes(const Exercise& exercise, const Comparison& c) {
 }
 
 std::string measureName(const std::string& measure) {
-    return measure == "rmse" ? "RMSE" : "max |difference|";
+    return say(measure == "rmse" ? "check.rmse" : "check.maxAbs");
 }
 
 }  // namespace
@@ -168,15 +170,16 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
     verdict.tolerance = exercise.tolerance;
     std::error_code ec;
     if (!fs::is_regular_file(studentFile, ec)) {
-        verdict.error = cat(studentFile.string(), ": no such file (./fxlab exercise start ", exercise.lesson,
-                            " ", exercise.number, " copies the starter there)");
+        verdict.error = say("check.noFile", {{"file", studentFile.string()},
+                                             {"lesson", cat(exercise.lesson)},
+                                             {"number", cat(exercise.number)}});
         verdict.message = verdict.error;
         return verdict;
     }
     if (exercise.kind == "scene") return checkSceneExercise(exercise, studentFile);
     const ProbeRun reference = renderProbe(exercise, exercise.reference);
     if (!reference.error.empty()) {
-        verdict.error = cat("the exercise's reference did not build (a bug in fxlab): ", reference.error);
+        verdict.error = say("check.referenceBroken", {{"error", reference.error}});
         verdict.message = verdict.error;
         return verdict;
     }
@@ -189,7 +192,7 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
             const auto begin = student.error.rfind('\n', at);
             first = student.error.substr(begin + 1, student.error.find('\n', at) - begin - 1);
         }
-        verdict.message = cat("your shader did not build: ", first);
+        verdict.message = say("check.didNotBuild", {{"error", first}});
         verdict.referenceImage = reference.images.front();
         return verdict;
     }
@@ -199,12 +202,15 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
     verdict.nonFiniteTexels = c.nonFinite;
     verdict.studentImage = student.images[c.worst];
     verdict.referenceImage = reference.images[c.worst];
-    verdict.message = cat(measureName(exercise.measure), " ", number(c.measured), " against the reference (",
-                          exercise.measures, "), needs <= ", number(exercise.tolerance), "; worst at ",
-                          sizeText(c.worstAt), ", ", exercise.cases.size(), " sizes");
+    verdict.message = say("check.measured", {{"measure", measureName(exercise.measure)},
+                                             {"measured", number(c.measured)},
+                                             {"measures", exercise.measures},
+                                             {"tolerance", number(exercise.tolerance)},
+                                             {"worst", sizeText(c.worstAt)},
+                                             {"cases", cat(exercise.cases.size())}});
     if (c.nonFinite > 0)
-        verdict.message += cat("; ", c.nonFinite, " pixel", c.nonFinite == 1 ? " is" : "s are",
-                               " NaN or Inf (the first: ", c.firstNonFinite, ")");
+        verdict.message += say(c.nonFinite == 1 ? "check.nonFiniteOne" : "check.nonFiniteMany",
+                               {{"count", cat(c.nonFinite)}, {"first", c.firstNonFinite}});
     if (verdict.passed) return verdict;
     // The hint for the mistake this looks like: NaN first, then each typical wrong answer, then any.
     for (const ExerciseHint& hint : exercise.hints) {
@@ -228,9 +234,11 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
 }
 
 std::string verdictSummary(const ExerciseVerdict& v) {
-    if (!v.error.empty()) return "FAIL: no measure (see the message)";
-    return cat(v.passed ? "PASS: " : "FAIL: ", measureName(v.measure), " ", number(v.measured),
-               ", needs <= ", number(v.tolerance));
+    if (!v.error.empty()) return say("check.noMeasure");
+    return say("check.summary", {{"verdict", say(v.passed ? "check.pass" : "check.fail")},
+                                 {"measure", measureName(v.measure)},
+                                 {"measured", number(v.measured)},
+                                 {"tolerance", number(v.tolerance)}});
 }
 
 std::string verdictJson(const ExerciseVerdict& v) {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "effects/particles/particle_system.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -41,10 +42,10 @@ ExerciseVerdict checkSceneExercise(const Exercise& exercise, const fs::path& stu
     if (!scene) {
         verdict.error = scene.error();
         verdict.measured = std::numeric_limits<double>::infinity();
-        return fail("invalid", cat("your scene did not load: ", scene.error()));
+        return fail("invalid", say("check.sceneDidNotLoad", {{"error", scene.error()}}));
     }
     if (scene->emitters.empty())
-        return fail("noEmitter", cat(studentFile.string(), ": emitters: the scene has no particle emitter"));
+        return fail("noEmitter", say("check.noEmitter", {{"file", studentFile.string()}}));
 
     std::vector<EmitterSetup> setups;
     for (const ParticleEmitter& emitter : scene->emitters) setups.push_back({emitter, {}, 0, 1.0f, false});
@@ -64,24 +65,28 @@ ExerciseVerdict checkSceneExercise(const Exercise& exercise, const fs::path& stu
                 continue;
             if (verdict.nonFiniteTexels++ == 0)
                 firstNonFinite =
-                    cat("particle ", slot, " of emitter ", int(p.extra.y), " at ", frame + 1, "/60 s");
+                    say("check.particleAt",
+                        {{"slot", cat(slot)}, {"emitter", cat(int(p.extra.y))}, {"frame", cat(frame + 1)}});
         }
     }
     verdict.measured = peak;
     const auto budget = std::uint32_t(exercise.budget);
-    verdict.message = cat(peak, " particles alive at most (", exercise.measures, "), needs <= ", budget, "; ",
-                          scene->emitters.size(), " emitter", scene->emitters.size() == 1 ? "" : "s", ", ",
-                          exercise.seconds, " s at 60 Hz");
+    verdict.message = say(scene->emitters.size() == 1 ? "check.peakOne" : "check.peakMany",
+                          {{"peak", cat(peak)},
+                           {"measures", exercise.measures},
+                           {"budget", cat(budget)},
+                           {"emitters", cat(scene->emitters.size())},
+                           {"seconds", cat(exercise.seconds)}});
     if (system.droppedCount() > 0 || system.replacedCount() > 0)
         verdict.message +=
-            cat("; ", system.replacedCount() + system.droppedCount(), " spawns found their ring full");
+            say("check.ringFull", {{"count", cat(system.replacedCount() + system.droppedCount())}});
     if (verdict.nonFiniteTexels > 0) {
-        verdict.message += cat("; ", verdict.nonFiniteTexels,
-                               " particle values are NaN or Inf (the first: ", firstNonFinite, ")");
+        verdict.message += say("check.particleNonFinite",
+                               {{"count", cat(verdict.nonFiniteTexels)}, {"first", firstNonFinite}});
         return fail("nonFinite", verdict.message);
     }
     if (peak > budget) return fail("overBudget", verdict.message);
-    if (peak == 0) return fail("noEmitter", verdict.message + ": no particle is ever alive");
+    if (peak == 0) return fail("noEmitter", verdict.message + say("check.neverAlive"));
     verdict.passed = true;
     return verdict;
 }

@@ -1,11 +1,14 @@
 #include "app/exercise_session.hpp"
 
+#include "app/exercise_words.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
 #include "app/lesson_listing.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/words.hpp"
 
 namespace fx {
 
@@ -65,6 +68,7 @@ Result<std::unique_ptr<ExerciseSession>> ExerciseSession::open(const LessonInfo&
     if (!all) return Error{all.error()};
     auto exercise = findExercise(*all, lesson.number, number);
     if (!exercise) return Error{exercise.error()};
+    if (Status localised = localiseExercise(*exercise, language); !localised) return Error{localised.error()};
     auto file = startExercise(*exercise, studentRoot());
     if (!file) return Error{file.error()};
     // The translation where it has the section, else the English.
@@ -164,11 +168,11 @@ void ExerciseSession::annotate(std::vector<LessonStep>& steps, int& revision) co
     // The exercise first (it is what this run is for), then the step's own text.
     // Its heading, the verdict (what a glance at the projector needs), the hint, then its text.
     const std::size_t headingEnd = std::min(text_.find("\n\n"), text_.size());
-    std::string text = cat(text_.substr(0, headingEnd), "\n\n",
-                           verdict_.passed ? "**PASS**: " : "**FAIL**: ", verdict_.message);
-    if (!verdict_.hint.empty()) text += cat("\n\nHint: ", verdict_.hint);
+    std::string text = cat(text_.substr(0, headingEnd), "\n\n**",
+                           say(verdict_.passed ? "check.pass" : "check.fail"), "**: ", verdict_.message);
+    if (!verdict_.hint.empty()) text += cat("\n\n", say("exercise.hint"), ": ", verdict_.hint);
     text += text_.substr(headingEnd);
-    text += cat("\n\nYour file: `", file_.string(), "` (every save rebuilds the lesson and checks it again)");
+    text += cat("\n\n", say("exercise.yourFile", {{"file", file_.string()}}));
     std::string& stepText = steps[std::size_t(step())].text;
     stepText = cat(text, "\n\n", stepText);
     revision += revision_;

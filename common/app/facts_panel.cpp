@@ -4,12 +4,14 @@
 
 #include "base/log.hpp"
 #include "ui/word_wrap.hpp"
+#include "base/words.hpp"
 
 namespace fx {
 
 void drawFacts(const Facts& facts, Size2D picture) {
     if (!facts.list().empty())
-        ImGui::TextDisabled("facts of the picture at %dx%d:", picture.width, picture.height);
+        ImGui::TextDisabled(
+            "%s", say("facts.heading", {{"size", cat(picture.width, "x", picture.height)}}).c_str());
     for (const Fact& f : facts.list()) {
         if (!f.shown) continue;
         const std::string& label = f.shownLabel();

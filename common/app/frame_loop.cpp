@@ -17,6 +17,7 @@
 #include "base/fact_references.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/debug_output.hpp"
 #include "image/png_file.hpp"
 
@@ -234,8 +235,8 @@ void FrameLoop::setExerciseView(ExerciseView view) {
     exerciseView_ = view;
     loggedExerciseView_ = ExerciseView::Off;
     if (view == ExerciseView::Off) {
-        notify(cat("exercise ", s_.exercise->verdict().passed ? "PASS" : "FAIL",
-                   ": F3 view off, the lesson's picture"));
+        notify(say("notice.exerciseViewOff",
+                   {{"verdict", say(s_.exercise->verdict().passed ? "check.pass" : "check.fail")}}));
         return;
     }
     // While it is on the lesson window says what is shown (FrameLoop::drawOverlay).
@@ -281,13 +282,12 @@ void FrameLoop::measureSlice(const Placement& at, std::uint64_t index) {
     gl::drainErrorFlags();
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     record_.facts.addFrame(ms, 0);
-    if (!overlay_->costPanel().measurePending())
-        notify("measured the cost of quality (the Cost of quality tab)");
+    if (!overlay_->costPanel().measurePending()) notify(say("notice.measured"));
 }
 
 void FrameLoop::setCompare(CompareMode mode) {
     if (!picture_) {
-        notify("compare: needs a window");
+        notify(say("notice.compareNeedsWindow"));
         return;
     }
     const bool wasOn = compare_ != CompareMode::Off;
@@ -305,7 +305,7 @@ void FrameLoop::setCompare(CompareMode mode) {
         s_.status = cat("compare: ", describeCompareMode(compare_));
         log::info(s_.status);
     } else {
-        notify("compare: off (the clock runs again unless paused)");
+        notify(say("notice.compareOff"));
     }
 }
 
@@ -365,8 +365,7 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     if (keys.pause) clock_.togglePause();
     if (keys.advanceFrame) {
         if (clock_.held())
-            notify(cat("the clock holds while the compare view is on (", windowKeyName(&KeyPresses::compare),
-                       " turns it off)"));
+            notify(say("notice.clockHolds", {{"key", windowKeyName(&KeyPresses::compare)}}));
         else
             clock_.stepOnce();
     }
@@ -374,7 +373,7 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
     if (keys.textSmaller) changeTextScale(-kTextScaleStep);
     if (keys.resetLayout && overlay_) {
         overlay_->resetLayout();
-        notify("layout reset");
+        notify(say("notice.layoutReset"));
         saveUiSettings();
     }
     if (keys.compare) {
@@ -393,16 +392,16 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
         if (keys.quit && overlay_->costPanel().measurePending()) {
             keys.quit = false;
             overlay_->costPanel().cancel();
-            notify("measure cancelled (Esc)");
+            notify(say("notice.measureCancelledEsc"));
         }
         if (keys.measure) {
             if (overlay_->costPanel().measurePending()) {
                 overlay_->costPanel().cancel();
-                notify("measure cancelled");
+                notify(say("notice.measureCancelled"));
             } else {
                 overlay_->showFramePanel(true, true);
                 overlay_->costPanel().requestMeasure();
-                notify("measuring the cost of quality, a slice a frame (Esc cancels)");
+                notify(say("notice.measuring"));
             }
         }
     }
@@ -411,20 +410,18 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
         lastReloadCheck_ = now;
         if (int reloaded = programs_.reloadChanged(); reloaded > 0) {
             const std::size_t failed = programs_.errors().size();
-            notify(failed == 0 ? cat("a shader was saved: ", reloaded, " program(s) rebuilt")
-                               : cat("a shader was saved: ", failed,
-                                     " program(s) did not build (the last good one keeps running; the errors "
-                                     "are in the lesson window)"));
+            // One list of values and a choice of key (a choice of two braced lists trips GCC 12's
+            // -Wmaybe-uninitialized).
+            const WordArgs counts{{"count", cat(failed == 0 ? std::size_t(reloaded) : failed)}};
+            notify(say(failed == 0 ? "notice.savedRebuilt" : "notice.savedFailed", counts));
         }
         if (lessonText_) (void)lessonText_->reloadIfChanged();
     }
     if (keys.reload) {
         const int reloaded = programs_.reloadAll();
         const std::size_t failed = programs_.errors().size();
-        notify(failed == 0 ? cat("reloaded ", reloaded, " shader programs")
-                           : cat("reloaded ", reloaded, " shader programs; ", failed,
-                                 " did not build (the last good one keeps running; the errors are in the "
-                                 "lesson window)"));
+        const WordArgs counts{{"count", cat(reloaded)}, {"failed", cat(failed)}};
+        notify(say(failed == 0 ? "notice.reloaded" : "notice.reloadedFailed", counts));
     }
     if (keys.nextLesson || keys.previousLesson) {
         const int direction = keys.nextLesson ? 1 : -1;
@@ -432,7 +429,7 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
             s_.switchLesson = direction;
             return false;
         }
-        notify(direction > 0 ? "this is the last lesson" : "this is the first lesson");
+        notify(say(direction > 0 ? "notice.lastLesson" : "notice.firstLesson"));
     }
     return !keys.quit;
 }
@@ -448,7 +445,7 @@ void FrameLoop::changeTextScale(float by) {
     if (!overlay_) return;
     const float scale = clampTextScale(overlay_->textScale() + by);
     overlay_->setTextScale(scale);
-    notify(cat("text scale ", scale));
+    notify(say("notice.textScale", {{"scale", cat(scale)}}));
     saveUiSettings();
 }
 
@@ -521,7 +518,17 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     glViewport(0, 0, at.window.width, at.window.height);
     Lesson& lesson = *s_.lesson;
     OverlayModel model;
-    model.title = cat(lesson.info().number, ". ", lesson.info().title);
+    if (lessonText_ && lessonText_->language() != words().language()) {
+        // The ja button: the panel's words follow the steps' text.
+        auto loaded = Words::load(lessonSourceFolder(lesson.info()), lessonText_->language());
+        if (loaded)
+            useWords(std::move(*loaded));
+        else
+            notify(loaded.error());
+    }
+    model.title = say("lesson.title", {{"number", cat(lesson.info().number)},
+                                       {"title", words().textOr("lesson.name", lesson.info().title)}});
+    model.words = words().allTexts();
     if (lessonText_) {
         model.steps = lessonText_->steps();
         model.pages = lessonText_->pages();
@@ -564,29 +571,36 @@ void FrameLoop::drawOverlay(const FrameInfo& frame, const FrameGraph* graph, con
     fs::path presetPath = fs::path("out") / (s_.exe + ".preset.json");
     model.onSavePreset = [&, presetPath] {
         auto saved = writeFileAtomically(presetPath, s_.params.toJson());
-        notify(saved ? cat("saved ", presetPath.string()) : saved.error());
+        const WordArgs file{{"file", presetPath.string()}};
+        notify(saved ? say("notice.presetSaved", file) : saved.error());
     };
     model.onLoadPreset = [&, presetPath] {
         auto text = readFile(presetPath, file_limits::preset);
         Status loaded = text ? s_.params.fromJson(*text, presetPath.string()) : Status(Error{text.error()});
-        notify(loaded ? cat("loaded ", presetPath.string()) : loaded.error());
+        const WordArgs file{{"file", presetPath.string()}};
+        notify(loaded ? say("notice.presetLoaded", file) : loaded.error());
     };
     model.measureKnobs = knobSweepStarter(at.extent);
     // Headless too: --press takes the same keys, and an --overlay capture shows what a window would.
-    for (const WindowKeyHelp& k : windowKeysHelp()) model.keys.push_back({k.key, k.action});
+    for (const WindowKeyHelp& k : windowKeysHelp())
+        model.keys.push_back({words().textOr("keyName." + std::string(k.token), k.key),
+                              words().textOr("key." + std::string(k.token), k.action)});
     model.executable = s_.exe;
     if (clock_.paused() && !clock_.held())
-        model.clock =
-            cat("paused at ", secondsText(clock_.seconds()), " s (space resumes, . steps one frame)");
+        model.clock = say("notice.paused", {{"seconds", secondsText(clock_.seconds())}});
     if (exerciseView_ != ExerciseView::Off && onExerciseStep()) {
         model.compare = s_.exercise->describeView(exerciseView_);
     } else if (compare_ != CompareMode::Off) {
-        model.compare =
-            picture_ && picture_->previousStep()
-                ? cat("compare: ", describeCompareMode(compare_), " (step ", *picture_->previousStep() + 1,
-                      " against step ", s_.step + 1, ", both at ", secondsText(clock_.seconds()),
-                      " s: the clock holds while comparing; F3 changes)")
-                : "compare: change the step (arrows) to keep a picture to compare with";
+        if (picture_ && picture_->previousStep()) {
+            model.compare = say(
+                "notice.compare",
+                {{"mode", words().textOr(cat("compareMode.", int(compare_)), describeCompareMode(compare_))},
+                 {"previous", cat(*picture_->previousStep() + 1)},
+                 {"step", cat(s_.step + 1)},
+                 {"seconds", secondsText(clock_.seconds())}});
+        } else {
+            model.compare = say("notice.compareNeedsStep");
+        }
     }
     model.pictureScale = pictureScale_.notice({int(at.place.width), int(at.place.height)});
     model.clockRate = clockRateNotice();
@@ -603,7 +617,8 @@ void FrameLoop::keep(RenderedFrame& rendered, bool lastFrame, bool readFinal, bo
         // Never over an earlier one: the first free number for this lesson and step.
         fs::path shot = nextScreenshotPath("out", s_.exe, s_.step + 1);
         auto written = writePng(shot, record_.lastFinalBytes);
-        notify(written ? cat("screenshot saved: ", shot.string()) : written.error());
+        const WordArgs file{{"file", shot.string()}};
+        notify(written ? say("notice.screenshot", file) : written.error());
     }
 }
 

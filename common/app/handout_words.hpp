@@ -1,8 +1,8 @@
 #pragma once
 // The handout's own words (headings, captions, column names) in each language a lesson's text has.
 // The lesson's prose comes from its lesson.md and lesson.ja.md; these are only the page's frame. The
-// Japanese follows docs/japanese-terms.md (ステップ, 事実, パステーブル, フレームグラフ, インスペクター,
-// 精度のコスト, ハードケース, フルスクリーンコピー).
+// Japanese follows docs/japanese-terms.md (ステップ, 情報, パステーブル, フレームグラフ, インスペクター,
+// 精度のコスト, フルスクリーンコピー).
 #include <string>
 
 namespace fx::handout {

@@ -5,12 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "base/words.hpp"
+
 namespace fx {
 
 struct Fact {
     std::string name;   // the report's key ("uniformLookupsLastFrame"); smoke scripts read some
     std::string value;  // "true" and "false" become JSON booleans in the report
-    std::string label;  // the panel's words; empty: the name
+    std::string label;  // the panel's words, from the words files (key "fact.<name>")
     bool shown = true;  // false: for the report and the smoke checks only
     // The words the panel shows before the value: the label, or the name where there is none.
     const std::string& shownLabel() const { return label.empty() ? name : label; }
@@ -18,16 +20,21 @@ struct Fact {
     int done = -1, total = 0;
 };
 
+// A shown fact's label is the run's words for "fact.<name>" (the lesson's words file, else the app's:
+// base/words.hpp), filled with `args` ("levels (of {asked} asked for)"), in the language shown.
 class Facts {
 public:
     // A fact shown in the panel (as "label: value") and written to the report.
-    void add(std::string name, std::string value, std::string label = {});
-    void add(std::string name, const char* value, std::string label = {}) {
-        add(std::move(name), std::string(value), std::move(label));
+    void add(std::string name, std::string value, const WordArgs& args = {});
+    void add(std::string name, const char* value, const WordArgs& args = {}) {
+        add(std::move(name), std::string(value), args);
     }
-    void add(std::string name, bool value, std::string label = {});
+    void add(std::string name, bool value, const WordArgs& args = {});
+    // A fact whose label depends on the frame: the words of "fact.<key>" instead of "fact.<name>".
+    void addAs(std::string name, std::string_view key, std::string value, const WordArgs& args = {});
     // How far work spread over several frames is ("24 of 64"): a progress bar in the panel.
-    void progress(std::string name, int done, int total, std::string label = {});
+    void progress(std::string name, int done, int total, const WordArgs& args = {});
+    void progressAs(std::string name, std::string_view key, int done, int total, const WordArgs& args = {});
     // A fact for the report and the smoke checks only ("expectErrorsInStep").
     void check(std::string name, std::string value);
     void check(std::string name, const char* value) { check(std::move(name), std::string(value)); }

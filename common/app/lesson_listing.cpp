@@ -45,15 +45,16 @@ bool printSteps(const LessonTextFiles& text) {
 void printParams(const ParamSet& params) {
     if (params.all().empty()) std::cout << "(this lesson has no parameters)\n";
     for (const Param& p : params.all()) {
-        std::cout << p.name << " = " << p.text() << "  [" << toString(p.source()) << "]  (" << p.rangeText()
-                  << ")";
+        const std::string label = p.label();
+        std::cout << p.name << (label == p.name ? "" : cat(" (", label, ")")) << " = " << p.text() << "  ["
+                  << toString(p.source()) << "]  (" << p.rangeText() << ")";
         if (p.knob) std::cout << "  quality knob, reference " << p.valueText(p.knob->reference);
         if (!p.sceneSetting.empty()) std::cout << "\n    starts from the scene's " << p.sceneSetting;
         if (!p.steps.empty()) {
             std::cout << "\n    acts in step" << (p.steps.size() > 1 ? "s" : "");
             for (std::size_t i = 0; i < p.steps.size(); ++i) std::cout << (i ? ", " : " ") << p.steps[i] + 1;
         }
-        std::cout << "\n    " << p.description << "\n";
+        std::cout << "\n    " << p.help() << "\n";
     }
 }
 

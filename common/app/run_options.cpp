@@ -279,7 +279,7 @@ const std::vector<Flag>& flags() {
          .apply = nonEmpty(&RunOptions::scene, "a path")},
         {.name = "--lang",
          .value = "en|ja",
-         .help = "the language of the lesson text: en English (default), ja Japanese",
+         .help = "the language of every word the lesson window shows: en English (default), ja Japanese",
          .apply = oneOf<std::string>(&RunOptions::language, languageChoices())},
         {.name = "--param",
          .value = "NAME=VALUE",

@@ -41,7 +41,7 @@ struct RunOptions {
     std::optional<int> step;           // --step K, 1-based
     std::optional<int> exercise;       // --exercise N: this lesson's exercise N (app/exercise_session.hpp)
     std::filesystem::path scene;       // --scene FILE
-    std::string language = "en";       // --lang en|ja: the language of the lesson text
+    std::string language = "en";       // --lang en|ja: the language of the window's words
     std::filesystem::path captureDir;  // --capture DIR
     bool captureFloat = false;         // --capture-float
     std::filesystem::path reportFile;  // --report FILE

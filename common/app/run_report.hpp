@@ -17,6 +17,7 @@ namespace fx {
 // A parameter's value at the end of the run and where it came from ("scene", "command line"...).
 struct ParamFact {
     std::string name, value, source;
+    std::string label;  // the words the panel shows for it in the run's language (Param::label())
     // The values changed in other steps than the one shown (1-based step, value text), and a pin.
     std::vector<std::pair<int, std::string>> changedInSteps;
     bool pinned = false;
@@ -41,6 +42,8 @@ struct RunFacts {
     std::vector<std::pair<std::string, std::string>> lessonFacts;
     std::vector<std::pair<std::string, std::string>> shownFacts;  // label and value, as the panel shows them
     std::vector<ParamFact> params;
+    std::string language = "en";            // of the words the panel showed (--lang)
+    std::vector<std::string> missingWords;  // keys no words file had (base/words.hpp): a mistake
 };
 
 nlohmann::ordered_json statsJson(const std::vector<ChannelStats>& stats);

@@ -2,6 +2,7 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/debug_output.hpp"
 #include "image/png_file.hpp"
 #include "render/graph_dot.hpp"
@@ -66,14 +67,19 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         if (f.shown) facts.shownFacts.emplace_back(f.shownLabel(), f.value);
     }
     for (const Param& p : s.params.all()) {
-        ParamFact fact{p.name, p.text(), std::string(toString(p.source())), {}, p.pinned};
+        ParamFact fact{p.name, p.text(), std::string(toString(p.source())), p.label(), {}, p.pinned};
         for (const auto& [step, value] : p.stepValues) {
             if (step != s.step) fact.changedInSteps.emplace_back(step + 1, p.valueText(value));
         }
         facts.params.push_back(fact);
     }
+    facts.language = words().language();
+    facts.missingWords = missingWords();
+    for (const std::string& key : facts.missingWords)
+        log::error("no words for '", key, "' in ", words().language(), " (lessons/.../words.",
+                   words().language(), " or common/words/words.", words().language(), ")");
 
-    int exitCode = 0;
+    int exitCode = facts.missingWords.empty() ? 0 : 1;  // a label shown as its key is a failed run
     if (!plan.captureDir.empty()) {
         Status written = writeCaptures(plan.captureDir, record.lastFinalBytes, record.lastTextures,
                                        s.options.captureFloat);

@@ -15,6 +15,7 @@
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "base/paths.hpp"
+#include "base/words.hpp"
 #include "effects/scene/scene_work.hpp"
 #include "gl/shader_dump.hpp"
 #include "scene/scene_loader.hpp"
@@ -174,6 +175,13 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
         return 2;
     }
     RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}, {}};
+    // The words a student reads (the panel, the facts' labels, the parameters' help), in --lang's language.
+    if (auto loaded = Words::load(lessonSourceFolder(lesson.info()), s.options.language); !loaded) {
+        std::cerr << exe << ": " << loaded.error() << "\n";
+        return 2;
+    } else {
+        useWords(std::move(*loaded));
+    }
     lesson.declareParams(s.params);
     if (s.options.help) {
         std::cout << lesson.info().title << "\n\n" << runOptionsHelp(exe);
@@ -209,7 +217,10 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
     if (auto failed = setParameters(s)) return *failed;
     if (s.options.listParams) {
         printParams(s.params);
-        return 0;
+        // Every parameter's words in the language asked for (the unit tests unit.words.<lesson>.<lang>).
+        for (const std::string& key : missingWords())
+            std::cerr << exe << ": no words for '" << key << "' in " << words().language() << "\n";
+        return missingWords().empty() ? 0 : 1;
     }
     if (auto dumping = gl::setShaderDumpFolder(s.options.shaderDump); !dumping) {
         std::cerr << exe << ": --dump-shaders: " << dumping.error() << "\n";

@@ -11,6 +11,7 @@
 #include "base/json_document.hpp"
 #include "base/log.hpp"
 #include "base/message_text.hpp"
+#include "base/words.hpp"
 
 namespace fx {
 namespace {
@@ -224,9 +225,46 @@ Param& ParamSet::addChoice(std::string name, int* value, std::vector<std::string
 std::string Param::sliderFormat() const {
     const char* number = type == ParamType::Float ? "%.3f" : "%d";
     if (zeroMeans.empty() || get() != 0.0) return number;
-    std::string words;
-    for (char c : zeroMeans) words += c == '%' ? std::string("%%") : std::string(1, c);
-    return words;
+    std::string shown;
+    const std::string key = "param." + name + ".zero";
+    for (char c : words().language() == "en" ? words().textOr(key, zeroMeans) : say(key))
+        shown += c == '%' ? std::string("%%") : std::string(1, c);
+    return shown;
+}
+
+std::string Param::label() const {
+    // English shows the name as typed; another language needs its own label (missing: counted).
+    const std::string key = "param." + name + ".label";
+    return words().language() == "en" ? words().textOr(key, name) : say(key);
+}
+
+std::string Param::help() const {
+    // A lesson's parameter has no description: a help its words lack shows (and counts) as missing.
+    const std::string key = "param." + name + ".help";
+    // English may take a scene setting's help (its description); another language needs its own.
+    std::string body =
+        description.empty() || words().language() != "en" ? say(key) : words().textOr(key, description);
+    if (steps.empty()) return body;
+    return say("param.inSteps", {{"steps", stepsText(steps)}, {"help", body}});
+}
+
+std::string Param::shownRangeText() const {
+    switch (type) {
+        case ParamType::Float:
+            if (std::isinf(max)) return say("range.numberUp", {{"min", numberText(min)}});
+            return say("range.number", {{"min", numberText(min)}, {"max", numberText(max)}});
+        case ParamType::Int:
+            return say("range.whole",
+                       {{"min", cat(static_cast<long>(min))}, {"max", cat(static_cast<long>(max))}});
+        case ParamType::Bool:
+            return say("range.bool");
+        case ParamType::Choice: {
+            std::string list;
+            for (auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+            return say("range.choice", {{"list", list}});
+        }
+    }
+    return {};
 }
 
 bool Param::actsIn(int step) const {

@@ -57,8 +57,10 @@ struct Knob {
 };
 
 struct Param {
-    std::string name;         // command-line name: lower case with underscores
-    std::string description;  // one sentence for the overlay and --list-params
+    std::string name;  // command-line name: lower case with underscores
+    // What the parameter does, in English, where no words file gives it (a setting's help, a test's
+    // parameter); a lesson's parameters take their help from its words files (help()).
+    std::string description;
     ParamType type = ParamType::Float;
     double min = 0, max = 1;  // max may be infinity (a focus distance): --param takes "infinity"
     // The overlay's slider shows this span (the whole range unless a setting says otherwise: a
@@ -107,11 +109,20 @@ struct Param {
         steps = std::move(only);
         return *this;
     }
-    // At 0 the slider says `words` ("the step's own") instead of 0.
-    Param& showZeroAs(std::string words) {
+    // At 0 the slider says the words of "param.<name>.zero" ("the step's own") instead of 0; `words`
+    // where no words file has them.
+    Param& showZeroAs(std::string words = "0") {
         zeroMeans = std::move(words);
         return *this;
     }
+    // The words the overlay shows for it, in the run's language (base/words.hpp): its label
+    // ("param.<name>.label"; the name where the words have none, as in English), and its help:
+    // "param.<name>.help" (else `description`), after the steps it acts in, named from `steps`
+    // ("Steps 3 to 6: ..."), so the help and the code cannot disagree.
+    std::string label() const;
+    std::string help() const;
+    // The range in the run's words ("a number from 0 to 4"; rangeText() is the command line's).
+    std::string shownRangeText() const;
     bool actsIn(int step) const;
     ParamSource source() const;
     // The printf format the overlay's slider draws the value with: the number's, or at 0 the words of
@@ -173,24 +184,26 @@ private:
 
 class ParamSet {
 public:
-    Param& addFloat(std::string name, float* value, float min, float max, std::string description);
-    Param& addInt(std::string name, int* value, int min, int max, std::string description);
-    Param& addBool(std::string name, bool* value, std::string description);
-    Param& addChoice(std::string name, int* value, std::vector<std::string> choices, std::string description);
+    // A lesson gives no description: its words files give the help (Param::help()).
+    Param& addFloat(std::string name, float* value, float min, float max, std::string description = {});
+    Param& addInt(std::string name, int* value, int min, int max, std::string description = {});
+    Param& addBool(std::string name, bool* value, std::string description = {});
+    Param& addChoice(std::string name, int* value, std::vector<std::string> choices,
+                     std::string description = {});
     // A parameter that starts from a scene setting: its range, slider, help and default are the
     // setting's (`*value` is set to the default), and it starts from the scene's value. `note` goes
-    // before the help ("Steps 3 to 5"). The value's type follows the member: a float or an int (a
-    // Choice setting needs an int).
+    // before the help in --list-params (a lesson's steps come from Param::steps instead). The value's type
+    // follows the member: a float or an int (a Choice setting needs an int).
     Param& addSetting(std::string name, float* value, const SettingSpec& setting, std::string note = {});
     Param& addSetting(std::string name, int* value, const SettingSpec& setting, std::string note = {});
     template <class E>
     Param& addChoice(std::string name, Choice<E>* value, std::vector<std::string> choices,
-                     std::string description) {
+                     std::string description = {}) {
         return addChoice(std::move(name), value->index(), std::move(choices), std::move(description));
     }
     // The names are the table's.
     template <class T>
-    Param& addChoice(std::string name, TableChoice<T>* value, std::string description) {
+    Param& addChoice(std::string name, TableChoice<T>* value, std::string description = {}) {
         return addChoice(std::move(name), value->index(), value->names(), std::move(description));
     }
     template <class E>

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "ui/ui_style.hpp"
 
 namespace fx {
@@ -72,7 +73,8 @@ ChainStrip::Interaction ChainStrip::draw(const TextureDisplay& display, const Te
             tile.drawn = true;
         } else {
             draw->AddRectFilled(p0, p1, IM_COL32(30, 30, 34, 255));
-            draw->AddText(ImVec2(p0.x + 4, p0.y + 4), IM_COL32(140, 140, 140, 255), "not alive");
+            draw->AddText(ImVec2(p0.x + 4, p0.y + 4), IM_COL32(140, 140, 140, 255),
+                          say("chain.notAlive").c_str());
         }
         const bool isCurrent = current && *current == i;
         draw->AddRect(p0, p1, isCurrent ? ui_style::packed(ui_style::kHeading) : IM_COL32(80, 80, 90, 255),
@@ -106,15 +108,16 @@ ChainStrip::Interaction ChainStrip::draw(const TextureDisplay& display, const Te
         if (result.hoveredMember == i) {
             ImGui::BeginTooltip();
             ImGui::Text("%s, %dx%d%s", m.label.c_str(), m.size.width, m.size.height,
-                        source.alive() ? "" : " (not alive)");
+                        source.alive() ? "" : (" (" + say("chain.notAlive") + ")").c_str());
             if (i < samples.size() && samples[i].channels > 0) {
                 const ProbeSample& s = samples[i];
                 std::string values;
                 for (int c = 0; c < s.channels; ++c)
                     values += (c ? "  " : "") + exactFloatText(s.texel.value[c]);
-                ImGui::Text("probe at (%d, %d): %s", s.x, s.y, values.c_str());
+                ImGui::TextUnformatted(
+                    say("chain.probe", {{"x", cat(s.x)}, {"y", cat(s.y)}, {"values", values}}).c_str());
             }
-            ImGui::TextDisabled("click to show it in the large view");
+            ImGui::TextDisabled("%s", say("chain.click").c_str());
             ImGui::EndTooltip();
         }
         ImGui::PopID();

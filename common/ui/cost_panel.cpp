@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "image/plot_axis.hpp"
 #include "ui/ui_style.hpp"
 
@@ -41,9 +43,9 @@ std::vector<std::string> sweptKnobs(const SweepResult& result) {
 ScatterPlot sweepPlot(const SweepResult& result, const std::string& knob) {
     ScatterPlot plot;
     const bool byCopy = result.copyMs > 0;
-    plot.xLabel =
-        byCopy ? cat("full-screen copies (median, min-max of ", result.frames, ")") : "frame time (ms)";
-    plot.yLabel = "RMSE vs reference";
+    const WordArgs frames{{"frames", cat(result.frames)}};
+    plot.xLabel = say(byCopy ? "cost.xCopies" : "cost.xMs", frames);
+    plot.yLabel = say("cost.yRmse");
     for (const SweepPoint& p : result.points) {
         if (p.knob != knob) continue;
         PlotPoint point{p.value, byCopy ? p.copyMultiple : p.medianMs, p.rmse, p.reference, p.current};
@@ -189,7 +191,7 @@ void CostPanel::cancel() {
     if (!running_ && !pending_) return;
     if (running_) {
         SweepProgress p = running_->progress();
-        cancelled_ = cat("cancelled after ", p.done, " of ", p.total, " settings");
+        cancelled_ = say("cost.cancelled", {{"done", cat(p.done)}, {"total", cat(p.total)}});
     }
     running_.reset();  // puts the parameters back
     pending_ = false;
@@ -202,35 +204,32 @@ std::optional<SweepProgress> CostPanel::progress() const {
 
 void CostPanel::draw(const Measure& measure) {
     if (!measure) {
-        ImGui::TextDisabled("no sweep available");
+        ImGui::TextDisabled("%s", say("cost.noSweep").c_str());
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled(
-            "(this app does not provide a measurement; ./fxlab bench sweeps the knobs from the command line)");
+        ImGui::TextDisabled("%s", say("cost.noSweepWhy").c_str());
         ImGui::PopTextWrapPos();
         if (!result_) return;
     } else if (measurePending()) {
         // The sweep under way: a bar, what comes next, and a way out.
         SweepProgress p = progress().value_or(SweepProgress{});
         const float fraction = float(p.fraction());
-        std::string overlayText = cat(p.done, " / ", p.total, " settings");
+        std::string overlayText = say("cost.progress", {{"done", cat(p.done)}, {"total", cat(p.total)}});
         ImGui::ProgressBar(fraction, ImVec2(220, 0), overlayText.c_str());
         ImGui::SameLine();
-        if (ImGui::Button("cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape, false)) cancel();
+        if (ImGui::Button((say("cost.cancel") + "###cancel").c_str()) ||
+            ImGui::IsKeyPressed(ImGuiKey_Escape, false))
+            cancel();
         ImGui::SameLine();
         if (p.frames > 0)
-            ImGui::TextDisabled("measuring %s, frame %d of %d (Esc cancels)", p.next.c_str(), p.frame,
-                                p.frames);
+            ImGui::TextDisabled("%s",
+                                say("cost.measuringFrame",
+                                    {{"setting", p.next}, {"frame", cat(p.frame)}, {"frames", cat(p.frames)}})
+                                    .c_str());
         else
-            ImGui::TextDisabled("measuring %s (Esc cancels)", p.next.c_str());
+            ImGui::TextDisabled("%s", say("cost.measuring", {{"setting", p.next}}).c_str());
     } else {
-        if (ImGui::Button("measure")) pending_ = true;
-        if (ImGui::IsItemHovered()) {
-            ImGui::SetTooltip(
-                "render the lesson at every setting of each quality knob (the others at their\n"
-                "references) at the picture's size, one frame of a setting per frame of the app\n"
-                "(the picture holds still meanwhile), time it against a full-screen copy, and\n"
-                "compare its picture with the reference setting's (F7 starts it too)");
-        }
+        if (ImGui::Button((say("cost.measure") + "###measure").c_str())) pending_ = true;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("cost.measureHelp").c_str());
         if (!cancelled_.empty()) {
             ImGui::SameLine();
             ImGui::TextDisabled("%s", cancelled_.c_str());
@@ -238,29 +237,32 @@ void CostPanel::draw(const Measure& measure) {
     }
     if (!result_) {
         ImGui::SameLine();
-        ImGui::TextDisabled("time against error for each quality setting");
+        ImGui::TextDisabled("%s", say("cost.what").c_str());
         return;
     }
     const SweepResult& r = *result_;
     if (r.points.empty()) {
-        ImGui::TextDisabled("this lesson has no quality knobs");
+        ImGui::TextDisabled("%s", say("cost.noKnobs").c_str());
         return;
     }
     ImGui::SameLine();
+    char copyMs[32];
+    std::snprintf(copyMs, sizeof copyMs, "%.3f", r.copyMs);
     ImGui::TextWrapped(
-        "%dx%d, timed by %s; one full-screen copy takes %.3f ms (each frame is divided by a copy timed just before it)",
-        r.width, r.height, r.timingMethod.c_str(), r.copyMs);
+        "%s", say("cost.timedBy",
+                  {{"size", cat(r.width, "x", r.height)}, {"method", r.timingMethod}, {"ms", copyMs}})
+                  .c_str());
     auto knobs = sweptKnobs(r);
     if (knobs.size() > 1) {
         ImGui::SetNextItemWidth(180);
-        if (ImGui::BeginCombo("knob", knob_.c_str())) {
+        if (ImGui::BeginCombo((say("cost.knob") + "###knob").c_str(), knob_.c_str())) {
             for (const std::string& k : knobs) {
                 if (ImGui::Selectable(k.c_str(), k == knob_)) knob_ = k;
             }
             ImGui::EndCombo();
         }
     } else {
-        ImGui::Text("knob: %s", knob_.c_str());
+        ImGui::Text("%s: %s", say("cost.knob").c_str(), knob_.c_str());
     }
     const float width = std::max(ImGui::GetContentRegionAvail().x, 200.0f);
     drawScatterPlot(sweepPlot(r, knob_), ImVec2(width, std::clamp(width * 0.45f, 200.0f, 320.0f)));
@@ -268,10 +270,10 @@ void CostPanel::draw(const Measure& measure) {
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame;
     if (ImGui::BeginTable("points", 6, flags)) {
-        ImGui::TableSetupColumn("setting");
-        ImGui::TableSetupColumn("frame ms");
-        ImGui::TableSetupColumn("x copy");
-        ImGui::TableSetupColumn("min-max");
+        ImGui::TableSetupColumn(say("cost.setting").c_str());
+        ImGui::TableSetupColumn(say("cost.frameMs").c_str());
+        ImGui::TableSetupColumn(say("cost.xCopy").c_str());
+        ImGui::TableSetupColumn(say("cost.minMax").c_str());
         ImGui::TableSetupColumn("RMSE");
         ImGui::TableSetupColumn("PSNR dB");
         ImGui::TableHeadersRow();

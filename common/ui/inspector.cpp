@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "ui/texture_saver.hpp"
 #include "ui/ui_style.hpp"
 #include "ui/view_controls.hpp"
@@ -122,7 +123,8 @@ ImVec2 Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size
     } else {
         ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     }
-    visible_ = ImGui::Begin("Inspector", nullptr, ImGuiWindowFlags_NoMove);
+    visible_ =
+        ImGui::Begin((say("inspector.title") + "###inspector").c_str(), nullptr, ImGuiWindowFlags_NoMove);
     const ImVec2 shown = ImGui::GetWindowSize();
     if (!visible_) {
         ImGui::End();
@@ -131,7 +133,7 @@ ImVec2 Inspector::draw(const InspectorFrame& frame, ImVec2 position, ImVec2 size
     }
     ++frameIndex_;
     if (!frame.report) {
-        ImGui::TextDisabled("no frame yet");
+        ImGui::TextDisabled("%s", say("frame.none").c_str());
         ImGui::End();
         graph_ = nullptr;
         return shown;
@@ -163,19 +165,18 @@ Result<std::filesystem::path> Inspector::saveSelected(bool exactFloats) {
 
 void Inspector::drawDetail(const InspectorFrame& frame) {
     if (!display_.ok()) {
-        ImGui::TextColored(ui_style::kError, "The view shader did not build:");
+        ImGui::TextColored(ui_style::kError, "%s", say("inspector.viewShaderFailed").c_str());
         ImGui::TextWrapped("%s", display_.error().c_str());
         return;
     }
     const TextureRecord* record = selected_.empty() ? nullptr : frame.report->findTexture(selected_);
     if (!record) {
         chain_ = {};
+        const WordArgs texture{{"texture", selected_}};
         ImGui::TextDisabled(
-            selected_.empty() ? "Select a texture in the list." : "'%s' is not in this frame.",
-            selected_.c_str());
+            "%s", say(selected_.empty() ? "inspector.select" : "inspector.notInFrame", texture).c_str());
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled(
-            "Selecting a texture keeps it, and the passes that make it, alive from the next frame on. Wheel: zoom, drag: pan, double-click: fit, right click: pin the probe.");
+        ImGui::TextDisabled("%s", say("inspector.howTo").c_str());
         ImGui::PopTextWrapPos();
         return;
     }
@@ -189,12 +190,12 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     if (!source.alive()) {
         ImGui::PushTextWrapPos(0.0f);
         if (record->origin == TextureOrigin::PresentedOutput) {
-            ImGui::TextDisabled(
-                "The presented output is the window's framebuffer: it is the picture behind this overlay and cannot be sampled.");
+            ImGui::TextDisabled("%s", say("inspector.presented").c_str());
         } else if (!record->reason.empty()) {
-            ImGui::TextColored(ui_style::kWarning, "Not made this frame: %s", record->reason.c_str());
+            ImGui::TextColored(ui_style::kWarning, "%s",
+                               say("inspector.notMade", {{"reason", record->reason}}).c_str());
         } else {
-            ImGui::TextDisabled("Not alive yet: it is kept from the next frame on.");
+            ImGui::TextDisabled("%s", say("inspector.notAlive").c_str());
         }
         ImGui::PopTextWrapPos();
         return;
@@ -209,11 +210,8 @@ void Inspector::drawDetail(const InspectorFrame& frame) {
     }
     drawViewControls(s, source, analysis());
     ui_style::continueRow(170.0f, 16.0f);
-    if (ImGui::Button("find NaN/Inf")) findSpecialAsked_ = true;
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "F4: the next texel with a NaN or an infinity; the probe is pinned there and the view\n"
-            "zooms onto it");
+    if (ImGui::Button((say("inspector.findSpecial") + "###find special").c_str())) findSpecialAsked_ = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("inspector.findSpecialHelp").c_str());
     if (std::exchange(findSpecialAsked_, false)) findSpecial(source, s);
     ImGui::SameLine();
     drawSaveButtons();
@@ -317,7 +315,7 @@ void Inspector::findSpecial(const TextureSource& source, const ViewSettings& s) 
     std::int64_t count = 0;
     auto found = nextSpecialTexel(gl::readTexture(source.native, source.spec, level), afterX, afterY, &count);
     if (!found) {
-        status_ = cat("no NaN or Inf in ", selected_, " mip ", level);
+        status_ = say("inspector.noSpecial", {{"texture", selected_}, {"level", cat(level)}});
         return;
     }
     probe_.pin({level, found->x, found->y, {}});
@@ -325,24 +323,28 @@ void Inspector::findSpecial(const TextureSource& source, const ViewSettings& s) 
     // About 24 screen pixels per texel of this level, centred on it.
     const double levelScale = double(source.levelSize(0).width) / std::max(size.width, 1);
     view_.setZoom(24.0 / levelScale, (found->x + 0.5) / size.width, (found->y + 0.5) / size.height);
-    status_ = cat("NaN/Inf at texel (", found->x, ", ", found->y, ") of mip ", level, "; ", count,
-                  " such texel", count == 1 ? "" : "s", " (F4: the next)");
+    status_ = say(count == 1 ? "inspector.specialOne" : "inspector.specialMany",
+                  {{"x", cat(found->x)}, {"y", cat(found->y)}, {"level", cat(level)}, {"count", cat(count)}});
     log::info("inspector: ", status_);
 }
 
 void Inspector::drawSaveButtons() {
     for (bool exact : {false, true}) {
         if (exact) ImGui::SameLine();
-        if (ImGui::Button(exact ? "save PFM" : "save PNG")) {
+        if (ImGui::Button(
+                (say(exact ? "inspector.savePfm" : "inspector.savePng") + (exact ? "###pfm" : "###png"))
+                    .c_str())) {
             auto saved = saveSelected(exact);
-            status_ = saved ? cat("saved ", saved->string()) : saved.error();
+            if (saved)
+                status_ = say("notice.presetSaved", {{"file", saved->string()}});
+            else
+                status_ = saved.error();
             log::info(status_);
         }
         if (ImGui::IsItemHovered()) {
-            ImGui::SetTooltip(exact
-                                  ? "the level's exact stored floats (PFM; alpha in a second file)\ninto %s/"
-                                  : "the level as shown, one pixel per texel (PNG)\ninto %s/",
-                              saveFolder_.string().c_str());
+            ImGui::SetTooltip("%s", say(exact ? "inspector.savePfmHelp" : "inspector.savePngHelp",
+                                        {{"folder", saveFolder_.string()}})
+                                        .c_str());
         }
     }
     if (!status_.empty()) {

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "ui/ui_style.hpp"
 
 namespace fx {
@@ -54,7 +55,7 @@ std::optional<std::string> TextureList::draw(const FrameReport& frame, const Thu
         // ImGuiTextFilter has no hint text: draw one over the empty box.
         ImVec2 min = ImGui::GetItemRectMin();
         ImGui::GetWindowDrawList()->AddText(ImVec2(min.x + 6, min.y + 3), IM_COL32(120, 120, 120, 255),
-                                            "filter by name (bloom, -depth)");
+                                            say("list.filter").c_str());
     }
     const float rowHeight =
         std::max(float(kThumbnailHeight) + 4.0f, 4.0f * ImGui::GetTextLineHeightWithSpacing());
@@ -95,7 +96,8 @@ std::optional<std::string> TextureList::draw(const FrameReport& frame, const Thu
                            DisplaySurface::uvBottomRight(), tint);
         } else {
             draw->AddRectFilled(box0, box1, IM_COL32(28, 28, 32, 255));
-            const char* note = e.presented ? "screen" : e.made ? "..." : "-";
+            const std::string screen = say("list.screen");
+            const char* note = e.presented ? screen.c_str() : e.made ? "..." : "-";
             ImVec2 ns = ImGui::CalcTextSize(note);
             draw->AddText(
                 ImVec2(box0.x + (kThumbnailWidth - ns.x) / 2, box0.y + (kThumbnailHeight - ns.y) / 2),
@@ -112,9 +114,10 @@ std::optional<std::string> TextureList::draw(const FrameReport& frame, const Thu
         ImGui::TextDisabled("%s", describeSizeAndFormat(t).c_str());
         ImGui::TextDisabled("%s", describeMipsAndBytes(t).c_str());
         if (e.presented) {
-            ImGui::TextDisabled("the picture on screen");
+            ImGui::TextDisabled("%s", say("list.onScreen").c_str());
         } else if (!e.made) {
-            ImGui::TextColored(ui_style::kWarning, "%s", t.reason.empty() ? "not made" : t.reason.c_str());
+            ImGui::TextColored(ui_style::kWarning, "%s",
+                               t.reason.empty() ? say("list.notMade").c_str() : t.reason.c_str());
         } else if (e.producer) {
             if (e.producer->timeMs) {
                 ImGui::Text("%s: %.3f ms", e.producer->name.c_str(), *e.producer->timeMs);
@@ -131,7 +134,8 @@ std::optional<std::string> TextureList::draw(const FrameReport& frame, const Thu
             ImGui::TextDisabled("%s, %s%s%s", describeTexture(t).c_str(),
                                 std::string(toString(t.origin)).c_str(), t.inspected ? ", inspected" : "",
                                 t.captured ? ", captured" : "");
-            if (!t.producer.empty()) ImGui::Text("written by '%s'", t.producer.c_str());
+            if (!t.producer.empty())
+                ImGui::TextUnformatted(say("list.writtenBy", {{"pass", t.producer}}).c_str());
             if (!e.made && !t.reason.empty()) ImGui::TextColored(ui_style::kWarning, "%s", t.reason.c_str());
             ImGui::EndTooltip();
         }

@@ -1,11 +1,13 @@
 #include "ui/lesson_panel.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "ui/markdown_view.hpp"
 #include "ui/ui_style.hpp"
 #include "ui/word_wrap.hpp"
@@ -14,23 +16,47 @@ namespace fx {
 
 namespace {
 
+// A source's words: "source.default", "source.command_line" ...
+std::string sourceWords(ParamSource source) {
+    std::string key = cat("source.", toString(source));
+    for (char& c : key) {
+        if (c == ' ') c = '_';
+    }
+    return say(key);
+}
+
 // The value's widget; true when the user changed it this frame.
 bool drawParamWidget(const Param& p) {
+    // The shown words: the name as typed on the command line, and beside it the label where the
+    // language has one ("閾値 (threshold)"); "##name" keeps the widget's identity in every language.
+    const std::string label = p.label();
+    const std::string words = label == p.name ? p.name : cat(label, " (", p.name, ")");
+    const std::string shown = words + "##" + p.name;
+    if (label != p.name) {
+        // A label beside the name is longer than the name alone: the widget leaves it, and the source
+        // tag after it, the room they need (down to a third of the row for the widget).
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const std::string tag = cat("[", sourceWords(p.source()), "]");
+        const float avail = ImGui::GetContentRegionAvail().x;
+        const float text = ImGui::CalcTextSize(words.c_str()).x + ImGui::CalcTextSize(tag.c_str()).x +
+                           2.0f * style.ItemInnerSpacing.x + style.ItemSpacing.x;
+        ImGui::SetNextItemWidth(std::max(avail - text, avail / 3.0f));
+    }
     switch (p.type) {
         // The slider's span (a setting's may be narrower than its range: the values a lesson is shown
         // with); Ctrl+click types any value.
         case ParamType::Float:
-            return ImGui::SliderFloat(p.name.c_str(), p.floatValue, float(p.sliderMin), float(p.sliderMax),
+            return ImGui::SliderFloat(shown.c_str(), p.floatValue, float(p.sliderMin), float(p.sliderMax),
                                       p.sliderFormat().c_str());
         case ParamType::Int:
-            return ImGui::SliderInt(p.name.c_str(), p.intValue, int(p.sliderMin), int(p.sliderMax),
+            return ImGui::SliderInt(shown.c_str(), p.intValue, int(p.sliderMin), int(p.sliderMax),
                                     p.sliderFormat().c_str());
         case ParamType::Bool:
-            return ImGui::Checkbox(p.name.c_str(), p.boolValue);
+            return ImGui::Checkbox(shown.c_str(), p.boolValue);
         case ParamType::Choice: {
             bool changed = false;
             const char* current = p.choices.empty() ? "" : p.choices[std::size_t(*p.intValue)].c_str();
-            if (ImGui::BeginCombo(p.name.c_str(), current)) {
+            if (ImGui::BeginCombo(shown.c_str(), current)) {
                 for (std::size_t i = 0; i < p.choices.size(); ++i) {
                     if (ImGui::Selectable(p.choices[i].c_str(), int(i) == *p.intValue)) {
                         changed = *p.intValue != int(i);
@@ -49,7 +75,7 @@ bool drawParamWidget(const Param& p) {
 void pinMenu(ParamSet& params, const Param& p) {
     if (!ImGui::BeginPopupContextItem("pin")) return;
     bool pinned = p.pinned;
-    if (ImGui::MenuItem("keep this value in every step", nullptr, &pinned)) params.setPinned(p, pinned);
+    if (ImGui::MenuItem(say("param.pinMenu").c_str(), nullptr, &pinned)) params.setPinned(p, pinned);
     ImGui::EndPopup();
 }
 
@@ -62,9 +88,9 @@ void drawParam(ParamSet& params, const Param& p) {
     // were changed here (they belong to this step: ParamSet::changeStep) or are kept in every step.
     ParamSource source = p.source();
     ImGui::SameLine();
-    std::string tag = p.pinned                         ? "[kept in every step]"
-                      : source == ParamSource::overlay ? "[changed in this step]"
-                                                       : cat("[", toString(source), "]");
+    std::string tag = p.pinned                         ? say("param.pinnedTag")
+                      : source == ParamSource::overlay ? say("param.changedTag")
+                                                       : cat("[", sourceWords(source), "]");
     if (source == ParamSource::lessonDefault && !p.pinned) {
         ImGui::TextDisabled("%s", tag.c_str());
     } else {
@@ -73,13 +99,11 @@ void drawParam(ParamSet& params, const Param& p) {
     hovered = hovered || ImGui::IsItemHovered();
     pinMenu(params, p);
     if (hovered) {
-        std::string from = cat("from: ", toString(source));
-        if (source == ParamSource::scene) from += cat(" (", p.sceneSetting, ")");
-        if (!p.sceneSetting.empty() && source != ParamSource::scene)
-            from += cat("; the scene setting ", p.sceneSetting, " starts it when the scene has one");
-        ImGui::SetTooltip("%s\n(%s%s)\n%s\n%s", p.description.c_str(), p.rangeText().c_str(),
-                          p.knob ? "; a quality knob" : "", from.c_str(),
-                          "A change belongs to the step it is made in; right-click keeps it in every step.");
+        const WordArgs args{{"source", sourceWords(source)}, {"setting", p.sceneSetting}};
+        std::string from = say(source == ParamSource::scene ? "param.fromScene" : "param.from", args);
+        if (!p.sceneSetting.empty() && source != ParamSource::scene) from += say("param.sceneStarts", args);
+        ImGui::SetTooltip("%s\n(%s%s)\n%s\n%s", p.help().c_str(), p.shownRangeText().c_str(),
+                          p.knob ? say("param.knob").c_str() : "", from.c_str(), say("param.stepNote").c_str());
     }
     ImGui::PopID();
 }
@@ -107,7 +131,8 @@ void drawParams(ParamSet& params, int step) {
         else
             others.push_back(&p);
     }
-    if (!others.empty() && ImGui::TreeNode("other steps", "other steps (%d)", int(others.size()))) {
+    if (!others.empty() && ImGui::TreeNode("other steps", "%s",
+                                           say("panel.otherSteps", {{"count", cat(others.size())}}).c_str())) {
         for (const Param* p : others) drawParam(params, *p);
         ImGui::TreePop();
     }
@@ -139,7 +164,7 @@ void drawStepText(const std::string& text, int step, bool opened) {
 // folded under the step's text: one node a page, its text as the steps' is drawn.
 void drawLessonPages(const OverlayModel& m) {
     if (m.pages.empty()) return;
-    const char* label = m.language == "ja" ? "このレッスンの補足" : "Beside the steps";
+    const std::string label = say("panel.pages");
     if (!ImGui::CollapsingHeader(cat(label, " (", m.pages.size(), ")###lesson pages").c_str())) return;
     for (std::size_t i = 0; i < m.pages.size(); ++i) {
         const LessonStep& page = m.pages[i];
@@ -177,7 +202,8 @@ void drawNotices(const OverlayModel& m) {
 // The step's row: its number, the arrows and the text's languages.
 void drawStepRow(const OverlayModel& m) {
     int& step = *m.step;
-    ImGui::Text("Step %d of %d", step + 1, int(m.steps.size()));
+    ImGui::TextUnformatted(
+        say("panel.stepOf", {{"step", cat(step + 1)}, {"steps", cat(m.steps.size())}}).c_str());
     ImGui::SameLine();
     if (ImGui::ArrowButton("prev", ImGuiDir_Left) && step > 0) --step;
     ImGui::SameLine();
@@ -232,48 +258,53 @@ void drawStepBody(const OverlayModel& m, bool opened) {
         drawLessonPages(m);
     }
     if (!m.textError.empty()) {
-        ImGui::TextColored(ui_style::kError,
-                           "Lesson text (the steps show what was read before, or titles only):");
+        ImGui::TextColored(ui_style::kError, "%s", say("panel.textError").c_str());
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextUnformatted(m.textError.c_str());
         ImGui::PopTextWrapPos();
     }
     if (!m.shaderErrors.empty()) {
         ImGui::Separator();
-        ImGui::TextColored(ui_style::kError, "Shader errors (the last good program keeps running):");
+        ImGui::TextColored(ui_style::kError, "%s", say("panel.shaderErrors").c_str());
         for (auto& e : m.shaderErrors) ImGui::TextWrapped("%s", e.c_str());
     }
     const int step = m.step ? *m.step : 0;
     if (m.params && !m.params->all().empty() &&
-        ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::CollapsingHeader((say("panel.parameters") + "###parameters").c_str(),
+                                ImGuiTreeNodeFlags_DefaultOpen)) {
         drawParams(*m.params, step);
-        if (ImGui::Button("Reset")) m.params->resetAll();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "Back to the values the run started with (scene, preset, command line), in every step");
+        if (ImGui::Button((say("panel.reset") + "###reset").c_str())) m.params->resetAll();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("panel.resetHelp").c_str());
         if (m.onSavePreset) {
             ImGui::SameLine();
-            if (ImGui::Button("Save preset")) m.onSavePreset();
+            if (ImGui::Button((say("panel.savePreset") + "###save preset").c_str())) m.onSavePreset();
         }
         if (m.onLoadPreset) {
             ImGui::SameLine();
-            if (ImGui::Button("Load preset")) m.onLoadPreset();
+            if (ImGui::Button((say("panel.loadPreset") + "###load preset").c_str())) m.onLoadPreset();
         }
     }
-    if (m.lessonPanel && ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) m.lessonPanel();
+    if (m.lessonPanel && ImGui::CollapsingHeader((say("panel.lesson") + "###lesson panel").c_str(),
+                                                 ImGuiTreeNodeFlags_DefaultOpen))
+        m.lessonPanel();
     ImGui::Separator();
     ImGui::TextDisabled("%s", m.renderer.c_str());
-    if (m.frame) ImGui::TextDisabled("frame %.2f ms, timing: %s", m.frameMs, m.timing.c_str());
+    if (m.frame) {
+        char ms[32];
+        std::snprintf(ms, sizeof ms, "%.2f", m.frameMs);
+        ImGui::TextDisabled("%s", say("panel.frameMs", {{"ms", ms}, {"timing", m.timing}}).c_str());
+    }
     if (!m.clockRate.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled("%s", m.clockRate.c_str());
         ImGui::PopTextWrapPos();
     }
     if (m.glErrors > 0)
-        ImGui::TextColored(ui_style::kError, "GL errors: %lld", static_cast<long long>(m.glErrors));
+        ImGui::TextColored(ui_style::kError, "%s",
+                           say("panel.glErrors", {{"count", cat(m.glErrors)}}).c_str());
     if (m.glExpectedErrors > 0) {
-        ImGui::TextColored(ui_style::kWarning, "GL errors this step shows on purpose: %lld",
-                           static_cast<long long>(m.glExpectedErrors));
+        ImGui::TextColored(ui_style::kWarning, "%s",
+                           say("panel.glExpectedErrors", {{"count", cat(m.glExpectedErrors)}}).c_str());
     }
     if (!m.status.empty()) ImGui::TextDisabled("%s", m.status.c_str());
 }

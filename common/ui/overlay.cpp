@@ -8,6 +8,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/gl.hpp"
 #include "gl/object.hpp"
@@ -37,13 +38,13 @@ float titleBarHeight(float scale) {
 
 void drawKeys(const OverlayModel& m) {
     if (m.keys.empty()) {
-        ImGui::TextDisabled("no keys: this overlay is drawn without a runner");
+        ImGui::TextDisabled("%s", say("keys.none").c_str());
         return;
     }
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("keys", 2, flags)) return;
-    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("what it does", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn(say("keys.key").c_str(), ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn(say("keys.action").c_str(), ImGuiTableColumnFlags_WidthStretch);
     for (const OverlayKey& k : m.keys) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -52,7 +53,8 @@ void drawKeys(const OverlayModel& m) {
         ImGui::TextWrapped("%s", k.action.c_str());
     }
     ImGui::EndTable();
-    ImGui::TextDisabled("also: %s --help", m.executable.empty() ? "<lesson>" : m.executable.c_str());
+    ImGui::TextDisabled(
+        "%s", say("keys.also", {{"exe", m.executable.empty() ? "<lesson>" : m.executable}}).c_str());
 }
 
 }  // namespace
@@ -117,11 +119,12 @@ void Overlay::prepareFonts(const OverlayModel& m) {
             texts.push_back(s.note);
         }
     texts.push_back(m.textError);
+    texts.insert(texts.end(), m.words.begin(), m.words.end());
     if (Status loaded = fonts_.prepare(texts, textScale_); !loaded) {
         log::error(loaded.error());
         fontError_ = loaded.error();
         if (m.language != "en" && m.setLanguage) {
-            fontError_ += "; showing the English text";
+            fontError_ += say("overlay.fontFallback");
             m.setLanguage("en");
         }
     } else {
@@ -147,14 +150,16 @@ void Overlay::followResize(const LayoutRect& placed, ImVec2 now, int width, int 
 
 void Overlay::drawFrameWindow(const OverlayModel& m, const PanelLayout& layout) {
     placeNext(layout.frame);
-    if (ImGui::Begin("Frame: keys, passes and cost", nullptr, kDocked) && ImGui::BeginTabBar("frame tabs")) {
+    // "###": the window and its tabs keep their identity in every language.
+    const std::string title = say("frame.window") + "###frame";
+    if (ImGui::Begin(title.c_str(), nullptr, kDocked) && ImGui::BeginTabBar("frame tabs")) {
         const bool selectCost = requestFrameOpen_ && requestCostTab_;
         // The keys come first: a teacher finds every key in one place without looking for it.
-        if (ImGui::BeginTabItem("Keys")) {
+        if (ImGui::BeginTabItem((say("frame.keys") + "###keys").c_str())) {
             drawKeys(m);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Passes", nullptr,
+        if (ImGui::BeginTabItem((say("frame.passes") + "###passes").c_str(), nullptr,
                                 requestFrameOpen_ && !requestCostTab_ ? ImGuiTabItemFlags_SetSelected : 0)) {
             if (m.frame) {
                 // In copies too, once the cost panel has measured a copy at this size.
@@ -163,11 +168,12 @@ void Overlay::drawFrameWindow(const OverlayModel& m, const PanelLayout& layout) 
                                       sweep->height == m.frame->outputSize.height;
                 drawPassTable(*m.frame, sameSize ? sweep->copyMs : 0.0);
             } else {
-                ImGui::TextDisabled("no frame yet");
+                ImGui::TextDisabled("%s", say("frame.none").c_str());
             }
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Cost of quality", nullptr, selectCost ? ImGuiTabItemFlags_SetSelected : 0)) {
+        if (ImGui::BeginTabItem((say("frame.cost") + "###cost").c_str(), nullptr,
+                                selectCost ? ImGuiTabItemFlags_SetSelected : 0)) {
             cost_.draw(m.measureKnobs);
             ImGui::EndTabItem();
         }
@@ -208,7 +214,8 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
         GlStateScope keep;
 
         placeNext(layout.lesson);
-        ImGui::Begin(m.title.empty() ? "fxlab" : m.title.c_str(), nullptr, kDocked);
+        const std::string lessonTitle = (m.title.empty() ? std::string("fxlab") : m.title) + "###lesson";
+        ImGui::Begin(lessonTitle.c_str(), nullptr, kDocked);
         followResize(layout.lesson, ImGui::GetWindowSize(), width, height, true);
         drawLessonWindowContents(m);
         if (!fontError_.empty()) ImGui::TextColored(ui_style::kWarning, "%s", fontError_.c_str());

@@ -22,6 +22,8 @@ struct OverlayKey {
 
 struct OverlayModel {
     std::string title;
+    // Every text of the run's words files (base/words.hpp): the font atlas loads their glyphs.
+    std::vector<std::string_view> words;
     std::vector<LessonStep> steps;  // title and markdown text of each, from lesson.md (or its translation)
     // The lesson's own pages beside the steps (pitfalls, hard cases, the chapter's other exercises):
     // heading as title, markdown text, and a note where the language shown lacks the page.

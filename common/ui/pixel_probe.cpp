@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/gl_formats.hpp"
 #include "ui/texture_analysis.hpp"
 #include "ui/ui_style.hpp"
@@ -68,17 +69,21 @@ std::string storedValueText(float value, TextureFormat format) {
 void PixelProbe::draw(const ProbeSample& sample, const TextureSource& source, bool linearDepth,
                       float cameraNear, float cameraFar, bool pinned) {
     if (sample.channels == 0) {
-        ImGui::TextDisabled("probe: hover the view (right click pins a texel)");
+        ImGui::TextDisabled("%s", say("probe.hover").c_str());
         return;
     }
-    ImGui::Text("texel (%d, %d) of mip %d, %dx%d%s", sample.x, sample.y, sample.level, sample.size.width,
-                sample.size.height, pinned ? "  [pinned: right click to release]" : "");
+    ImGui::TextUnformatted(say(pinned ? "probe.texelPinned" : "probe.texel",
+                               {{"x", cat(sample.x)},
+                                {"y", cat(sample.y)},
+                                {"level", cat(sample.level)},
+                                {"size", cat(sample.size.width, "x", sample.size.height)}})
+                               .c_str());
     static const char* names[4] = {"R", "G", "B", "A"};
     const bool depth = isDepth(source.spec.format);
     for (int c = 0; c < sample.channels; ++c) {
         if (c > 0) ImGui::SameLine(0.0f, 14.0f);
         ImGui::TextColored(depth ? ui_style::kMuted : ui_style::channelColour(c), "%s",
-                           depth ? "depth" : names[c]);
+                           depth ? say("probe.depth").c_str() : names[c]);
         ImGui::SameLine();
         float v = sample.texel.value[c];
         ImGui::TextUnformatted(storedValueText(v, source.spec.format).c_str());

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/log.hpp"
+#include "base/words.hpp"
 #include "gl/gl_formats.hpp"
 #include "image/plot_axis.hpp"
 #include "ui/pixel_probe.hpp"
@@ -64,7 +65,7 @@ void drawViewControls(ViewSettings& s, const TextureSource& source, const Textur
     if (source.levels() > 1) {
         next(150.0f);
         ImGui::SetNextItemWidth(110);
-        ImGui::SliderInt("mip", &s.level, 0, source.levels() - 1);
+        ImGui::SliderInt((say("view.mip") + "###mip").c_str(), &s.level, 0, source.levels() - 1);
     }
     if (!depth && channels > 1) {
         static const char* names[4] = {"R", "G", "B", "A"};
@@ -74,9 +75,7 @@ void drawViewControls(ViewSettings& s, const TextureSource& source, const Textur
             ImGui::PushID(c);
             channelToggle(names[c], s.channels[std::size_t(c)], ui_style::channelColour(c));
             if (ImGui::IsItemHovered()) {
-                ImGui::SetTooltip("%s", c == 3
-                                            ? "alpha: with colour, drawn over a checkerboard; alone, as grey"
-                                            : "one channel alone is shown as grey");
+                ImGui::SetTooltip("%s", say(c == 3 ? "view.alphaHelp" : "view.channelHelp").c_str());
             }
             ImGui::PopID();
         }
@@ -90,25 +89,25 @@ void drawViewControls(ViewSettings& s, const TextureSource& source, const Textur
         }
         ImGui::EndCombo();
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("view transform (the stored values are not changed)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("view.transformHelp").c_str());
     next(110.0f);
     ImGui::SetNextItemWidth(90);
     ImGui::DragFloat("EV", &s.exposureStops, 0.05f, -20.0f, 20.0f, "%+.2f");
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("exposure in stops: values are multiplied by 2^EV; double-click to type");
+        ImGui::SetTooltip("%s", say("view.exposureHelp").c_str());
     }
 
     // The range.
     ImGui::SetNextItemWidth(200);
     float speed = std::max(std::abs(s.rangeHigh - s.rangeLow) * 0.005f, 1e-5f);
-    ImGui::DragFloatRange2("range", &s.rangeLow, &s.rangeHigh, speed, 0.0f, 0.0f, "%.4g", "%.4g");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the values shown as black and as white");
+    ImGui::DragFloatRange2((say("view.range") + "###range").c_str(), &s.rangeLow, &s.rangeHigh, speed, 0.0f,
+                           0.0f, "%.4g", "%.4g");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("view.rangeHelp").c_str());
     ui_style::continueRow(70.0f);
-    if (ImGui::Button("auto-fit") && analysis) autoFitRange(s, *analysis);
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("fit the range to the smallest and largest finite values%s",
-                          depth && s.linearDepth ? " (the sky at the far plane left out)" : "");
-    }
+    if (ImGui::Button((say("view.autoFit") + "###auto-fit").c_str()) && analysis) autoFitRange(s, *analysis);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s",
+                          say(depth && s.linearDepth ? "view.autoFitDepthHelp" : "view.autoFitHelp").c_str());
     ui_style::continueRow(40.0f);
     if (ImGui::Button("0..1")) {
         s.rangeLow = 0.0f;
@@ -117,32 +116,31 @@ void drawViewControls(ViewSettings& s, const TextureSource& source, const Textur
     }
     if (depth) {
         ui_style::continueRow(110.0f, 12.0f);
-        if (ImGui::Checkbox("linear depth", &s.linearDepth)) s.autoFitPending = true;
+        if (ImGui::Checkbox((say("view.linearDepth") + "###linear depth").c_str(), &s.linearDepth))
+            s.autoFitPending = true;
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip(
-                "show the distance from the camera (near %g, far %g) instead of the stored value",
-                double(s.cameraNear), double(s.cameraFar));
+                "%s", say("view.linearDepthHelp", {{"near", cat(s.cameraNear)}, {"far", cat(s.cameraFar)}})
+                          .c_str());
         }
     }
 
     // The highlight and its counts.
-    ImGui::Checkbox("mark", &s.highlightSpecial);
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip(
-            "grey picture with NaN, infinite and negative texels in colour\n(NaN is always magenta)");
-    }
+    ImGui::Checkbox((say("view.mark") + "###mark").c_str(), &s.highlightSpecial);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", say("view.markHelp").c_str());
     if (analysis) {
         ImGui::SameLine();
         countSwatch(ui_style::kNan, "NaN", static_cast<long long>(analysis->nanTexels));
         ui_style::continueRow(60.0f, 12.0f);
         countSwatch(ui_style::kInf, "Inf", static_cast<long long>(analysis->infTexels));
         ui_style::continueRow(90.0f, 12.0f);
-        countSwatch(ui_style::kNegative, "negative", static_cast<long long>(analysis->negativeTexels));
+        countSwatch(ui_style::kNegative, say("view.negative").c_str(),
+                    static_cast<long long>(analysis->negativeTexels));
         ui_style::continueRow(50.0f, 12.0f);
-        ImGui::TextDisabled("texels");
+        ImGui::TextDisabled("%s", say("view.texels").c_str());
     } else {
         ImGui::SameLine();
-        ImGui::TextDisabled("(counting...)");
+        ImGui::TextDisabled("%s", say("view.counting").c_str());
     }
 }
 
@@ -192,19 +190,17 @@ void drawHistogram(const TextureAnalysis& a, ViewSettings& s, ImVec2 size) {
     const ImU32 rangeColour = IM_COL32(255, 255, 255, 200);
     draw->AddLine(ImVec2(xOf(s.rangeLow), top), ImVec2(xOf(s.rangeLow), base), rangeColour, 1.5f);
     draw->AddLine(ImVec2(xOf(s.rangeHigh), top), ImVec2(xOf(s.rangeHigh), base), rangeColour, 1.5f);
-    std::string lowText = (h.logarithmic ? "log scale from " : "") + formatValue(h.low);
+    std::string lowText = (h.logarithmic ? say("view.logFrom") + " " : "") + formatValue(h.low);
     std::string highText = formatValue(h.high);
     draw->AddText(ImVec2(p0.x + 5, p0.y + 2), IM_COL32(170, 170, 170, 255), lowText.c_str());
     ImVec2 hs = ImGui::CalcTextSize(highText.c_str());
     draw->AddText(ImVec2(p1.x - hs.x - 5, p0.y + 2), IM_COL32(170, 170, 170, 255), highText.c_str());
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip(
-            "values %s to %s%s (finite only; bar height ~ sqrt(count))%s\ndrag to set the range",
-            exactFloatText(h.low).c_str(), exactFloatText(h.high).c_str(),
-            a.linearDepth ? ", as distances" : "",
-            a.farPlaneTexels > 0
-                ? cat("\n", a.farPlaneTexels, " texels at the far plane (the sky) left out").c_str()
-                : "");
+        std::string text = say(a.linearDepth ? "view.histogramDepth" : "view.histogram",
+                               {{"low", exactFloatText(h.low)}, {"high", exactFloatText(h.high)}});
+        if (a.farPlaneTexels > 0) text += "\n" + say("view.farPlane", {{"count", cat(a.farPlaneTexels)}});
+        text += "\n" + say("view.dragRange");
+        ImGui::SetTooltip("%s", text.c_str());
     }
 }
 

@@ -110,28 +110,15 @@ std::vector<std::string> ProgramObjectsLesson::steps() const {
 
 void ProgramObjectsLesson::declareParams(ParamSet& params) {
     // Each parameter is listed in the steps it acts in.
-    params
-        .addChoice(
-            "broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"},
-            "Steps 1 and 2: the normals program's fragment shader, with a deliberate mistake (step 1 uses it unchecked, step 2 refuses it and shows the log)")
+    params.addChoice("broken_shader", &broken_, {"none", "syntax_error", "undeclared_name", "link_error"})
         .inSteps({CopyPasted, CheckedPrograms});
-    params.addBool("lookup_every_draw", &lookupEveryDraw_, "Step 3: call glGetUniformLocation for every draw")
-        .inSteps({CachedLocations});
-    params.addInt("grid_size", &gridSize_, 1, 64, "Step 3: objects per side of the grid")
-        .inSteps({CachedLocations});
-    Param& order = params
-                       .addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
-                                  "Step 4: which product the presented sphere uses")
-                       .inSteps({Parentheses});
+    params.addBool("lookup_every_draw", &lookupEveryDraw_).inSteps({CachedLocations});
+    params.addInt("grid_size", &gridSize_, 1, 64).inSteps({CachedLocations});
+    Param& order =
+        params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"}).inSteps({Parentheses});
     order.knob = Knob{{0, 1}, 1, "order"};
-    params
-        .addInt("spheres", &spheres_, 1, 256,
-                "Step 4: spheres drawn (a square grid), so vertex work shows in the time")
-        .inSteps({Parentheses});
-    Param& detail = params
-                        .addInt("mesh_detail", &meshDetail_, 8, 512,
-                                "Step 4: sphere segments (vertices grow with the square)")
-                        .inSteps({Parentheses});
+    params.addInt("spheres", &spheres_, 1, 256).inSteps({Parentheses});
+    Param& detail = params.addInt("mesh_detail", &meshDetail_, 8, 512).inSteps({Parentheses});
     detail.knob = Knob{{16, 32, 64, 128, 256}, 256, "segments"};
 }
 
@@ -359,25 +346,28 @@ void ProgramObjectsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
 void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
     switch (frame.step) {
         case CopyPasted:
-            ImGui::TextWrapped("Programs: lit %u, unlit %u, normals %u (raw names, never checked)",
-                               rawLit_.name(), rawUnlit_.name(), rawNormals_.name());
+            ImGui::TextWrapped("%s", fx::say("text.rawNames", {{"lit", fx::cat(rawLit_.name())},
+                                                               {"unlit", fx::cat(rawUnlit_.name())},
+                                                               {"normals", fx::cat(rawNormals_.name())}})
+                                         .c_str());
             if (*broken_ != NotBroken) {
-                ImGui::TextWrapped(
-                    "The normals program was built from %s: it did not link, nothing asked, and the sphere is gone. The only trace: %lld GL errors this frame, in the debug output.",
-                    brokenFile(*broken_), static_cast<long long>(rawErrorsLastFrame_));
+                ImGui::TextWrapped("%s",
+                                   fx::say("text.uncheckedBroken",
+                                           {{"file", brokenFile(*broken_)},
+                                            {"errors", fx::cat(static_cast<long long>(rawErrorsLastFrame_))}})
+                                       .c_str());
             }
             break;
         case CheckedPrograms:
             if (*broken_ == NotBroken) {
-                ImGui::TextWrapped("Choose broken_shader under Parameters to see a build fail.");
+                ImGui::TextWrapped("%s", fx::say("text.chooseBroken").c_str());
             } else {
-                ImGui::TextWrapped(
-                    "The check refused the broken normals program; the sphere keeps the last good one. Its log:");
+                ImGui::TextWrapped("%s", fx::say("text.checkRefused").c_str());
                 ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", brokenAttempt_.error().c_str());
             }
             break;
         case LiveReload:
-            ImGui::Text("lit program: build %d", lit_.generation());
+            ImGui::TextUnformatted(fx::say("text.litBuild", {{"build", fx::cat(lit_.generation())}}).c_str());
             for (auto& f : lit_.program().sourceFiles())
                 ImGui::BulletText("%s", f.filename().string().c_str());
             if (!lit_.error().empty())
@@ -390,32 +380,30 @@ void ProgramObjectsLesson::drawPanel(const FrameInfo& frame) {
 
 void ProgramObjectsLesson::facts(Facts& out, const FrameInfo& frame) const {
     // Every fact goes in the report; the panel shows those of the step on screen.
-    auto fact = [&](bool shown, std::string name, std::string value, std::string label) {
+    auto fact = [&](bool shown, std::string name, std::string value, const WordArgs& args = {}) {
         if (shown)
-            out.add(std::move(name), std::move(value), std::move(label));
+            out.add(std::move(name), std::move(value), args);
         else
             out.check(std::move(name), std::move(value));
     };
     const bool lookups = frame.step == CachedLocations, products = frame.step == Parentheses;
     fact(lookups, "uniformLookupsLastFrame", std::to_string(lookupsLastFrame_),
-         cat("uniform look-ups this frame (", gridSize_ * gridSize_, " draws)"));
-    fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_),
-         "time spent in glGetUniformLocation (ms)");
+         {{"draws", cat(gridSize_ * gridSize_)}});
+    fact(lookups, "uniformLookupMs", std::to_string(lookupMsLastFrame_));
     out.check("brokenShaderLog", brokenAttempt_.error());  // the panel shows it in colour
     // Step 1 with a broken shader exists to show GL errors (counted as expected); the smoke test
     // checks that it does, and that no other step raises any.
     out.check("expectErrorsInStep", frame.step == CopyPasted && *broken_ != NotBroken);
-    fact(frame.step == CopyPasted, "uncheckedProgramGlErrorsLastFrame", std::to_string(rawErrorsLastFrame_),
-         "GL errors step 1's draws raised last frame (nothing checks them)");
-    fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()), "vertices per sphere");
-    fact(products, "spheres", std::to_string(spheres_), "spheres");
+    fact(frame.step == CopyPasted, "uncheckedProgramGlErrorsLastFrame", std::to_string(rawErrorsLastFrame_));
+    fact(products, "denseSphereVertices", std::to_string(denseSphere_.vertexCount()));
+    fact(products, "spheres", std::to_string(spheres_));
     fact(products, "opsGroupedPerVertex", std::to_string(kGrouped.mul + kGrouped.add),
-         cat("(T*J)*p: ", kGrouped.mul, " mul + ", kGrouped.add, " add per vertex"));
+         {{"mul", cat(kGrouped.mul)}, {"add", cat(kGrouped.add)}});
     fact(products, "opsParenthesisedPerVertex", std::to_string(kParenthesised.mul + kParenthesised.add),
-         cat("T*(J*p): ", kParenthesised.mul, " mul + ", kParenthesised.add, " add per vertex"));
+         {{"mul", cat(kParenthesised.mul)}, {"add", cat(kParenthesised.add)}});
     if (products && frame.previousFrame) {
-        out.add("groupedMs", cat(groupedPass_.timeMs(*frame.previousFrame)), "(T*J)*p pass (ms)");
-        out.add("parenthesisedMs", cat(parenthesisedPass_.timeMs(*frame.previousFrame)), "T*(J*p) pass (ms)");
+        out.add("groupedMs", cat(groupedPass_.timeMs(*frame.previousFrame)));
+        out.add("parenthesisedMs", cat(parenthesisedPass_.timeMs(*frame.previousFrame)));
     }
 }
 

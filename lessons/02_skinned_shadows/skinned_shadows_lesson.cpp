@@ -77,32 +77,17 @@ std::vector<std::string> SkinnedShadowsLesson::steps() const {
 }
 
 void SkinnedShadowsLesson::declareParams(ParamSet& params) {
-    Param& size =
-        params.addInt("map_size", &mapSize_, 16, 8192,
-                      "Shadow map texels per side (the scene asks for 2048); memory grows with the square");
+    Param& size = params.addInt("map_size", &mapSize_, 16, 8192);
     size.knob = Knob{{256, 512, 1024, 2048}, 4096, "texels"};
-    Param& taps = params.addInt("filter_taps", &filterTaps_, 1, kShadowMaxFilterTaps,
-                                "PCF depth comparisons per pixel (1: a hard, stair-stepped edge)");
+    Param& taps = params.addInt("filter_taps", &filterTaps_, 1, kShadowMaxFilterTaps);
     taps.knob = Knob{{1, 4, 8, 16, 32}, 64, "taps"};
-    params.addFloat("filter_radius", &filterRadius_, 0.0f, 0.5f,
-                    "PCF disc radius in metres, the same at every map size (0: 1.5 texels of the map)");
-    Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"},
-                                    "Step 3: the skinning product of the shadow map the scene uses");
+    params.addFloat("filter_radius", &filterRadius_, 0.0f, 0.5f);
+    Param& order = params.addChoice("product_order", &productOrder_, {"(T*J)*p", "T*(J*p)"});
     order.knob = Knob{{0, 1}, 1, "order"};
     order.inSteps({ProductOrder});
-    params
-        .addInt("crowd", &crowd_, 1, 400,
-                "Step 3: characters in the crowd (a grid; the first is the scene's)")
-        .inSteps({ProductOrder});
-    params
-        .addChoice(
-            "material_upload", &materialUpload_, {"always", "ask_program"},
-            "Step 4: upload material uniforms to the skinned shadow program always (the chapter's GL error flood) or only if the program has them (the fix)")
-        .inSteps({ErrorFlood});
-    params
-        .addChoice(
-            "cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"},
-            "Step 5: set the alpha cutoff on the static shadow program only (the chapter's bug: the skinned lattice mannequin casts a solid shadow) or on every shadow program")
+    params.addInt("crowd", &crowd_, 1, 400).inSteps({ProductOrder});
+    params.addChoice("material_upload", &materialUpload_, {"always", "ask_program"}).inSteps({ErrorFlood});
+    params.addChoice("cutoff_uniform", &cutoffUniform_, {"first_program_only", "every_program"})
         .inSteps({CutoutShadows});
 }
 
@@ -182,35 +167,28 @@ void SkinnedShadowsLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame)
 
 void SkinnedShadowsLesson::drawPanel(const FrameInfo& frame) {
     if (frame.step == ProductOrder) {
-        ImGui::TextWrapped(
-            "Both products include the 4 scalar*mat4 and 3 mat4 additions of the joint blend, which the parentheses do not change.");
+        ImGui::TextWrapped("%s", say("text.jointBlend").c_str());
     }
     if (frame.step == CutoutShadows) {
-        ImGui::TextWrapped(
-            "alpha cutoff %.1f set on: %s", double(kAlphaCutoff),
-            cutoffUniform_ == 0
-                ? "the static shadow program only (the skinned one keeps 0: the mannequin's shadow is solid)"
-                : "both shadow programs (the lattice's holes reach the ground)");
+        ImGui::TextWrapped("%s", say(cutoffUniform_ == 0 ? "text.cutoffFirstOnly" : "text.cutoffEvery",
+                                     {{"cutoff", cat(std::round(kAlphaCutoff * 10.0f) / 10.0f)}})
+                                     .c_str());
     }
     if (frame.step == ErrorFlood) {
-        ImGui::TextWrapped("material upload: %s",
-                           materialUpload_ == 0
-                               ? "always (GL_INVALID_OPERATION per upload: the flood)"
-                               : "only if the program has the uniform (none here: no errors)");
+        ImGui::TextWrapped("%s", say(materialUpload_ == 0 ? "text.uploadAlways" : "text.uploadAsk").c_str());
     }
 }
 
 void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
     const ShadowPassStats& s = stats_;
-    out.add("shadowMapSize", std::to_string(mapSize_), "shadow map size (Depth32F, square)");
-    out.add("filterTaps", std::to_string(filterTaps_), "PCF taps");
-    out.add("staticShadowDraws", std::to_string(s.staticDraws), "static draws");
-    out.add("skinnedShadowDraws", std::to_string(s.skinnedDraws), "skinned draws");
-    out.add("shadowProgramSwitches", std::to_string(s.programSwitches), "program switches");
-    out.add("skinnedShadowVertices", std::to_string(s.skinnedVertices), "skinned vertices");
+    out.add("shadowMapSize", std::to_string(mapSize_));
+    out.add("filterTaps", std::to_string(filterTaps_));
+    out.add("staticShadowDraws", std::to_string(s.staticDraws));
+    out.add("skinnedShadowDraws", std::to_string(s.skinnedDraws));
+    out.add("shadowProgramSwitches", std::to_string(s.programSwitches));
+    out.add("skinnedShadowVertices", std::to_string(s.skinnedVertices));
     if (frame.step == ErrorFlood) {
-        out.add("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors),
-                "GL errors from the skinned shadow draws");
+        out.add("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors));
     } else {
         out.check("shadowPassGlErrorsLastFrame", std::to_string(s.glErrors));
     }
@@ -223,15 +201,16 @@ void SkinnedShadowsLesson::facts(Facts& out, const FrameInfo& frame) const {
             OperationCount c = operationCount(p);
             out.add(grouped ? "opsGroupedPerVertex" : "opsParenthesisedPerVertex",
                     std::to_string(c.mul + c.add),
-                    cat(grouped ? "(T*J)*p" : "T*(J*p)", ": ", c.mul, " mul + ", c.add,
-                        " add per vertex; pass ", grouped == groupedShown ? shadowMs : otherMs, " ms"));
+                    {{"mul", cat(c.mul)},
+                     {"add", cat(c.add)},
+                     {"ms", cat(grouped == groupedShown ? shadowMs : otherMs)}});
         }
     } else if (frame.previousFrame) {
-        out.add("shadowMs", cat(shadowMs), "shadow pass (ms)");
+        out.add("shadowMs", cat(shadowMs));
     }
     if (frame.step == CutoutShadows)
-        out.add("alphaCutoffOnSkinnedProgram", cutoffUniform_ == 0 ? "0 (never set)" : cat(kAlphaCutoff),
-                "alpha cutoff of the skinned shadow program");
+        out.add("alphaCutoffOnSkinnedProgram",
+                cutoffUniform_ == 0 ? say("text.neverSet") : cat(kAlphaCutoff));
     // Step 4 exists to show GL errors (counted as expected); the smoke test checks that it does.
     out.check("expectErrorsInStep", frame.step == ErrorFlood && materialUpload_ == 0);
 }

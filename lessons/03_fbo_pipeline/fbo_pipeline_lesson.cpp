@@ -87,16 +87,8 @@ std::vector<std::string> FboPipelineLesson::steps() const {
 }
 
 void FboPipelineLesson::declareParams(ParamSet& params) {
-    params
-        .addFloat(
-            "washout_split", &washoutSplit_, 0.0f, 1.0f,
-            "Step 5: the divider, as a fraction of the width; left of it the double-gamma washout (0: the fix only)")
-        .inSteps({OneOutputTransform});
-    params
-        .addBool(
-            "viewport_bug", &viewportBug_,
-            "Steps 4 and 5: the scene pass keeps the shadow map's viewport instead of its target's (a deliberate bug)")
-        .inSteps({FloatTarget, OneOutputTransform});
+    params.addFloat("washout_split", &washoutSplit_, 0.0f, 1.0f).inSteps({OneOutputTransform});
+    params.addBool("viewport_bug", &viewportBug_).inSteps({FloatTarget, OneOutputTransform});
 }
 
 Status FboPipelineLesson::init(const Scene& scene) {
@@ -191,11 +183,11 @@ std::vector<std::string> FboPipelineLesson::shadowInherited(const FrameReport* r
 void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
     const std::vector<std::string> executed =
         frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
-    ImGui::TextUnformatted("Frame order");
+    ImGui::TextUnformatted(say("text.frameOrder").c_str());
     if (!ImGui::BeginTable("order", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
         return;
-    ImGui::TableSetupColumn("the chapter's Render(), by hand");
-    ImGui::TableSetupColumn("the graph's order, derived");
+    ImGui::TableSetupColumn(say("text.chapterColumn").c_str());
+    ImGui::TableSetupColumn(say("text.graphColumn").c_str());
     ImGui::TableHeadersRow();
     const std::vector<ChapterLine>& lines = chapterOrder(frame.step);
     std::size_t rows = std::max(lines.size(), executed.size());
@@ -203,15 +195,17 @@ void FboPipelineLesson::drawPanel(const FrameInfo& frame) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (i < lines.size()) {
-            ImGui::TextWrapped("%s%s%s%s", lines[i].text.c_str(), lines[i].pass.empty() ? "" : " [",
+            // The chapter's line in the language shown (steps 4 and 5 share one list of lines).
+            const std::string text =
+                words().textOr(cat("chapter.", std::min(frame.step, 3) + 1, ".", i + 1), lines[i].text);
+            ImGui::TextWrapped("%s%s%s%s", text.c_str(), lines[i].pass.empty() ? "" : " [",
                                lines[i].pass.c_str(), lines[i].pass.empty() ? "" : "]");
         }
         ImGui::TableNextColumn();
         if (i < executed.size()) ImGui::Text("%d. %s", int(i) + 1, executed[i].c_str());
     }
     ImGui::EndTable();
-    ImGui::TextWrapped(
-        "The graph orders passes by what they read and write: the scene reads shadow.map, so the shadow pass runs first whatever the order of the code. What it cannot derive is the state a pass inherits; the pass table lists it.");
+    ImGui::TextWrapped("%s", say("text.graphOrders").c_str());
 }
 
 void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
@@ -220,20 +214,16 @@ void FboPipelineLesson::facts(Facts& out, const FrameInfo& frame) const {
     out.check("executedPassOrder", joinedNames(frame.previousFrame ? frame.previousFrame->executedPasses()
                                                                    : std::vector<std::string>{}));
     std::vector<std::string> inherited = shadowInherited(frame.previousFrame);
-    out.add("shadowPassInherits", joinedNames(inherited),
-            inherited.empty() ? "shadow pass inherits (nothing: it declares all the state it depends on)"
-                              : "shadow pass inherits");
-    if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_, "shadow map not run");
+    out.addAs("shadowPassInherits", inherited.empty() ? "shadowPassInheritsNothing" : "shadowPassInherits",
+              joinedNames(inherited));
+    if (!noShadowReason_.empty()) out.add("shadowMapNotRun", noShadowReason_);
     if (frame.step >= FloatTarget) {
         std::string target = cat(frame.size.width, "x", frame.size.height);
         bool bug = viewportBug_ && noShadowReason_.empty();
         int map = 0;
         if (const Light* sun = shadowCastingLight(frame.world.scene())) map = sun->shadow.mapSize;
-        out.add(
-            "sceneViewport",
-            bug ? cat(map, "x", map, " on a ", target, " target (the shadow map's: only a corner is drawn)")
-                : cat(target, ", the target's (set by the graph)"),
-            "the scene pass's viewport");
+        const WordArgs sizes{{"map", cat(map, "x", map)}, {"target", target}};
+        out.add("sceneViewport", say(bug ? "text.viewportBug" : "text.viewportRight", sizes));
     }
 }
 

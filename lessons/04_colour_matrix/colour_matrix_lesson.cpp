@@ -118,35 +118,17 @@ void ColourMatrixLesson::declareParams(ParamSet& params) {
     params
         .addChoice("preset", &preset_,
                    {"identity", "grayscale", "sepia", "saturation", "hue_rotation", "channel_swap",
-                    "brightness_contrast", "invert", "invert_3x3", "custom"},
-                   "Step 4: the transform (custom: the matrix edited in the panel)")
+                    "brightness_contrast", "invert", "invert_3x3", "custom"})
         .fromScene("postEffects.colorMatrix.preset")
         .inSteps(affine);
     params.addSetting("amount", &amount_, sceneSetting("postEffects.colorMatrix.amount"));
-    params
-        .addFloat("saturation", &saturation_, -1.0f, 3.0f,
-                  "Preset saturation: 0 grayscale, 1 unchanged, above 1 stronger colours")
-        .inSteps(affine);
-    params
-        .addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f,
-                  "Preset hue_rotation: degrees around the grey axis")
-        .inSteps(affine);
-    params
-        .addChoice("channel_order", &channelOrder_,
-                   "Preset channel_swap: which input channels become r, g and b")
-        .inSteps(affine);
-    params
-        .addFloat("brightness", &brightness_, -1.0f, 1.0f,
-                  "Preset brightness_contrast: added to every channel")
-        .inSteps(affine);
-    params
-        .addFloat("contrast", &contrast_, 0.0f, 4.0f,
-                  "Preset brightness_contrast: scales the distance from mid grey (linear 0.18)")
-        .inSteps(affine);
-    params.addBool("split_view", &splitView_,
-                   "Show the picture before the matrix right of the divider, after it on the left");
-    params.addFloat("divider", &divider_, 0.0f, 1.0f,
-                    "Where the split view's divider is (drag it with the mouse)");
+    params.addFloat("saturation", &saturation_, -1.0f, 3.0f).inSteps(affine);
+    params.addFloat("hue_degrees", &hueDegrees_, -180.0f, 180.0f).inSteps(affine);
+    params.addChoice("channel_order", &channelOrder_).inSteps(affine);
+    params.addFloat("brightness", &brightness_, -1.0f, 1.0f).inSteps(affine);
+    params.addFloat("contrast", &contrast_, 0.0f, 4.0f).inSteps(affine);
+    params.addBool("split_view", &splitView_);
+    params.addFloat("divider", &divider_, 0.0f, 1.0f);
 }
 
 ColourTransform ColourMatrixLesson::presetTransform(int preset) const {
@@ -237,7 +219,7 @@ void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
                 }
                 if (!editable) ImGui::EndDisabled();
                 if (ImGui::IsItemHovered())
-                    ImGui::SetTooltip("%s: %s", rows[r], c < 3 ? "weight of r, g, b" : "offset");
+                    ImGui::SetTooltip("%s: %s", rows[r], say(c < 3 ? "text.weight" : "text.offset").c_str());
                 ImGui::PopID();
             }
         }
@@ -247,19 +229,17 @@ void ColourMatrixLesson::drawPanel(const FrameInfo& frame) {
         custom_ = t;
         preset_ = Custom;
     }
-    ImGui::TextWrapped("rgb' = M rgb + o: M in the first three columns, o in the last (%s)",
-                       editable ? "edit any cell: the preset becomes custom" : "editable in step 4");
-    ImGui::TextUnformatted(t.linear() ? "no offset: a 3x3 matrix can do this"
-                                      : "has an offset: a 3x3 matrix cannot do this");
+    ImGui::TextWrapped("%s", say(editable ? "text.matrixEditable" : "text.matrixFixed").c_str());
+    ImGui::TextUnformatted(say(t.linear() ? "text.noOffset" : "text.hasOffset").c_str());
 }
 
 void ColourMatrixLesson::facts(Facts& out, const FrameInfo& frame) const {
     ColourTransform used = grading_->transform();
     out.add("transform", equations(used));
-    out.add("needsOffset", !used.linear(), "needs an offset (not a 3x3 matrix)");
-    out.add("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))), "white ->");
-    out.add("redMapsTo", vec3Text(used.apply(glm::vec3(1, 0, 0))), "red ->");
-    out.add("blackMapsTo", vec3Text(used.apply(glm::vec3(0.0f))), "black ->");
+    out.add("needsOffset", !used.linear());
+    out.add("whiteMapsTo", vec3Text(used.apply(glm::vec3(1.0f))));
+    out.add("redMapsTo", vec3Text(used.apply(glm::vec3(1, 0, 0))));
+    out.add("blackMapsTo", vec3Text(used.apply(glm::vec3(0.0f))));
     out.check("step", std::to_string(frame.step + 1));
 }
 

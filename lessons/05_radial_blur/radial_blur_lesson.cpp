@@ -85,13 +85,12 @@ std::vector<std::string> RadialBlurLesson::steps() const {
 }
 
 void RadialBlurLesson::declareParams(ParamSet& params) {
-    params.addSetting("centre_x", &centreX_, sceneSetting("postEffects.radialBlur.center[0]"), "Drag it");
-    params.addSetting("centre_y", &centreY_, sceneSetting("postEffects.radialBlur.center[1]"), "Drag it");
+    params.addSetting("centre_x", &centreX_, sceneSetting("postEffects.radialBlur.center[0]"));
+    params.addSetting("centre_y", &centreY_, sceneSetting("postEffects.radialBlur.center[1]"));
     params.addSetting("length", &length_, sceneSetting("postEffects.radialBlur.length"));
-    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"), "Steps 2 to 4")
+    params.addSetting("start", &start_, sceneSetting("postEffects.radialBlur.start"))
         .inSteps({ChapterStart, Guarded, SampleCount});
-    Param& samples = params.addSetting("samples", &samples_, sceneSetting("postEffects.radialBlur.taps"),
-                                       "Step 4, spread over the chapter's 8-tap streak");
+    Param& samples = params.addSetting("samples", &samples_, sceneSetting("postEffects.radialBlur.taps"));
     samples.knob = Knob{{4, 8, 16, 32, 64}, 256, "samples"};
     samples.inSteps({SampleCount});
 }
@@ -157,14 +156,14 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
     RadialBlurParams p = paramsForStep(frame.step);
     const RadialBlurFormulaInfo& info = describe(p.formula);
     out.add("formula", std::string(info.name));
-    out.add("deliberateBug", info.deliberateBug, "deliberate bug");
+    out.add("deliberateBug", info.deliberateBug);
     out.add("samples", std::to_string(p.samples));
-    out.add("centrePixels", vec2Text(radialBlurCentrePixels(p, frame.size)),
-            p.centreOnPixel ? "centre in pixels (on a pixel centre)" : "centre in pixels");
+    out.addAs("centrePixels", p.centreOnPixel ? "centrePixelsOnCentre" : "centrePixels",
+              vec2Text(radialBlurCentrePixels(p, frame.size)));
     glm::vec2 pixel;
     if (centrePixel(p, frame.size, pixel)) {
         glm::vec2 v = radialBlurTapOffset(p, frame.size, pixel);
-        out.add("offsetAtCentrePixel", vec2Text(v), cat("offset v at the pixel ", vec2Text(pixel)));
+        out.add("offsetAtCentrePixel", vec2Text(v), {{"pixel", vec2Text(pixel)}});
         // The step that keeps the chapter's 0/0: its NaN is the lesson, so the smoke check lets these
         // textures hold it (and checks that they do).
         if (info.deliberateBug && blurRan(frame) && p.length > 0 &&
@@ -176,9 +175,8 @@ void RadialBlurLesson::facts(Facts& out, const FrameInfo& frame) const {
     glm::vec2 corner(float(frame.size.width) - 0.5f, float(frame.size.height) - 0.5f);
     glm::vec2 reach =
         radialBlurTapOffset(p, frame.size, corner) * 7.0f * glm::vec2(frame.size.width, frame.size.height);
-    out.add("streakAtCornerPixels", cat(std::hypot(reach.x, reach.y)), "streak at the top-right corner (px)");
-    if (frame.previousFrame)
-        out.add("blurMs", cat(blurGroup_.timeMs(*frame.previousFrame)), "radial blur passes (ms)");
+    out.add("streakAtCornerPixels", cat(std::hypot(reach.x, reach.y)));
+    if (frame.previousFrame) out.add("blurMs", cat(blurGroup_.timeMs(*frame.previousFrame)));
 }
 
 }  // namespace lesson05

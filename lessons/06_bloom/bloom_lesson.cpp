@@ -160,60 +160,32 @@ std::vector<std::string> BloomLesson::steps() const {
 void BloomLesson::declareParams(ParamSet& params) {
     // The steps with a bloom chain (steps 1 and 2 compare the scene's formats before there is one).
     const std::vector<int> chainSteps = {ShaderEffectsChain, BloomChapterChain, Beyond, WholeFrameStep};
-    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Steps 3 to 5")
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"))
         .inSteps(chainSteps);
-    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee"), "Step 5").inSteps({Beyond});
-    params
-        .addSetting(
-            "intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
-            "Step 3: Shader effects' intensity; step 5: a uniform area gains this times its bright part, for any level count")
+    params.addSetting("knee", &knee_, sceneSetting("postEffects.bloom.knee")).inSteps({Beyond});
+    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"))
         .inSteps({ShaderEffectsChain, Beyond, WholeFrameStep});
-    params
-        .addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f,
-                  "Step 4: the Bloom chapter's bloomScale, applied by a shader uniform (Exercise 01: 1.0)")
-        .inSteps({BloomChapterChain});
-    Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"),
-                                      "Steps 3 to 5 (fewer when the window is too small)");
+    params.addFloat("bloom_scale", &bloomScale_, 0.0f, 4.0f).inSteps({BloomChapterChain});
+    Param& levels = params.addSetting("levels", &levels_, sceneSetting("postEffects.bloom.levels"));
     levels.knob = Knob{{2, 3, 4, 5, 6, 7, 8}, 6, "levels"};
     levels.inSteps(chainSteps);
-    params
-        .addFloat(
-            "down_offset", &downOffset_, 0.0f, 2.0f,
-            "Steps 4 and 5: bright-pass and downsample tap offset, in source texels (Bloom chapter: 0.75)")
-        .inSteps({BloomChapterChain, Beyond});
-    params
-        .addFloat("up_offset", &upOffset_, 0.0f, 2.0f,
-                  "Steps 4 and 5: upsample tap offset, in source texels (Bloom chapter: 0.5)")
-        .inSteps({BloomChapterChain, Beyond});
-    Param& format = params.addChoice(
-        "format", &format_, "Steps 3 to 5: the chain's colour format (RGBA8 shows what clipping costs)");
+    params.addFloat("down_offset", &downOffset_, 0.0f, 2.0f).inSteps({BloomChapterChain, Beyond});
+    params.addFloat("up_offset", &upOffset_, 0.0f, 2.0f).inSteps({BloomChapterChain, Beyond});
+    Param& format = params.addChoice("format", &format_);
     // The other sweeps hold the format at the one step 5 uses (RGBA16F): the error of every row is
     // measured against the Gaussian reference, not against another format.
     format.knob = Knob{{0, 1, 2, 3}, 0, "format"};
     format.inSteps(chainSteps);
-    params.addBool("karis", &karis_, "Step 5: Karis average on the first downsample (fewer fireflies)")
-        .inSteps({Beyond});
-    Param& finish = params.addChoice(
-        "finish", &finish_,
-        "Step 5: how the chain ends. full-taps: the composite blurs the half-size glow with 8 taps at every full-size pixel (the chapters); half-wide: bloom up 0 does that blur at half size and the composite takes one bilinear tap; -fused: the composite and the output transform are one pass");
+    params.addBool("karis", &karis_).inSteps({Beyond});
+    Param& finish = params.addChoice("finish", &finish_);
     finish.knob = Knob{{0, 1, 2, 3}, 3, "way"};
     finish.inSteps({Beyond});
-    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"), "Step 5")
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"))
         .inSteps({Beyond});
-    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"), "Step 5")
-        .inSteps({Beyond});
-    params
-        .addBool(
-            "reference", &reference_,
-            "Step 5: show the reference instead of the chain: a direct full-resolution Gaussian per level (slow)")
-        .inSteps({Beyond});
-    params
-        .addChoice(
-            "frame_order", &frameOrder_,
-            "Step 6: the order of the post effects (the first is the chapter's: the colour matrix greys the glow)")
-        .inSteps({WholeFrameStep});
-    params.addChoice("frame_matrix", &frameMatrix_, "Step 6: the colour matrix the whole frame applies")
-        .inSteps({WholeFrameStep});
+    params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure")).inSteps({Beyond});
+    params.addBool("reference", &reference_).inSteps({Beyond});
+    params.addChoice("frame_order", &frameOrder_).inSteps({WholeFrameStep});
+    params.addChoice("frame_matrix", &frameMatrix_).inSteps({WholeFrameStep});
 }
 
 BloomChainSettings BloomLesson::chainFor(int step) const {
@@ -343,17 +315,13 @@ void BloomLesson::drawPanel(const FrameInfo& frame) {
         return;
     }
     if (step < ShaderEffectsChain) {
-        ImGui::TextWrapped(
-            "Inspect scene.color and look at the range: %s",
-            step == EightBit
-                ? "nothing above 1."
-                : cat("the brightest emitters are ", brightestEmitters(frame.world.scene(), 3), ".").c_str());
+        const WordArgs emitters{{"emitters", brightestEmitters(frame.world.scene(), 3)}};
+        ImGui::TextWrapped("%s",
+                           say(step == EightBit ? "text.rangeClipped" : "text.rangeFloat", emitters).c_str());
         return;
     }
     if (flicker_->stats().measured && !showsReference(step)) {
-        ImGui::TextWrapped(
-            "Inspect bloom.flicker to see where the glow changed: |this frame's glow - last frame's|.%s",
-            step == Beyond ? " Switch karis off to see the firefly flicker." : "");
+        ImGui::TextWrapped("%s", say(step == Beyond ? "text.flickerKaris" : "text.flicker").c_str());
     }
 }
 
@@ -361,47 +329,44 @@ void BloomLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     if (step == WholeFrameStep) wholeFrameFacts(out, frame);
     if (step < ShaderEffectsChain) {
-        out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F", "scene.color");
-        out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3),
-                "the scene's brightest emitters");
+        out.add("sceneFormat", step == EightBit ? "RGBA8" : "RGBA16F");
+        out.add("brightestEmitters", brightestEmitters(frame.world.scene(), 3));
         return;
     }
     // The emitters stay in the report: the chains' text quotes the firefly and the sun from it.
     out.check("brightestEmitters", brightestEmitters(frame.world.scene(), 3));
     BloomChainSettings s = chainFor(step);
     std::vector<BloomLevel> levels = bloomLevels(frame.size, firstLevelDivisor(s.filters), s.levels);
-    out.add("chainFormat", std::string(toString(s.format)), "chain format");
-    out.add("levels", std::to_string(levels.size()), cat("levels (of ", s.levels, " asked for)"));
-    out.add("levelSizes", sizesText(levels), "level sizes");
-    out.add("compositeScale", cat(compositeScale(step, std::max(int(levels.size()), 1))), "composite scale");
-    out.add("uniformGain", cat(uniformGain(step, frame.size)),
-            cat("a uniform grey v comes out as v + gain * max(v - ", threshold_, ", 0); gain"));
+    out.add("chainFormat", std::string(toString(s.format)));
+    out.add("levels", std::to_string(levels.size()), {{"asked", cat(s.levels)}});
+    out.add("levelSizes", sizesText(levels));
+    out.add("compositeScale", cat(compositeScale(step, std::max(int(levels.size()), 1))));
+    out.add("uniformGain", cat(uniformGain(step, frame.size)), {{"threshold", cat(threshold_)}});
     if (step == Beyond) {
-        out.add("toneCurve", toString(*toneCurve_), "tone curve");
-        out.add("reference", showsReference(step), "showing the reference Gaussian");
-        out.add("finish", finish_.name(), "how the chain ends");
+        out.add("toneCurve", toString(*toneCurve_));
+        out.add("reference", showsReference(step));
+        out.add("finish", finish_.name());
     }
     const BloomFlicker::Stats& f = flicker_->stats();
     if (f.measured && !showsReference(step) && step != WholeFrameStep) {
-        out.add("glowChangePercent", cat(f.changePercent), "glow change since last frame (%)");
-        out.add("glowChangeMaxPercent", cat(f.maxPercent),
-                cat("largest change over the last ", BloomFlicker::kWindow, " frames (%)"));
+        out.add("glowChangePercent", cat(f.changePercent));
+        out.add("glowChangeMaxPercent", cat(f.maxPercent), {{"frames", cat(BloomFlicker::kWindow)}});
     }
     if (frame.previousFrame && step != WholeFrameStep) {
-        out.add("bloomMs", cat(bloomGroup_.timeMs(*frame.previousFrame)), "bloom passes (ms)");
-        out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
+        out.add("bloomMs", cat(bloomGroup_.timeMs(*frame.previousFrame)));
+        out.add("frameMs", cat(frame.previousFrame->timedMs()));
     }
 }
 
 void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
     const std::vector<std::string> executed =
         frame.previousFrame ? frame.previousFrame->executedPasses() : std::vector<std::string>{};
-    ImGui::TextUnformatted("The chapter's per-frame pipeline, and the passes that ran");
+    ImGui::TextUnformatted(say("text.wholeFrame").c_str());
     if (!ImGui::BeginTable("whole frame", 2,
                            ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp))
         return;
-    ImGui::TableSetupColumn("the chapter's table");
-    ImGui::TableSetupColumn("the graph's order, derived");
+    ImGui::TableSetupColumn(say("text.chapterColumn").c_str());
+    ImGui::TableSetupColumn(say("text.graphColumn").c_str());
     ImGui::TableHeadersRow();
     const std::vector<ChapterFrameRow>& table = chapterFrameTable();
     std::size_t rows = std::max(table.size(), executed.size());
@@ -409,7 +374,8 @@ void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         if (i < table.size())
-            ImGui::TextWrapped("%s. %s [%s]", table[i].rows.c_str(), table[i].action.c_str(),
+            ImGui::TextWrapped("%s. %s [%s]", table[i].rows.c_str(),
+                               words().textOr(cat("chapter.", i + 1), table[i].action).c_str(),
                                table[i].pass.c_str());
         ImGui::TableNextColumn();
         if (i < executed.size()) ImGui::Text("%d. %s", int(i) + 1, executed[i].c_str());
@@ -418,8 +384,8 @@ void BloomLesson::drawWholeFramePanel(const FrameInfo& frame) const {
 }
 
 void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
-    out.add("frameOrder", frameOrder_.name(), "post effects, in order");
-    out.add("frameMatrix", frameMatrix_.name(), "colour matrix");
+    out.add("frameOrder", frameOrder_.name());
+    out.add("frameMatrix", frameMatrix_.name());
     std::vector<std::string> passes;
     for (const ChapterFrameRow& row : chapterFrameTable()) passes.push_back(row.pass);
     out.check("chapterTableOrder", joinedNames(passes));
@@ -429,7 +395,8 @@ void BloomLesson::wholeFrameFacts(Facts& out, const FrameInfo& frame) const {
     if (frame.previousFrame) {
         std::string why;
         bool follows = followsChapterTable(executed, &why);
-        out.add("followsChapterTable", follows ? std::string("yes") : "no: " + why, "the chapter's order");
+        const WordArgs reason{{"why", why}};
+        out.add("followsChapterTable", say(follows ? "text.yes" : "text.no", reason));
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include <imgui.h>
@@ -60,49 +61,26 @@ std::vector<std::string> FireLesson::steps() const {
 }
 
 void FireLesson::declareParams(ParamSet& params) {
-    params.addChoice("path", &path_,
-                     "The simulation path: the step's own, one object per particle, one instanced draw, "
-                     "or the GPU (compute and an indirect draw)");
-    params
-        .addInt("count", &count_, 0, 100000,
-                "Particles alive in the fire (0: the step's own: the scene's rate in steps 1 and 2, "
-                "2000 in step 3, 100000 in step 4)")
-        .showZeroAs("the step's own");
+    params.addChoice("path", &path_);
+    params.addInt("count", &count_, 0, 100000).showZeroAs();
     // Not a quality knob but the bench's sweep of the three paths at 100 to 100000 particles: one knob,
     // so every row is timed in the same run against the same full-screen copy.
-    Param& workload = params.addChoice(
-        "workload", &workload_,
-        "The bench: a simulation path and a particle count together (params: the path and count parameters)");
+    Param& workload = params.addChoice("workload", &workload_);
     workload.knob = Knob{{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, 0, "path and particle count"};
-    params.addFloat("spin", &spin_, -720.0f, 720.0f,
-                    "Degrees per second the fire's sprites turn (the chapter's exercise: 120)");
-    params.addFloat("hitch", &hitch_, 0.0f, 2.0f, "Step 2: the long frame added every 120th frame (s)")
-        .inSteps({Hitch});
-    params.addBool("sort", &sort_, "Steps 2 and 3: draw back to front (the fix for the spawn order)")
-        .inSteps({Hitch, Instanced});
-    Param& soft =
-        params.addFloat("soft_distance", &soft_, 0.01f, 4.0f,
-                        "Step 5: the particles fade out over this distance in front of the scene (m)");
+    params.addFloat("spin", &spin_, -720.0f, 720.0f);
+    params.addFloat("hitch", &hitch_, 0.0f, 2.0f).inSteps({Hitch});
+    params.addBool("sort", &sort_).inSteps({Hitch, Instanced});
+    Param& soft = params.addFloat("soft_distance", &soft_, 0.01f, 4.0f);
     soft.knob = Knob{{0.05, 0.1, 0.3, 1.0}, 0.3, "soft-fade distance (m)"};
     soft.inSteps({Beyond});
-    Param& offscreen = params.addChoice("offscreen", &offscreen_, {"full", "half", "quarter"},
-                                        "Step 5: the resolution of the off-screen particle target");
+    Param& offscreen = params.addChoice("offscreen", &offscreen_, {"full", "half", "quarter"});
     offscreen.knob = Knob{{0, 1, 2}, 0, "off-screen resolution"};
     offscreen.inSteps({Beyond});
-    params.addInt("pool", &pool_, 0, 200000, "Slots per emitter (0: from rate x lifetime, with a margin)")
-        .showZeroAs("rate x lifetime");
-    params.addBool("flip_sprite", &flipSprite_,
-                   "Uploads the sprite's rows in the file's order, top row first, as raw GL code often does: "
-                   "a deliberate mistake that turns the flame upside down");
-    params
-        .addFloat("hold_alpha", &holdAlpha_, 0.0f, 1.0f,
-                  "Step 1: one particle standing at the emitter with its alpha held here, "
-                  "to watch its glow vanish below 1/3 (0: the chapter's fire)")
-        .showZeroAs("off: the chapter's fire")
-        .inSteps({Objects});
-    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"), "Bloom");
-    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"),
-                      "Bloom, the Shader effects chapter's");
+    params.addInt("pool", &pool_, 0, 200000).showZeroAs();
+    params.addBool("flip_sprite", &flipSprite_);
+    params.addFloat("hold_alpha", &holdAlpha_, 0.0f, 1.0f).showZeroAs().inSteps({Objects});
+    params.addSetting("threshold", &threshold_, sceneSetting("postEffects.bloom.threshold"));
+    params.addSetting("intensity", &intensity_, sceneSetting("postEffects.bloom.intensity"));
 }
 
 Status FireLesson::init(const Scene& scene) {
@@ -269,35 +247,34 @@ void FireLesson::buildFrame(FrameGraph& graph, const FrameInfo& frame) {
 void FireLesson::drawPanel(const FrameInfo& frame) {
     switch (frame.step) {
         case Objects:
-            ImGui::TextWrapped("Every particle is one draw call with its own uniforms.");
+            ImGui::TextWrapped("%s", say("text.objects").c_str());
             break;
-        case Hitch:
-            ImGui::TextWrapped(
-                "Left: the chapter's rules. Right: the fixes. Every 120th frame is %.2f s long; "
-                "watch the left flame flash dark and then spawn a burst.",
-                double(hitch_));
-            break;
+        case Hitch: {
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "%.2f", double(hitch_));
+            ImGui::TextWrapped("%s", say("text.hitch", {{"seconds", seconds}}).c_str());
+        } break;
         case Instanced:
-            ImGui::TextWrapped("One draw call; the CPU still moves every particle.");
+            ImGui::TextWrapped("%s", say("text.instanced").c_str());
             break;
         case Gpu:
-            ImGui::TextWrapped("Compute shaders simulate; the CPU only counts spawns.");
+            ImGui::TextWrapped("%s", say("text.gpu").c_str());
             break;
         default:
-            ImGui::TextWrapped("Inspect particles.color: the off-screen target.");
+            ImGui::TextWrapped("%s", say("text.offscreen").c_str());
             break;
     }
 }
 
 void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
     if (frame.world.scene().emitters.empty()) {
-        out.add("particles", "none", "the scene has no emitter: no buffer, no dispatch, no particle pass");
-        out.add("poolBytes", "0", "particle pool (bytes)");
+        out.add("particles", say("text.none"));
+        out.addAs("poolBytes", "poolBytesNoEmitter", "0");
         return;
     }
     if (!configured_) return;
-    out.add("path", kPathNames[int(setup_.path)], "simulation path");
-    out.add("drawCalls", std::to_string(drawCalls_), "particle draw calls");
+    out.add("path", kPathNames[int(setup_.path)]);
+    out.add("drawCalls", std::to_string(drawCalls_));
     std::uint32_t live = system_.liveCount();
     std::uint64_t replaced = system_.replacedCount();
     if (setup_.path == Path::gpu && gpu_ && !frame.benchmark) {
@@ -305,35 +282,33 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
         live = stats.live;
         replaced = stats.replaced;
     }
-    out.add("live", std::to_string(live), "particles alive");
-    out.add("capacity", std::to_string(system_.capacity()), "pool slots");
-    out.add("particleBudget", budget_.summary(), "pool slots against the device and the budget");
-    out.add("replaced", std::to_string(replaced), "pool full: oldest particles replaced");
-    out.add("dropped", std::to_string(system_.droppedCount()), "pool full: new particles dropped");
+    out.add("live", std::to_string(live));
+    out.add("capacity", std::to_string(system_.capacity()));
+    out.add("particleBudget", budget_.summary());
+    out.add("replaced", std::to_string(replaced));
+    out.add("dropped", std::to_string(system_.droppedCount()));
     // CPU time inside the calls: on a software renderer that holds the driver's own work too.
-    out.add("simulateCpuMs", cat(simulateMs_), "simulating: CPU time in this frame's simulation calls (ms)");
-    out.add("drawCpuMs", cat(drawCpuMs_), "drawing: CPU time inside the draw calls (ms)");
-    out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()), "spawned this frame");
+    out.add("simulateCpuMs", cat(simulateMs_));
+    out.add("drawCpuMs", cat(drawCpuMs_));
+    out.add("spawnedLastFrame", std::to_string(system_.spawnedLastFrame()));
     std::uint64_t bytes = setup_.path == Path::gpu ? (gpu_ ? gpu_->bytes() : 0) : renderer_->instanceBytes();
-    out.add("poolBytes", std::to_string(bytes), "particle buffers (bytes)");
+    out.add("poolBytes", std::to_string(bytes));
     out.add(
         "buffers",
         setup_.path == Path::gpu
             ? "particles.pool, particles.live, particles.draw_command, particles.stats, particles.emitters"
         : setup_.path == Path::instanced ? "particles.instances, particles.emitters"
-                                         : "particles.emitters (and one set of uniforms per particle)",
-        "particle buffers (GL labels)");
+                                         : "particles.emitters (and one set of uniforms per particle)");
     if (frame.step == Hitch) {
-        out.add("hitch", hitchNow_, "this frame was long");
-        out.add("negativeAlpha", std::to_string(negativeAlpha_), "particles drawn with alpha below 0 (left)");
+        out.add("hitch", hitchNow_);
+        out.add("negativeAlpha", std::to_string(negativeAlpha_));
         std::uint32_t chapterBacklog = 0;
         for (std::size_t e = 0; e < system_.clocks().size(); ++e) {
             if (system_.setups()[e].rules.chapterTimer)
                 chapterBacklog +=
                     std::uint32_t(system_.clocks()[e].backlog() * system_.setups()[e].emitter.ratePerSecond);
         }
-        out.add("chapterBacklog", std::to_string(chapterBacklog),
-                "spawns the chapter's timer still owes (left)");
+        out.add("chapterBacklog", std::to_string(chapterBacklog));
     }
     if (frame.step == Objects && !setup_.emitters.empty()) {
         // The first emitter: the chapter's fire (the scene's first emitter, or the particle hold_alpha
@@ -342,22 +317,18 @@ void FireLesson::facts(Facts& out, const FrameInfo& frame) const {
         // An opaque particle shows its emission, clipped at 1 and encoded as sRGB bytes (what step 1
         // displays where the flame is opaque, with the bloom's intensity at 0).
         auto shown = [](float v) { return int(toDisplayValue(v, ViewTransform::LinearToSrgb)); };
-        out.add("opaqueFlame", cat("(", shown(c.r), ", ", shown(c.g), ", ", shown(c.b), ")"),
-                "an opaque particle, clipped and encoded (bloom off)");
+        out.add("opaqueFlame", cat("(", shown(c.r), ", ", shown(c.g), ", ", shown(c.b), ")"));
         if (holdingAlpha(frame)) {
             // The bright pass keeps what its brightest channel has above the threshold.
             const float brightest = std::max({c.r, c.g, c.b}) * holdAlpha_;
-            out.add("heldBrightest", cat(brightest),
-                    "the held particle's brightest channel (emission x alpha)");
-            out.add("heldGlows", brightest > threshold_ ? "yes" : "no",
-                    "above the bloom threshold: it glows");
+            out.add("heldBrightest", cat(brightest));
+            out.add("heldGlows", brightest > threshold_ ? "yes" : "no");
         }
     }
-    if (frame.step <= Instanced)
-        out.add("outOfOrder", std::to_string(outOfOrder_), "pairs drawn front before back");
+    if (frame.step <= Instanced) out.add("outOfOrder", std::to_string(outOfOrder_));
     if (frame.previousFrame) {
-        out.add("particlesMs", cat(particleGroup_.timeMs(*frame.previousFrame)), "particle passes (ms)");
-        out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
+        out.add("particlesMs", cat(particleGroup_.timeMs(*frame.previousFrame)));
+        out.add("frameMs", cat(frame.previousFrame->timedMs()));
     }
 }
 

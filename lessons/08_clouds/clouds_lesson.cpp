@@ -165,29 +165,21 @@ void CloudsLesson::declareParams(ParamSet& params) {
     params.addSetting("top", &top_, sceneSetting("clouds[0].top"));
     params.addSetting("scale0", &scale0_, sceneSetting("clouds[0].noise[0].scale"));
     params.addSetting("scale1", &scale1_, sceneSetting("clouds[0].noise[1].scale"));
-    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"), "Steps 8 and 9")
+    params.addSetting("threshold", &threshold_, sceneSetting("clouds[0].threshold"))
         .inSteps({ThresholdHeight, Beyond});
     // A float on purpose: the overlay can ask for 8.5 samples (rounded down; hard case 10).
-    Param& steps = params.addSetting("steps", &steps_, sceneSetting("clouds[0].steps"), "Steps 5 to 9");
+    Param& steps = params.addSetting("steps", &steps_, sceneSetting("clouds[0].steps"));
     steps.knob = Knob{{2, 4, 8, 16, 32, 64, 128}, double(kCloudMaxSteps), "samples"};
     steps.inSteps({March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
-    params
-        .addBool("reject_behind", &rejectBehind_,
-                 "Step 2 on: hits behind the eye are rejected (off: the mirrored layer in the sky)")
-        .inSteps({Plane});
-    params.addFloat("camera_lift", &cameraLift_, -20.0f, 20.0f,
-                    "Moves the camera up or down (m): put the eye inside the slab to compare steps 5 and 6");
-    Param& dither =
-        params.addChoice("dither", &dither_, {"none", "bayer", "ign", "r2"},
-                         "Step 9: ray-start jitter (Bayer 4x4 is fixed; IGN and R2 move every frame)");
+    params.addBool("reject_behind", &rejectBehind_).inSteps({Plane});
+    params.addFloat("camera_lift", &cameraLift_, -20.0f, 20.0f);
+    Param& dither = params.addChoice("dither", &dither_, {"none", "bayer", "ign", "r2"});
     dither.knob = Knob{{0, 1, 2, 3}, 0, "dither"};
     dither.inSteps({Beyond});
-    Param& accumulate = params.addChoice("accumulate", &accumulate_, {"off", "on"},
-                                         "Step 9: average the clouds over frames, reprojected (up to 16)");
+    Param& accumulate = params.addChoice("accumulate", &accumulate_, {"off", "on"});
     accumulate.knob = Knob{{0, 1}, 0, "accumulation"};
     accumulate.inSteps({Beyond});
-    Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"},
-                                         "Step 9: march at the output's resolution or half of it");
+    Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"});
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
     resolution.inSteps({Beyond});
     std::vector<std::string> presetNames;
@@ -196,40 +188,18 @@ void CloudsLesson::declareParams(ParamSet& params) {
         presetNames.push_back(kQualityPresets[i].name);
         presetValues.push_back(i);
     }
-    Param& preset = params.addChoice("quality", &quality_, presetNames,
-                                     "Step 9: a combination of samples, jitter, accumulation and resolution "
-                                     "(knobs: the four knobs above)");
+    Param& preset = params.addChoice("quality", &quality_, presetNames);
     preset.knob = Knob{presetValues, 0, "combination"};
     preset.inSteps({Beyond});
-    params
-        .addBool("beer_lambert", &beerLambert_,
-                 "Step 9: opacity from each step's length (the same picture at any sample count)")
-        .inSteps({Beyond});
-    params
-        .addBool("distance_occlusion", &distanceOcclusion_,
-                 "Step 9: stop each ray at the surface's distance instead of comparing heights")
-        .inSteps({Beyond});
-    params
-        .addFloat("sky_distance", &skyDistance_, 0.0f, 1000.0f,
-                  "Steps 4 to 9: a sky drawn this far ahead that writes depth, a deliberate mistake: "
-                  "the clouds behind it vanish (0: the sky writes none, depth stays 1)")
-        .showZeroAs("off: depth stays 1")
+    params.addBool("beer_lambert", &beerLambert_).inSteps({Beyond});
+    params.addBool("distance_occlusion", &distanceOcclusion_).inSteps({Beyond});
+    params.addFloat("sky_distance", &skyDistance_, 0.0f, 1000.0f)
+        .showZeroAs()
         .inSteps({DepthAware, March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
-    params
-        .addBool("depth_lookup_bug", &depthLookupBug_,
-                 "Step 9 at half resolution: the march reads the scene's depth at its own pixel coordinates, "
-                 "as if its target had the depth's size, a deliberate mistake: "
-                 "the clouds are cut by the wrong part of the scene")
-        .inSteps({Beyond});
-    params
-        .addBool("mipmaps", &mipmaps_,
-                 "Steps 2 to 9: read the density at the level of the pixel's footprint, "
-                 "from a texture with mipmaps (off: the chapter's one level, which shimmers far away)")
+    params.addBool("depth_lookup_bug", &depthLookupBug_).inSteps({Beyond});
+    params.addBool("mipmaps", &mipmaps_)
         .inSteps({Plane, TwoScales, DepthAware, March, EyeInsideDither, Shadows, ThresholdHeight, Beyond});
-    params
-        .addBool("cloud_shadow", &cloudShadows_,
-                 "Step 9: the clouds' shadows on the ground, marched toward the sun through the same density")
-        .inSteps({Beyond});
+    params.addBool("cloud_shadow", &cloudShadows_).inSteps({Beyond});
 }
 
 Status CloudsLesson::init(const Scene& scene) {
@@ -414,58 +384,45 @@ std::uint64_t CloudsLesson::settingsKey(const CloudFrameSettings& s, int step) c
 }
 
 void CloudsLesson::drawPanel(const FrameInfo& frame) {
-    if (frame.step == Plane && !rejectBehind_)
-        ImGui::TextWrapped(
-            "reject_behind is off: rays that point away from the plane (t < 0) still sample it, "
-            "so the layer shows again, mirrored, in the sky.");
-    if (frame.step >= March)
-        ImGui::TextWrapped(
-            "Set camera_lift so the eye sits between bottom and top: "
-            "step 5 shows no cloud, step 6 marches from the eye.");
+    if (frame.step == Plane && !rejectBehind_) ImGui::TextWrapped("%s", say("text.mirrored").c_str());
+    if (frame.step >= March) ImGui::TextWrapped("%s", say("text.cameraLift").c_str());
 }
 
 void CloudsLesson::facts(Facts& out, const FrameInfo& frame) const {
     CloudFrameSettings s = settingsForStep(frame.step, jitterFrame_);
     const bool march = s.stage == CloudStage::march;
-    out.add("cloudLayer", frame.world.scene().clouds.empty() ? "none" : "first of the scene's",
-            "cloud layer");
-    out.add("densityTextureBytes", std::to_string(density_.bytes()), "density texture (bytes, SRGB8_ALPHA8)");
+    out.add("cloudLayer", frame.world.scene().clouds.empty() ? "none" : "first of the scene's");
+    out.add("densityTextureBytes", std::to_string(density_.bytes()));
     if (march) {
-        out.add("samples", std::to_string(s.march.steps), "samples per ray");
-        out.add("stepHeight", cat(s.march.stepHeight), "vertical step (m)");
+        out.add("samples", std::to_string(s.march.steps));
+        out.add("stepHeight", cat(s.march.stepHeight));
         out.add("dither", cloudDitherName(s.dither));
     }
-    if (frame.step >= ThresholdHeight)
-        out.add("thresholdGain", cat(s.march.thresholdGain), "1 / (1 - threshold) (0: no cloud)");
+    if (frame.step >= ThresholdHeight) out.add("thresholdGain", cat(s.march.thresholdGain));
     if (frame.step == Beyond) {
         // The running average weighs a new frame 1/16 at least: past 16 frames it holds 16 frames' worth.
         const int averaged = std::min(temporal_->framesAveraged(), CloudTemporalOptions{}.maxFrames);
-        out.add("framesAveraged", std::to_string(averaged), "frames in the average (at most 16)");
-        out.add("historyBytes", std::to_string(temporal_->historyBytes()), "history textures (bytes)");
-        out.add("quality", quality().name, "samples, jitter, accumulation, resolution");
-        out.add("resolution", quality().halfResolution ? "half" : "full", "march resolution");
+        out.add("framesAveraged", std::to_string(averaged));
+        out.add("historyBytes", std::to_string(temporal_->historyBytes()));
+        out.add("quality", quality().name);
+        out.add("resolution", quality().halfResolution ? "half" : "full");
         // The sun's height decides the shadow's path through the slab (thickness / sin, sin held at 0.1 or
         // more).
         const float sunDegrees =
             glm::degrees(std::asin(std::clamp(cloudShadowToLight(sunDirection_).y, -1.0f, 1.0f)));
-        out.add("cloudShadow", cloudShadows_ ? cat("on, sun ", sunDegrees, " degrees up") : "off",
-                "cloud shadows on the ground");
+        out.add("cloudShadow", cloudShadows_ ? cat("on, sun ", sunDegrees, " degrees up") : "off");
     }
-    if (mipmappedDensity_)
-        out.add("mipmappedDensityBytes", std::to_string(mipmappedDensity_.bytes()),
-                "the density texture with every level (bytes)");
+    if (mipmappedDensity_) out.add("mipmappedDensityBytes", std::to_string(mipmappedDensity_.bytes()));
     if (frame.step >= DepthAware) {
         const CameraMatrices camera = cameraMatrices(viewScene_.camera, frame.size.width, frame.size.height);
-        out.add("skyDepth", cat(skyDepthValue(camera)),
-                "the depth sky pixels hold (1: cleared, nothing writes it)");
+        out.add("skyDepth", cat(skyDepthValue(camera)));
     }
     if (frame.step == Beyond && quality().halfResolution)
         out.add("depthTexelsPerPixel",
-                depthLookupBug_ ? "1 (the mistake: the target is half the depth's size)" : "2",
-                "scene depth texels per pixel of the half-resolution march");
+                depthLookupBug_ ? "1 (the mistake: the target is half the depth's size)" : "2");
     glm::vec4 o = scroll_.offset();
-    out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"), "scroll offset, wrapped");
-    if (frame.previousFrame) out.add("cloudMs", cat(cloudGroup_.timeMs(*frame.previousFrame)), "clouds (ms)");
+    out.add("scrollOffset", cat("(", o.x, ", ", o.y, ", ", o.z, ", ", o.w, ")"));
+    if (frame.previousFrame) out.add("cloudMs", cat(cloudGroup_.timeMs(*frame.previousFrame)));
 }
 
 }  // namespace lesson08

@@ -130,79 +130,42 @@ std::vector<std::string> DepthOfFieldLesson::steps() const {
 
 void DepthOfFieldLesson::declareParams(ParamSet& params) {
     const std::vector<int> lensSteps = {PhysicalCamera, ChapterShader, Beyond, Reference};
-    params
-        .addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"),
-                    "Steps 4 to 7 (the chapter: the image distance)")
+    params.addSetting("focal_length", &focalLengthMm_, sceneSetting("camera.lens.focalLength"))
         .inSteps(lensSteps);
-    params
-        .addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"), "Steps 4 to 7")
+    params.addSetting("sensor_width", &sensorWidthMm_, sceneSetting("camera.lens.sensorWidth"))
         .inSteps(lensSteps);
-    params
-        .addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber"),
-                    "Steps 4 to 7 (below 0.5 counts as 0.5)")
+    params.addSetting("f_number", &fNumber_, sceneSetting("camera.lens.fNumber")).inSteps(lensSteps);
+    params.addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"))
         .inSteps(lensSteps);
-    params
-        .addSetting("focus_distance", &focusM_, sceneSetting("camera.lens.focusDistance"),
-                    "Steps 4 to 7 (at or inside the focal length counts as 1.001 focal lengths)")
-        .inSteps(lensSteps);
-    params
-        .addBool(
-            "chapter_compatible", &chapterCompatible_,
-            "Steps 4 to 7: the chapter's numbers "
-            "(fixed image distance, fov * 0.5 as the vertical field of view, the diameter used as a radius) "
-            "instead of the corrected ones")
-        .inSteps(lensSteps);
-    Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"),
-                                      "Steps 4 to 6");
+    params.addBool("chapter_compatible", &chapterCompatible_).inSteps(lensSteps);
+    Param& maxCoc = params.addSetting("max_coc", &maxCoc_, sceneSetting("postEffects.depthOfField.maxCoc"));
     maxCoc.knob = Knob{{8, 16, 32, 64}, 64, "px"};
     maxCoc.inSteps({PhysicalCamera, ChapterShader, Beyond});
-    Param& taps = params.addSetting("taps", &taps_, sceneSetting("postEffects.depthOfField.taps"), "Step 6");
+    Param& taps = params.addSetting("taps", &taps_, sceneSetting("postEffects.depthOfField.taps"));
     taps.knob = Knob{{16, 22, 43, 71}, 71, "taps"};
     taps.inSteps({Beyond});
-    Param& method = params.addChoice("method", &method_, {"chapter", "gather"},
-                                     "Step 6: the chapter's 13 Poisson taps, or the near/far ring gather");
+    Param& method = params.addChoice("method", &method_, {"chapter", "gather"});
     method.knob = Knob{{0, 1}, 1, "method"};
     method.inSteps({Beyond});
-    Param& resolution =
-        params.addChoice("resolution", &resolution_, {"full", "half"}, "Step 6: the gather's resolution");
+    Param& resolution = params.addChoice("resolution", &resolution_, {"full", "half"});
     resolution.knob = Knob{{0, 1}, 0, "resolution"};
     resolution.inSteps({Beyond});
-    Param& fields = params.addChoice("fields", &fields_, {"one", "near-far"},
-                                     "Step 6: near/far separation "
-                                     "(the background does not bleed over a sharp foreground)");
+    Param& fields = params.addChoice("fields", &fields_, {"one", "near-far"});
     fields.knob = Knob{{0, 1}, 1, "fields"};
     fields.inSteps({Beyond});
-    params
-        .addFloat("highlight", &highlight_, 0.0f, 8.0f,
-                  "Step 6: bokeh; extra weight per unit of luminance above 1 (0: plain average)")
-        .inSteps({Beyond});
-    params
-        .addInt("reference_samples", &referenceSamples_, 1, 1024,
-                "Step 7: pinhole renders averaged over the aperture")
-        .inSteps({Reference});
+    params.addFloat("highlight", &highlight_, 0.0f, 8.0f).inSteps({Beyond});
+    params.addInt("reference_samples", &referenceSamples_, 1, 1024).inSteps({Reference});
     // The mistakes the chapter warns about, made on purpose (off by default).
     params
         .addChoice("shown_target", &shownTarget_,
-                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"},
-                   "Step 1: what the full-screen pass samples. "
-                   "colour-mipmap-min-filter: the mistake of a glTexImage2D target "
-                   "with MIN_FILTER left at its mipmapped default (incomplete: black); "
-                   "depth-compare-mode: the mistake of reading depth with COMPARE_MODE on (0 or 1)")
+                   {"colour", "colour-mipmap-min-filter", "depth", "depth-compare-mode"})
         .inSteps({Framebuffer});
-    params
-        .addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"},
-                   "Step 1: build a framebuffer that is incomplete on purpose "
-                   "(a colour format GL cannot render to, or nothing attached) "
-                   "and show what glCheckNamedFramebufferStatus says")
+    params.addChoice("incomplete_fbo", &incomplete_, {"none", "rgb9e5-colour", "no-attachment"})
         .inSteps({Framebuffer});
-    params
-        .addFloat("coc_near", &cocNearM_, 0.0f, 5.0f,
-                  "Steps 4 to 6: the mistake of a CoC pass told another near plane than the projection's "
-                  "(m; 0: the projection's): the focus moves")
-        .showZeroAs("the projection's")
+    params.addFloat("coc_near", &cocNearM_, 0.0f, 5.0f)
+        .showZeroAs()
         .inSteps({PhysicalCamera, ChapterShader, Beyond});
-    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"),
-                      "Not for the heat map, whose colours are for the display");
+    params.addSetting("tone_map", &toneCurve_, sceneSetting("postEffects.toneMap.operator"));
     params.addSetting("exposure", &exposure_, sceneSetting("postEffects.toneMap.exposure"));
 }
 
@@ -342,60 +305,53 @@ TextureHandle DepthOfFieldLesson::declareReferenceOverFrames(FrameGraph& graph, 
 }
 
 void DepthOfFieldLesson::drawPanel(const FrameInfo& frame) {
-    if (frame.step == PhysicalCamera)
-        ImGui::TextWrapped("Orange: near field (in front of the focus). Blue: far field. Grey: in focus.");
-    if (frame.step >= PhysicalCamera)
-        ImGui::TextWrapped("Inspect dof.coc for the signed CoC diameter in pixels at any pixel.");
+    if (frame.step == PhysicalCamera) ImGui::TextWrapped("%s", say("text.cocColours").c_str());
+    if (frame.step >= PhysicalCamera) ImGui::TextWrapped("%s", say("text.inspectCoc").c_str());
 }
 
 void DepthOfFieldLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     const Camera camera = cameraFor(frame);
-    out.add("cameraDistance", cat(glm::length(camera.target - camera.position)), "camera to its target (m)");
-    out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far),
-            "vertical field of view");
+    out.add("cameraDistance", cat(glm::length(camera.target - camera.position)));
+    out.add("projection", cat(camera.fovYDegrees, " deg, near ", camera.near, ", far ", camera.far));
     if (step == Framebuffer && *incomplete_ != IncompleteFramebuffer::none) {
-        out.add("incompleteFboStatus", incompleteCheck_.status, "glCheckNamedFramebufferStatus");
-        out.add("incompleteFboMessage", incompleteCheck_.message, "fxlab's message");
+        out.add("incompleteFboStatus", incompleteCheck_.status);
+        out.add("incompleteFboMessage", incompleteCheck_.message);
     }
     if (step < PhysicalCamera) {
         out.add("targetDepth",
-                cat(windowDepth(glm::length(camera.target - camera.position), camera.near, camera.far)),
-                "raw depth at the target (sharp at 0.935)");
+                cat(windowDepth(glm::length(camera.target - camera.position), camera.near, camera.far)));
         return;
     }
     const ThinLensModel m = lensModel(frame);
-    out.add("convention", chapterCompatible_ ? "chapter-compatible" : "corrected", "convention");
-    out.add("focus", cat(m.focusM), "focus distance used (m)");
-    out.add("focalLength", cat(m.focalMm), "focal length F (mm)");
-    out.add("imageDistance", cat(m.imageMm), "image distance I (mm)");
-    out.add("aperture", cat(m.apertureMm), "aperture A (mm)");
+    out.add("convention", chapterCompatible_ ? "chapter-compatible" : "corrected");
+    out.add("focus", cat(m.focusM));
+    out.add("focalLength", cat(m.focalMm));
+    out.add("imageDistance", cat(m.imageMm));
+    out.add("aperture", cat(m.apertureMm));
     for (double d : {1.0, 2.0, 5.0, 50.0, 250.0})
-        out.add(cat("coc", int(d), "m"), cat(signedCocPixels(m, d)), cat("CoC diameter at ", d, " m (px)"));
+        out.addAs(cat("coc", int(d), "m"), "cocAt", cat(signedCocPixels(m, d)), {{"d", cat(d)}});
     if (cocNearM_ > 0.0f && step != Reference) {
         // The depth the projection wrote at the focus distance, read back with the CoC pass's near plane.
         const double readAs =
             linearDepthM(windowDepth(m.focusM, camera.near, camera.far), cocNearM_, camera.far);
         const double focusLands =
             linearDepthM(windowDepth(m.focusM, cocNearM_, camera.far), camera.near, camera.far);
-        out.add("cocNear", cat(cocNearM_, " m (the projection's: ", camera.near, " m)"),
-                "the CoC pass's near plane");
-        out.add("focusReadAs", cat(readAs), "the focus distance's depth read as (m)");
-        out.add("focusLandsAt", cat(focusLands), "sharp at (m)");
+        out.add("cocNear", cat(cocNearM_, " m (the projection's: ", camera.near, " m)"));
+        out.add("focusReadAs", cat(readAs));
+        out.add("focusLandsAt", cat(focusLands));
     }
-    out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter),
-            "blur radius at 1 m (px)");
-    if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps), "ring kernel taps");
+    out.add("blurRadiusAt1m", cat(std::abs(signedCocPixels(m, 1.0)) * m.radiusPerDiameter));
+    if (step == Beyond) out.add("kernelTaps", cat(dofKernelForTaps(taps_).taps));
     if (showsReference(step)) {
         // In a window the samples come a frame's budget at a time: how far the sum is.
         if (frame.frameBudgetMs > 0 && !frame.benchmark)
-            out.progress("referenceSamples", referenceDone_, std::max(referenceSamples_, 1),
-                         "aperture samples summed (a frame budget's worth a frame)");
+            out.progressAs("referenceSamples", "referenceSamplesSummed", referenceDone_,
+                           std::max(referenceSamples_, 1));
         else
-            out.add("referenceSamples", cat(referenceSamples_), "aperture samples");
+            out.add("referenceSamples", cat(referenceSamples_));
     }
-    if (frame.previousFrame)
-        out.add("dofMs", cat(dofGroup_.timeMs(*frame.previousFrame)), "depth-of-field passes (ms)");
+    if (frame.previousFrame) out.add("dofMs", cat(dofGroup_.timeMs(*frame.previousFrame)));
 }
 
 }  // namespace lesson09

@@ -192,71 +192,27 @@ std::vector<std::string> DeferredShadingLesson::steps() const {
 }
 
 void DeferredShadingLesson::declareParams(ParamSet& params) {
-    params
-        .addChoice("rtt_depth", &rttDepth_, {"renderbuffer", "texture"},
-                   "Step 1: the render-to-texture framebuffer's depth attachment (a texture can be sampled)")
-        .inSteps({RenderToTexture});
-    params
-        .addBool("slides_order", &slidesOrder_,
-                 "Step 2: restore GL_BACK while the framebuffer object is still bound, as the slides do "
-                 "(GL_INVALID_OPERATION every frame); off: the fix, no restore at all")
-        .inSteps({ThreeTargets});
-    Param& layout =
-        params.addChoice("layout", &layout_, gbufferLayoutNames(),
-                         "Steps 5 to 7: the G-buffer's layout "
-                         "(fat32 is the reference; rgba8Raw stores normals in RGBA8 without a remap)");
+    params.addChoice("rtt_depth", &rttDepth_, {"renderbuffer", "texture"}).inSteps({RenderToTexture});
+    params.addBool("slides_order", &slidesOrder_).inSteps({ThreeTargets});
+    Param& layout = params.addChoice("layout", &layout_, gbufferLayoutNames());
     layout.knob = Knob{{0, 1, 2}, 2, "layout"};
     layout.inSteps({Layout, ManyLights, Reflection});
-    params
-        .addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"},
-                   "Step 5: move the scene and the camera this many metres from the origin along X")
-        .inSteps({Layout});
-    Param& count = params.addInt(
-        "light_count", &lightCount_, 0, kMaxGridLights,
-        cat("Steps 4 to 7: point lights used, spread evenly over the scene's (0: the step's own, ",
-            kUnculledStepLights, " in steps 4 and 5, all of them in 6 and 7)"));
-    count.showZeroAs("the step's own");
+    params.addChoice("origin_offset", &originOffset_, {"0", "1000", "10000"}).inSteps({Layout});
+    Param& count = params.addInt("light_count", &lightCount_, 0, kMaxGridLights);
+    count.showZeroAs();
     count.knob = Knob{{1, 4, 16, 64, 256, 1024}, 1024, "lights"};
     count.inSteps({Deferred, Layout, ManyLights, Reflection});
-    Param& culling =
-        params.addChoice("culling", &culling_, {"none", "tiled"},
-                         "Steps 6 and 7: evaluate every light per pixel, or only the tile's list");
+    Param& culling = params.addChoice("culling", &culling_, {"none", "tiled"});
     culling.knob = Knob{{0, 1}, 0, "culling"};
     culling.inSteps({ManyLights, Reflection});
-    Param& reflection =
-        params.addChoice("reflection_size", &reflectionSize_, {"full", "half", "quarter"},
-                         "Step 7: the reflection target's size as a fraction of the window's");
+    Param& reflection = params.addChoice("reflection_size", &reflectionSize_, {"full", "half", "quarter"});
     reflection.knob = Knob{{0, 1, 2}, 0, "reflection size"};
     reflection.inSteps({Reflection});
-    params
-        .addFloat("reflection_blur", &reflectionBlur_, 0.0f, 0.05f,
-                  cat("Step 7: the homework's optional blur: 16 taps offset by this sigma (a fraction "
-                      "of the reflection's size) times standard-normal samples; the chapter's is ",
-                      kChapterReflectionBlurSigma, ", 0 is sharp"))
-        .showZeroAs("off: sharp")
-        .inSteps({Reflection});
-    params
-        .addChoice("lighting", &lightingModel_, {"deferred", "per-vertex"},
-                   "Step 4: per-vertex shows the mistake deferred shading removes: "
-                   "the light computed at the vertices and interpolated, "
-                   "so the floor's 4 corners lose the highlights between them")
-        .inSteps({Deferred});
-    params
-        .addBool("mirror_objects", &mirrorObjects_,
-                 "Step 7: the raw-GL mistake of mirroring the objects "
-                 "(model matrix times the reflection, determinant -1) instead of the camera: "
-                 "normals mirrored, the moon not, the reflection lit from below")
-        .inSteps({Reflection});
-    params
-        .addChoice("reflection_clear", &reflectionClear_, {"sky", "chapter"},
-                   "Step 7: what the reflection target is cleared to; "
-                   "chapter: the chapter's clear colour (0.1, 0.2, 0.3), "
-                   "which tints the mirror wherever nothing is reflected")
-        .inSteps({Reflection});
-    params
-        .addFloat("divider", &divider_, 0.0f, 1.0f,
-                  "Steps 3, 5 and 6: where the split view's divider is (left: the diagnostic view)")
-        .inSteps({Sharpen, Layout, ManyLights});
+    params.addFloat("reflection_blur", &reflectionBlur_, 0.0f, 0.05f).showZeroAs().inSteps({Reflection});
+    params.addChoice("lighting", &lightingModel_, {"deferred", "per-vertex"}).inSteps({Deferred});
+    params.addBool("mirror_objects", &mirrorObjects_).inSteps({Reflection});
+    params.addChoice("reflection_clear", &reflectionClear_, {"sky", "chapter"}).inSteps({Reflection});
+    params.addFloat("divider", &divider_, 0.0f, 1.0f).inSteps({Sharpen, Layout, ManyLights});
 }
 
 Status DeferredShadingLesson::init(const Scene& scene) {
@@ -384,111 +340,82 @@ void DeferredShadingLesson::facts(Facts& out, const FrameInfo& frame) const {
     const int step = frame.step;
     out.check("expectErrorsInStep", step == ThreeTargets && slidesOrder_);
     if (step == RenderToTexture) {
-        out.add("rttAttachments", rttAttachments_[*rttDepth_ == RttDepth::texture ? 1 : 0],
-                "framebuffer (asked back from GL)");
+        out.add("rttAttachments", rttAttachments_[*rttDepth_ == RttDepth::texture ? 1 : 0]);
         return;
     }
     if (step == ThreeTargets || step == Sharpen) {
-        out.add("drawBuffers", "GL_COLOR_ATTACHMENT0, 1, 2 (set once, on the framebuffer object)",
-                "draw buffers");
-        out.add("orderErrorsLastFrame", std::to_string(mrtStats_.lastFrameErrors),
-                "GL_INVALID_OPERATION from glDrawBuffer(GL_BACK) last frame");
-        out.add("orderErrorsTotal", std::to_string(mrtStats_.orderErrors), "... since the start");
-        if (step == Sharpen)
-            out.add("sharpenRange", "[-4, 5] for inputs in [0, 1]", "the kernel's output range");
+        out.add("drawBuffers", "GL_COLOR_ATTACHMENT0, 1, 2 (set once, on the framebuffer object)");
+        out.add("orderErrorsLastFrame", std::to_string(mrtStats_.lastFrameErrors));
+        out.add("orderErrorsTotal", std::to_string(mrtStats_.orderErrors));
+        if (step == Sharpen) out.add("sharpenRange", "[-4, 5] for inputs in [0, 1]");
         return;
     }
     GBufferLayout layout = layoutFor(step);
     long long pixels = (long long)frame.size.width * frame.size.height;
-    out.add("layout", toString(layout), "G-buffer layout");
-    out.add("bytesPerPixel", std::to_string(gbufferBytesPerPixel(layout)), "G-buffer bytes per pixel");
-    out.add("gbufferMiB", cat(double(pixels * gbufferBytesPerPixel(layout)) / (1024.0 * 1024.0)),
-            "G-buffer at this size (MiB)");
-    out.add("pointLights", std::to_string(lights_->count()),
-            cat("point lights (of ", pointLightsInScene_, ")"));
+    out.add("layout", toString(layout));
+    out.add("bytesPerPixel", std::to_string(gbufferBytesPerPixel(layout)));
+    out.add("gbufferMiB", cat(double(pixels * gbufferBytesPerPixel(layout)) / (1024.0 * 1024.0)));
+    out.add("pointLights", std::to_string(lights_->count()), {{"scene", cat(pointLightsInScene_)}});
     if (step == Deferred)
-        out.add("lighting",
-                *lightingModel_ == Lighting::perVertex ? "per vertex (forward, interpolated)"
-                                                       : "per pixel (deferred)",
-                "lighting");
+        out.add("lighting", *lightingModel_ == Lighting::perVertex ? "per vertex (forward, interpolated)"
+                                                                   : "per pixel (deferred)");
     if (step == Layout) {
         float at = std::abs(worldOffsetFor(step).x) + 10.0f;
-        out.add("halfFloatStep", cat(halfFloatSpacing(at)), cat("a half float's step at ", at, " m (m)"));
+        out.add("halfFloatStep", cat(halfFloatSpacing(at)), {{"at", cat(at)}});
     }
     if (step == Reflection) {
         auto mirror = findMirror(frame.world.scene(), frame.seconds);
-        out.add("mirror", mirror ? frame.world.scene().objects[mirror->object].name : std::string("none"),
-                "mirror");
+        out.add("mirror", mirror ? frame.world.scene().objects[mirror->object].name : std::string("none"));
         int fraction = reflectionFraction(*reflectionSize_);
         out.add("reflectionMirrors",
-                mirrorObjects_ ? "the objects (model x reflection, det -1)" : "the camera",
-                "the mirror pass mirrors");
+                mirrorObjects_ ? "the objects (model x reflection, det -1)" : "the camera");
         out.add("reflectionClear",
-                *reflectionClear_ == ReflectionClear::chapter ? "the chapter's (0.1, 0.2, 0.3)" : "the sky",
-                "reflection target cleared to");
-        out.add("reflectionSize",
-                cat(std::max(frame.size.width / fraction, 1), "x", std::max(frame.size.height / fraction, 1)),
-                "reflection target");
-        out.add(
-            "reflectionBlur",
-            reflectionBlur_ > 0.0f ? cat("16 taps, sigma ", reflectionBlur_) : std::string("off (one tap)"),
-            "reflection blur");
+                *reflectionClear_ == ReflectionClear::chapter ? "the chapter's (0.1, 0.2, 0.3)" : "the sky");
+        out.add("reflectionSize", cat(std::max(frame.size.width / fraction, 1), "x",
+                                      std::max(frame.size.height / fraction, 1)));
+        out.add("reflectionBlur", reflectionBlur_ > 0.0f ? cat("16 taps, sigma ", reflectionBlur_)
+                                                         : std::string("off (one tap)"));
     }
     if (step == ManyLights) {
         Size2D tiles = tileCount(frame.size);
-        out.add("tiles", cat(tiles.width, " x ", tiles.height),
-                cat("tiles of ", kTileSize, " x ", kTileSize));
-        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_->count())),
-                "light evaluations without culling (W x H x N)");
+        out.add("tiles", cat(tiles.width, " x ", tiles.height), {{"size", cat(kTileSize)}});
+        out.add("naiveEvaluations", cat(naiveLightEvaluations(frame.size, lights_->count())));
     }
     if (frame.previousFrame) {
-        out.add("lightingMs", cat(lightingGroup_.timeMs(*frame.previousFrame)), "lighting pass (ms)");
-        if (culls(step))
-            out.add("cullingMs", cat(cullingGroup_.timeMs(*frame.previousFrame)), "culling (ms)");
-        if (step == Reflection)
-            out.add("reflectionMs", cat(reflectionGroup_.timeMs(*frame.previousFrame)),
-                    "reflection passes (ms)");
-        out.add("frameMs", cat(frame.previousFrame->timedMs()), "all passes (ms)");
+        out.add("lightingMs", cat(lightingGroup_.timeMs(*frame.previousFrame)));
+        if (culls(step)) out.add("cullingMs", cat(cullingGroup_.timeMs(*frame.previousFrame)));
+        if (step == Reflection) out.add("reflectionMs", cat(reflectionGroup_.timeMs(*frame.previousFrame)));
+        out.add("frameMs", cat(frame.previousFrame->timedMs()));
     }
 }
 
 void DeferredShadingLesson::drawPanel(const FrameInfo& frame) {
     switch (frame.step) {
         case RenderToTexture:
-            ImGui::TextWrapped("Switch rtt_depth to texture, then inspect rtt.depth.");
+            ImGui::TextWrapped("%s", say("text.rttDepth").c_str());
             break;
         case ThreeTargets:
-            ImGui::TextWrapped(
-                "Inspect mrt.diffuse, mrt.specular and mrt.ambient. "
-                "Switch slides_order off: the errors stop and the picture stays the same.");
+            ImGui::TextWrapped("%s", say("text.threeTargets").c_str());
             break;
         case Sharpen:
-            ImGui::TextWrapped(
-                "Left: red where the float target holds more than 1, blue below 0; "
-                "the RGBA8 target (right) holds neither.");
+            ImGui::TextWrapped("%s", say("text.sharpen").c_str());
             break;
         case Deferred:
-            ImGui::TextWrapped(
-                "Inspect gbuffer.albedo, gbuffer.normal and gbuffer.depth, "
-                "or gbuffer.view_normal (normals as colours) and gbuffer.view_depth (linear distance).");
+            ImGui::TextWrapped("%s", say("text.gbuffer").c_str());
             break;
         case Layout:
-            ImGui::TextWrapped(
-                "Left: the position error (blue 1 mm, green 1 cm, yellow 10 cm, red 1 m). "
-                "Try layout fat with origin_offset 10000 m.");
+            ImGui::TextWrapped("%s", say("text.layout").c_str());
             break;
         case ManyLights:
-            ImGui::TextWrapped("Left: lights per tile. Set culling to none to compare the lighting time.");
+            ImGui::TextWrapped("%s", say("text.tiles").c_str());
             break;
         default:
-            ImGui::TextWrapped(
-                "Inspect reflection.color: the scene from the mirrored camera, nothing below the pond.");
+            ImGui::TextWrapped("%s", say("text.reflection").c_str());
             break;
     }
     // light_count's slider shows 0 for "the step's own": say what that is, in lights.
     if (frame.step >= Deferred && lightCount_ == 0)
-        ImGui::TextWrapped("light_count 0 is the step's own count: %d point lights.",
-                           lightCountFor(frame.step));
+        ImGui::TextWrapped("%s", say("text.stepsOwn", {{"count", cat(lightCountFor(frame.step))}}).c_str());
 }
 
 }  // namespace lesson10

@@ -3,6 +3,8 @@
 //   ./fxlab exercise start LL N      copies the starter (then the script opens the lesson at it)
 //   ./fxlab check LL N [--json]      grades one; exit 0 passed, 1 failed, 2 a bad command line
 //   ./fxlab check --all [--json] [--class DIR]   every exercise; with --class, for each student folder
+//   --lang en|ja                     the titles, hints and verdicts in that language (default: the
+//                                    locale's, LANG=ja_JP.UTF-8 is Japanese; app/exercise_words.hpp)
 // Each check runs in a child process with a watchdog (app/exercise_check.hpp).
 #include <cstdlib>
 #include <iostream>
@@ -13,6 +15,9 @@
 
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
+#include "app/exercise_words.hpp"
+#include "base/log.hpp"
+#include "base/words.hpp"
 
 namespace {
 
@@ -22,12 +27,14 @@ using namespace fx;
 constexpr double kDefaultWatchdogS = 60.0;
 
 int usage() {
-    std::cerr << "usage: fxlab-exercise list [--json]\n"
-                 "       fxlab-exercise start LL N\n"
-                 "       fxlab-exercise check LL N [--json] [--timeout S]\n"
-                 "       fxlab-exercise check --all [--json] [--timeout S] [--class DIR]\n"
-                 "The student's work is in $FXLAB_EXERCISES (default ~/fxlab-exercises), one folder per\n"
-                 "exercise (04-1/); --class DIR grades every student folder in DIR instead.\n";
+    std::cerr
+        << "usage: fxlab-exercise list [--json] [--lang en|ja]\n"
+           "       fxlab-exercise start LL N\n"
+           "       fxlab-exercise check LL N [--json] [--timeout S] [--lang en|ja]\n"
+           "       fxlab-exercise check --all [--json] [--timeout S] [--class DIR] [--lang en|ja]\n"
+           "--lang: the language of titles, hints and verdicts (default: the locale's, e.g. LANG=ja_JP.UTF-8).\n"
+           "The student's work is in $FXLAB_EXERCISES (default ~/fxlab-exercises), one folder per\n"
+           "exercise (04-1/); --class DIR grades every student folder in DIR instead.\n";
     return 2;
 }
 
@@ -49,12 +56,13 @@ nlohmann::json verdictObject(const Exercise& e, const fs::path& file, const Exer
 }
 
 void printVerdict(const Exercise& e, const fs::path& file, const ExerciseVerdict& v) {
-    std::cout << e.id() << "  " << e.title << ": " << (v.passed ? "PASS" : "FAIL") << "\n"
+    const std::string verdict = say(v.passed ? "check.pass" : "check.fail");
+    std::cout << say("check.titleLine", {{"id", e.id()}, {"title", e.title}, {"verdict", verdict}}) << "\n"
               << "  " << v.message << "\n";
     if (!v.error.empty() && v.error != v.message)
         std::cout << "  " << v.error << (v.error.ends_with('\n') ? "" : "\n");
-    if (!v.hint.empty()) std::cout << "  hint: " << v.hint << "\n";
-    std::cout << "  file: " << file.string() << "\n";
+    if (!v.hint.empty()) std::cout << "  " << say("check.hintLine", {{"hint", v.hint}}) << "\n";
+    std::cout << "  " << say("check.fileLine", {{"file", file.string()}}) << "\n";
 }
 
 // Checks `exercises` for the student whose work is in `root`; returns the JSON of the results.
@@ -106,7 +114,8 @@ int list(const std::vector<Exercise>& exercises, bool json) {
     if (json)
         std::cout << out.dump(2) << "\n";
     else
-        std::cout << "(" << exercises.size() << " exercises; work in " << root.string() << ")\n";
+        std::cout << say("check.listFooter", {{"count", cat(exercises.size())}, {"root", root.string()}})
+                  << "\n";
     return 0;
 }
 
@@ -120,6 +129,7 @@ int main(int argc, char** argv) {
     bool json = false, all = false;
     double timeout = kDefaultWatchdogS;
     fs::path classDir;
+    std::string language = languageFromLocale();
     std::vector<std::string> positional;
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--json")
@@ -136,7 +146,13 @@ int main(int argc, char** argv) {
             }
         } else if (args[i] == "--class" && i + 1 < args.size())
             classDir = args[++i];
-        else if (args[i].starts_with("--")) {
+        else if (args[i] == "--lang" && i + 1 < args.size()) {
+            language = args[++i];
+            if (language != "en" && language != "ja") {
+                std::cerr << "fxlab-exercise: --lang: expected en or ja, got " << language << "\n";
+                return 2;
+            }
+        } else if (args[i].starts_with("--")) {
             std::cerr << "fxlab-exercise: unknown option " << args[i] << "\n";
             return usage();
         } else
@@ -147,6 +163,14 @@ int main(int argc, char** argv) {
         std::cerr << "fxlab-exercise: " << exercises.error() << "\n";
         return 1;
     }
+    // The student's words: the app's (verdicts) and each exercise's own (title, hints).
+    auto words = Words::loadApp(language);
+    Status localised = words ? localiseExercises(*exercises, language) : Status(Error{words.error()});
+    if (!localised) {
+        std::cerr << "fxlab-exercise: " << localised.error() << "\n";
+        return 1;
+    }
+    useWords(std::move(*words));
     if (command == "list") return positional.empty() ? list(*exercises, json) : usage();
 
     std::vector<Exercise> chosen;

@@ -4,14 +4,20 @@
 
 #include "app/lesson_facts.hpp"
 #include "app/point_drag.hpp"
+#include "base/paths.hpp"
+#include "base/words.hpp"
 
 namespace fx {
 namespace {
 
 TEST(Facts, KeepsTextBoolsAndWhatThePanelShows) {
+    // A shown fact's label is the lesson's words for it (lesson 05's, in English).
+    auto words = Words::load(projectRoot() / "lessons" / "05_radial_blur", "en");
+    ASSERT_TRUE(words) << words.error();
+    useWords(std::move(*words));
     Facts facts;
     facts.add("formula", "the chapter's start distance");  // a string literal stays text
-    facts.add("deliberateBug", true, "deliberate bug");
+    facts.add("deliberateBug", true);
     facts.check("expectNonFiniteIn", "blur.offset, blur.result");
     ASSERT_EQ(facts.list().size(), 3u);
     EXPECT_EQ(*facts.find("formula"), "the chapter's start distance");
