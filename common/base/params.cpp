@@ -1,4 +1,5 @@
 #include "base/params.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -395,7 +396,7 @@ std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>
 std::string ParamSet::toJson() const {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     for (auto& p : params_) j[p.name] = p.text();
-    return j.dump(2) + "\n";
+    return dumpJson(j, 2) + "\n";
 }
 
 Status ParamSet::fromJson(std::string_view json, std::string_view fileName, ParamSource source) {
@@ -414,7 +415,7 @@ Status ParamSet::fromJson(std::string_view json, std::string_view fileName, Para
         if (!value.is_string() && !value.is_number() && !value.is_boolean())
             return Error{
                 cat(fileName, ": ", key, ": expected a number or a string, got ", describeJsonType(value))};
-        std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+        std::string text = value.is_string() ? value.get<std::string>() : dumpJson(value);
         auto v = parseFor(*p, text);
         if (!v) return Error{cat(fileName, ": ", key, ": ", v.error())};
         checked.emplace_back(p, *v);

@@ -13,6 +13,9 @@
 
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
+#include "base/fatal_error.hpp"
+#include "base/json_text.hpp"
+#include "base/log.hpp"
 
 namespace {
 
@@ -104,7 +107,7 @@ int list(const std::vector<Exercise>& exercises, bool json) {
                     state.c_str(), e.lesson, e.number);
     }
     if (json)
-        std::cout << out.dump(2) << "\n";
+        std::cout << fx::dumpJson(out, 2) << "\n";
     else
         std::cout << "(" << exercises.size() << " exercises; work in " << root.string() << ")\n";
     return 0;
@@ -113,6 +116,7 @@ int list(const std::vector<Exercise>& exercises, bool json) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    fx::installFatalErrorHandler("fxlab-exercise");
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) return usage();
     const std::string command = args.front();
@@ -183,11 +187,11 @@ int main(int argc, char** argv) {
     if (classDir.empty()) {
         nlohmann::json results = checkStudent(chosen, studentRoot(), json, true, timeout, failures);
         if (json)
-            std::cout << nlohmann::json{{"student", studentRoot().string()},
-                                        {"passed", chosen.size() - failures},
-                                        {"total", chosen.size()},
-                                        {"exercises", results}}
-                             .dump(2)
+            std::cout << fx::dumpJson(nlohmann::json{{"student", studentRoot().string()},
+                                                     {"passed", chosen.size() - failures},
+                                                     {"total", chosen.size()},
+                                                     {"exercises", results}},
+                                      2)
                       << "\n";
         return failures == 0 ? 0 : 1;
     }
@@ -205,6 +209,7 @@ int main(int argc, char** argv) {
     for (const fs::path& student : students) {
         if (!json) std::cout << "== " << student.filename().string() << "\n";
         int failed = 0;
+        fx::Doing doing(fx::cat("checking the exercises of ", student.string()));
         nlohmann::json results = checkStudent(chosen, student, json, false, timeout, failed);
         failures += failed;
         out.push_back({{"student", student.filename().string()},
@@ -212,6 +217,7 @@ int main(int argc, char** argv) {
                        {"total", chosen.size()},
                        {"exercises", results}});
     }
-    if (json) std::cout << nlohmann::json{{"class", classDir.string()}, {"students", out}}.dump(2) << "\n";
+    if (json)
+        std::cout << fx::dumpJson(nlohmann::json{{"class", classDir.string()}, {"students", out}}, 2) << "\n";
     return failures == 0 ? 0 : 1;
 }
