@@ -2,6 +2,7 @@
 #include "base/json_text.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -30,9 +31,17 @@ Result<double> parseNumber(std::string_view text) {
     std::string s(text);
     if (s.empty()) return Error{"no value"};
     char* end = nullptr;
+    errno = 0;
     double v = std::strtod(s.c_str(), &end);
     if (end != s.c_str() + s.size()) return Error{cat("\"", excerpt(s), "\" is not a number")};
     if (!std::isfinite(v)) return Error{cat("\"", excerpt(s), "\" is not a finite number")};
+    // 1e-400 reads as 0 (ERANGE), and 1e-300 becomes 0 as the float a parameter is held in: refused as
+    // a scene refuses them, not taken silently as 0.
+    if (errno == ERANGE && std::fabs(v) < 1.0)
+        return Error{
+            cat("\"", excerpt(s), "\" is too small for a double (it underflows to ", formatNumber(v), ")")};
+    if (v != 0.0 && static_cast<float>(v) == 0.0f)
+        return Error{cat("\"", excerpt(s), "\" becomes 0 as a float (the precision fxlab computes with)")};
     return v;
 }
 

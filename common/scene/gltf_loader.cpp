@@ -72,6 +72,14 @@ bool aboutAnUnreadImage(const std::string& line) {
            line.starts_with("File not found : ");
 }
 
+// The folder a model's files must stay in: the asset root (the default one when none is given) when it
+// holds the model's folder, else the model's own folder.
+fs::path rootFor(const fs::path& modelFolder, const fs::path& assetRoot) {
+    const fs::path root = resolvedPath(fs::absolute(assetRoot.empty() ? defaultAssetRoot() : assetRoot));
+    const fs::path folder = resolvedPath(fs::absolute(modelFolder));
+    return isInsideFolder(folder, root) ? root : folder;
+}
+
 // Extensions fxlab reads; any other one a file *requires* changes what the file means (compressed
 // geometry, for one), so such a file is refused rather than drawn wrong.
 constexpr std::string_view kSupportedExtensions[] = {"KHR_materials_emissive_strength"};
@@ -115,7 +123,7 @@ Result<GltfModel> finish(bool ok, const tinygltf::Model& m, const std::string& e
     model->warnings.insert(model->warnings.begin(), files.warnings.begin(), files.warnings.end());
     for (const std::string& extension : m.extensionsUsed)
         if (!supported(extension)) model->warnings.push_back(cat("extension ", extension, " is ignored"));
-    for (const auto& w : model->warnings) log::warning(file.filename().string(), ": ", w);
+    // Not logged here: the scene loader says them once (the meshes load the same file again for the GPU).
     return model;
 }
 
@@ -178,7 +186,7 @@ Result<GltfModel> parseGltfBytes(std::span<const std::byte> bytes, const fs::pat
     if (document)
         if (auto refusal = findUnnamedGltfRefusal(*document))
             return Error{cat(nominalFile.string(), ": ", *refusal)};
-    auto files = document ? readGltfFiles(*document, baseDir, root.empty() ? baseDir : root)
+    auto files = document ? readGltfFiles(*document, baseDir, root.empty() ? rootFor(baseDir, {}) : root)
                           : Result<GltfFiles>(GltfFiles{});
     if (!files) return Error{cat(nominalFile.string(), ": ", files.error())};
     tinygltf::TinyGLTF loader;
@@ -200,10 +208,8 @@ Result<GltfModel> loadGltf(const fs::path& file, const fs::path& assetRoot) {
     if (!fs::exists(file, ec)) return Error{cat(file.string(), ": no such file")};
     auto bytes = readFile(file, file_limits::gltf);
     if (!bytes) return Error{bytes.error()};
-    fs::path root = resolvedPath(fs::absolute(assetRoot.empty() ? defaultAssetRoot() : assetRoot));
-    if (!isInsideFolder(resolvedPath(fs::absolute(file)), root)) root = file.parent_path();
     return parseGltfBytes(std::as_bytes(std::span(bytes->data(), bytes->size())), file.parent_path(), file,
-                          root);
+                          rootFor(file.parent_path(), assetRoot));
 }
 
 Result<GltfModel> parseGltf(const std::string& json, const fs::path& baseDir, const fs::path& nominalFile) {

@@ -37,7 +37,8 @@ void writeAReportNamed(const char* scene) noexcept {
 
 TEST(FatalError, AnUncaughtExceptionEndsTheProgramWithTheMessageAndCode70) {
     GTEST_FLAG_SET(death_test_style, "threadsafe");
-    EXPECT_EXIT((fx::installFatalErrorHandler("fxlab-test"), writeAReportNamed("sc\xff.json")),
-                ::testing::ExitedWithCode(70),
-                "fxlab-test: an unexpected error while writing the report out/sc\\\\xff.json: .*type_error.316");
+    EXPECT_EXIT(
+        (fx::installFatalErrorHandler("fxlab-test"), writeAReportNamed("sc\xff.json")),
+        ::testing::ExitedWithCode(70),
+        "fxlab-test: an unexpected error while writing the report out/sc\\\\xff.json: .*type_error.316");
 }
