@@ -1,4 +1,5 @@
 #include "app/bench.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -424,7 +425,7 @@ Status writeBenchOutputs(const SweepResult& r, const std::filesystem::path& dir,
         }
     }
     if (auto s = writeFileAtomically(dir / "bench.csv", csv.str()); !s) return s;
-    if (auto s = writeFileAtomically(dir / "bench.json", json.dump(2) + "\n"); !s) return s;
+    if (auto s = writeFileAtomically(dir / "bench.json", dumpJson(json, 2) + "\n"); !s) return s;
     if (auto s = writeFileAtomically(dir / "passes.csv", passes.str()); !s) return s;
 
     std::vector<std::string> knobs;

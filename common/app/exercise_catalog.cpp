@@ -1,4 +1,5 @@
 #include "app/exercise_catalog.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -245,7 +246,7 @@ Status recordProgress(const fs::path& root, const std::string& id, const Exercis
     (*book)[id] = progress;
     nlohmann::json json = nlohmann::json::object();
     for (const auto& [key, entry] : *book) json[key] = {{"passed", entry.passed}, {"message", entry.message}};
-    return writeFileAtomically(root / "progress.json", json.dump(2) + "\n");
+    return writeFileAtomically(root / "progress.json", dumpJson(json, 2) + "\n");
 }
 
 }  // namespace fx

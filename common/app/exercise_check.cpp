@@ -1,4 +1,6 @@
 #include "app/exercise_check.hpp"
+#include "app/exercise_rules.hpp"
+#include "base/json_text.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -169,6 +171,10 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const fs::path& studentF
     verdict.measure = exercise.measure;
     verdict.tolerance = exercise.tolerance;
     std::error_code ec;
+    if (auto refused = whyNotAStudentsFile(studentFile)) {
+        verdict.error = verdict.message = *refused;
+        return verdict;
+    }
     if (!fs::is_regular_file(studentFile, ec)) {
         verdict.error = say("check.noFile", {{"file", studentFile.string()},
                                              {"lesson", cat(exercise.lesson)},
@@ -251,7 +257,7 @@ std::string verdictJson(const ExerciseVerdict& v) {
                            {"nonFiniteTexels", v.nonFiniteTexels}};
     // JSON has no infinity: a measure that is not finite is null.
     json["measured"] = std::isfinite(v.measured) ? nlohmann::json(v.measured) : nlohmann::json(nullptr);
-    return json.dump();
+    return dumpJson(json);
 }
 
 Result<ExerciseVerdict> verdictFromJson(const std::string& text) {
@@ -274,6 +280,13 @@ Result<ExerciseVerdict> verdictFromJson(const std::string& text) {
 }
 
 ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const fs::path& studentFile, double seconds) {
+    if (auto notOwn = whyNotTheStudentsOwn(studentFile)) {
+        ExerciseVerdict refused;
+        refused.measure = exercise.measure;
+        refused.tolerance = exercise.tolerance;
+        refused.error = refused.message = *notOwn;
+        return refused;
+    }
     const ChildOutcome outcome = runInChildWithin(
         [&] {
             // The child: its own headless context, the check, the verdict as text.
@@ -297,8 +310,11 @@ ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const fs::path& s
             failed.error = "the check ended without a verdict";
             break;
         case ChildOutcome::Kind::timedOut:
-            failed.error = cat("the check did not finish within ", number(seconds),
-                               " s: does a loop in your shader never end?");
+            failed.error = exercise.kind == "scene"
+                               ? cat("the check did not finish within ", number(seconds),
+                                     " s: your scene asks for more particles than the check can simulate")
+                               : cat("the check did not finish within ", number(seconds),
+                                     " s: does a loop in your shader never end?");
             break;
         case ChildOutcome::Kind::crashed:
             failed.error = cat("the check crashed (", outcome.reason, ")");

@@ -1,5 +1,6 @@
 #include "app/exercise_scene_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -46,6 +47,23 @@ ExerciseVerdict checkSceneExercise(const Exercise& exercise, const fs::path& stu
     }
     if (scene->emitters.empty())
         return fail("noEmitter", say("check.noEmitter", {{"file", studentFile.string()}}));
+
+    // Judged from the scene first: the particles it keeps alive at once (each emitter's rate x its
+    // lifetime, within the check's seconds). Clearly past the budget, it fails without being simulated,
+    // so a scene at the format's limits (256 emitters at 100000 particles each) costs neither minutes
+    // nor gigabytes; near the budget the simulation decides.
+    double asked = 0.0;
+    for (const ParticleEmitter& emitter : scene->emitters)
+        asked += std::ceil(double(emitter.ratePerSecond) *
+                           std::min(double(emitter.lifetimeSeconds), double(exercise.seconds)));
+    if (asked > 2.0 * exercise.budget) {
+        verdict.measured = asked;
+        return fail("overBudget",
+                    cat("about ", std::uint64_t(asked), " particles alive at once (rate x lifetime over ",
+                        scene->emitters.size(), " emitter", scene->emitters.size() == 1 ? "" : "s",
+                        " in the first ", exercise.seconds, " s), needs <= ", std::uint32_t(exercise.budget),
+                        "; judged from your scene without simulating it"));
+    }
 
     std::vector<EmitterSetup> setups;
     for (const ParticleEmitter& emitter : scene->emitters) setups.push_back({emitter, {}, 0, 1.0f, false});

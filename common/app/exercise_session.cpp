@@ -1,4 +1,5 @@
 #include "app/exercise_session.hpp"
+#include "app/exercise_rules.hpp"
 
 #include "app/exercise_words.hpp"
 
@@ -104,7 +105,12 @@ bool ExerciseSession::recheckIfChanged() {
     if (checked_ && !ec && stamp == stamp_) return false;
     checked_ = true;
     stamp_ = stamp;
-    ExerciseVerdict verdict = checkExercise(exercise_, file_);
+    ExerciseVerdict verdict;
+    if (auto notOwn = whyNotTheStudentsOwn(file_)) {
+        verdict.error = verdict.message = *notOwn;
+    } else {
+        verdict = checkExercise(exercise_, file_);
+    }
     if (verdict.passed != verdict_.passed || verdict.message != verdict_.message || revision_ == 0) {
         log::info("exercise ", exercise_.id(), ": ", verdict.passed ? "PASS" : "FAIL", ": ", verdict.message);
         if (!verdict.hint.empty()) log::info("exercise ", exercise_.id(), ": hint: ", verdict.hint);

@@ -1,4 +1,7 @@
 #include "app/handout_sources.hpp"
+#include "base/message_text.hpp"
+#include "base/path_rule.hpp"
+#include "base/paths.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -46,16 +49,27 @@ TextPictures::TextPictures(fs::path lessonFolder, fs::path handout)
 Status TextPictures::add(const std::string& markdown, const fs::path& source) {
     for (const std::string& target : pictureTargets(markdown)) {
         if (files_.contains(target)) continue;
-        const fs::path from = (lesson_ / target).lexically_normal();
+        if (target.find("://") != std::string::npos)
+            return Error{
+                cat(source.string(), ": the picture \"", excerpt(target),
+                    "\" is not a file of the lesson (a handout holds only the lesson's own pictures)")};
+        // The rule for every path a file names (base/path_rule.hpp): a picture of the lesson's text is
+        // in the lesson's folder or in docs/, never /etc/passwd copied into the handout's figures.
+        const PathRoot roots[] = {{lesson_, "the lesson's folder"}, {projectRoot() / "docs", "docs/"}};
+        auto resolved = resolveInsideRoots(target, lesson_, roots, {},
+                                           "a lesson's text shows only pictures of the lesson or of docs/");
+        if (!resolved) return Error{cat(source.string(), ": the picture ", resolved.error())};
+        const fs::path& from = *resolved;
         std::error_code ec;
-        if (target.find("://") != std::string::npos || !fs::is_regular_file(from, ec))
-            return Error{cat(source.string(), ": the picture \"", target, "\" is not a file of the lesson (",
-                             from.string(), ")")};
+        if (!fs::exists(from, ec))  // anything else there (a FIFO, a folder) is refused by the read, unread
+            return Error{cat(source.string(), ": the picture \"", excerpt(target),
+                             "\" is not a file of the lesson (", from.string(), ")")};
         // Two pictures of the same name from different folders keep apart.
         std::string name = from.filename().string();
         for (int n = 2; used_.contains(name); ++n) name = cat(n, "-", from.filename().string());
         used_.insert(name);
-        if (auto s = copyPicture(from, handout_ / "figures" / name); !s) return s;
+        if (auto s = copyPicture(from, handout_ / "figures" / name); !s)
+            return Error{cat(source.string(), ": the picture \"", excerpt(target), "\": ", s.error())};
         files_[target] = "figures/" + name;
     }
     return Status::success();

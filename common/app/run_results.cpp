@@ -1,4 +1,6 @@
 #include "app/run_results.hpp"
+#include "base/fatal_error.hpp"
+#include "base/json_text.hpp"
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
@@ -81,6 +83,7 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
 
     int exitCode = facts.missingWords.empty() ? 0 : 1;  // a label shown as its key is a failed run
     if (!plan.captureDir.empty()) {
+        Doing doing(cat("writing the captures into ", plan.captureDir.string()));
         Status written = writeCaptures(plan.captureDir, record.lastFinalBytes, record.lastTextures,
                                        s.options.captureFloat);
         if (written && !record.lastPicture.empty())
@@ -95,6 +98,7 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
         }
     }
     if (!plan.reportFile.empty()) {
+        Doing doing(cat("writing the report ", plan.reportFile.string()));
         auto report = buildRunReport(facts, record.lastReport, record.lastTextures, record.lastFinal);
         if (record.lastLayout)
             report["layout"] = layoutJson(*record.lastLayout, facts.size, record.textScale);
@@ -107,7 +111,7 @@ int writeRunResults(RunSession& s, const RunPlan& plan, Context& context, const 
                                  {"scale", p->scale},
                                  {"automatic", p->automatic}};
         }
-        auto json = report.dump(2) + "\n";
+        auto json = dumpJson(report, 2) + "\n";
         if (auto written = writeOutput(plan.reportFile, json); !written) {
             log::error(written.error());
             exitCode = 1;

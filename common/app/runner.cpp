@@ -12,6 +12,7 @@
 #include "app/lesson_text_files.hpp"
 #include "app/run_context.hpp"
 #include "app/run_results.hpp"
+#include "base/fatal_error.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
 #include "base/paths.hpp"
@@ -168,6 +169,8 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
     Lesson& lesson = *owned;
     lesson.setInfo(std::move(info));
     std::string exe = executableName(lesson.info());
+    installFatalErrorHandler(exe);
+    Doing doing(cat("running ", exe));
     std::vector<std::string> args(argv + 1, argv + argc);
     auto parsed = parseRunOptions(args, int(lesson.steps().size()));
     if (!parsed) {

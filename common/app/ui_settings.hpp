@@ -4,8 +4,9 @@
 // them changes and at exit:
 //   $FXLAB_CONFIG_DIR/ui.json, else $XDG_CONFIG_HOME/fxlab/ui.json, else ~/.config/fxlab/ui.json,
 //   else out/ui.json.
-// A missing file gives the defaults; a damaged one gives the defaults and a warning naming the file
-// and field, and is replaced at the next write.
+// A missing file gives the defaults; a damaged one (a syntax error, with its line:column; too big; a
+// field of the wrong type; not a regular file) or a read-only one gives the defaults in memory and a
+// warning naming the file and field, and is never written over: it stays as the teacher left it.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -35,6 +36,10 @@ std::string uiSettingsJson(const UiSettings& settings);
 
 // The defaults when there is no file; a damaged file is logged and gives the defaults.
 UiSettings loadUiSettings(const std::filesystem::path& path);
+// Why the file at `path` may not be written over (it cannot be read back, or is read-only), or nothing.
+std::optional<std::string> whyUiSettingsAreKept(const std::filesystem::path& path);
+// Writes the settings, unless whyUiSettingsAreKept: then the file stays, and the first such save
+// of a run says why (later ones are quiet).
 Status saveUiSettings(const std::filesystem::path& path, const UiSettings& settings);
 
 }  // namespace fx

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "base/log.hpp"
+#include "base/stale_temporaries.hpp"
 
 namespace fx {
 namespace {
@@ -193,6 +194,7 @@ Status writeFileInFolder(const fs::path& folder, const fs::path& name, std::span
         return Error{cat(shown.string(), ": cannot write (", reason(errno), ")")};
     }
 
+    (void)removeStaleTemporaries(dir.get(), leaf);  // of a writer killed before its rename
     // The temporary file sits beside the target so that the rename stays on one file system. O_EXCL
     // and O_NOFOLLOW never follow anything planted at the temporary name.
     const std::string temp = cat(leaf, ".tmp", ::getpid());

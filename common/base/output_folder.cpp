@@ -3,10 +3,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "base/file_io.hpp"
 #include "base/log.hpp"
 
 namespace fx {
@@ -21,6 +23,17 @@ std::string describeNonFolder(mode_t mode) {
     if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device, not a folder";
     if (S_ISSOCK(mode)) return "a socket, not a folder";
     return "not a folder";
+}
+
+// Why a full folder may not be replaced even with --force, or nothing: it must hold the marker (a
+// regular file, not a link to one) that begin() writes into every folder it makes.
+std::optional<std::string> notWrittenByFxlab(const fs::path& target) {
+    struct stat st {};
+    if (::lstat((target / kStagedFolderMarker).c_str(), &st) == 0 && S_ISREG(st.st_mode)) return std::nullopt;
+    return cat(target.string(), ": a folder with files in it that fxlab did not write (it has no ",
+               kStagedFolderMarker,
+               "); --force replaces only a folder an earlier handout wrote, so this one "
+               "is kept as it is: give the handout a new folder, or empty this one yourself");
 }
 
 enum class TargetState { Missing, Empty, Full };
@@ -40,6 +53,7 @@ Result<TargetState> inspectTarget(const fs::path& target, bool replace) {
     if (ec) return Error{cat(target.string(), ": ", ec.message())};
     if (it == fs::directory_iterator()) return TargetState::Empty;
     if (!replace) return Error{cat(target.string(), ": a folder with files in it; --force replaces it")};
+    if (auto notOurs = notWrittenByFxlab(target)) return Error{*notOurs};
     return TargetState::Full;
 }
 
@@ -76,7 +90,13 @@ Result<std::unique_ptr<StagedFolder>> StagedFolder::begin(const fs::path& reques
     fs::path staging = siblingName(target, "partial");
     if (::mkdir(staging.c_str(), 0755) != 0)
         return Error{cat(target.parent_path().string(), ": cannot write here: ", std::strerror(errno))};
-    return std::unique_ptr<StagedFolder>(new StagedFolder(target, staging, replace));
+    auto folder = std::unique_ptr<StagedFolder>(new StagedFolder(target, staging, replace));
+    if (auto s = writeFileInFolder(
+            staging, kStagedFolderMarker,
+            std::string_view("fxlab wrote this folder; fxlab-handout --force may replace it\n"));
+        !s)
+        return Error{s.error()};
+    return folder;
 }
 
 StagedFolder::~StagedFolder() {

@@ -4,14 +4,19 @@
 // fails, or the program leaves before commit(), the sibling is removed and the target is as it was.
 //
 // The target may be missing or an empty folder. A folder with something in it is refused unless
-// `replace` is set (the command line's --force); a symbolic link, a file, a device or a FIFO is always
-// refused, so nothing that is not a folder is ever replaced and no link is followed.
+// `replace` is set (the command line's --force) and the folder holds the marker an earlier StagedFolder
+// left (kStagedFolderMarker, a regular file): only a folder fxlab wrote is ever replaced, never one of
+// the user's. A symbolic link, a file, a device or a FIFO is always refused, so nothing that is not a
+// folder is ever replaced and no link is followed.
 #include <filesystem>
 #include <memory>
 
 #include "base/result.hpp"
 
 namespace fx {
+
+// The file every staged folder holds, saying that fxlab wrote it (and so may replace it).
+inline constexpr const char* kStagedFolderMarker = ".fxlab-handout";
 
 class StagedFolder {
 public:

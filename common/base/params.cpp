@@ -1,6 +1,8 @@
 #include "base/params.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -30,9 +32,17 @@ Result<double> parseNumber(std::string_view text) {
     std::string s(text);
     if (s.empty()) return Error{"no value"};
     char* end = nullptr;
+    errno = 0;
     double v = std::strtod(s.c_str(), &end);
     if (end != s.c_str() + s.size()) return Error{cat("\"", excerpt(s), "\" is not a number")};
     if (!std::isfinite(v)) return Error{cat("\"", excerpt(s), "\" is not a finite number")};
+    // 1e-400 reads as 0 (ERANGE), and 1e-300 becomes 0 as the float a parameter is held in: refused as
+    // a scene refuses them, not taken silently as 0.
+    if (errno == ERANGE && std::fabs(v) < 1.0)
+        return Error{
+            cat("\"", excerpt(s), "\" is too small for a double (it underflows to ", formatNumber(v), ")")};
+    if (v != 0.0 && static_cast<float>(v) == 0.0f)
+        return Error{cat("\"", excerpt(s), "\" becomes 0 as a float (the precision fxlab computes with)")};
     return v;
 }
 
@@ -474,7 +484,7 @@ std::vector<std::string> ParamSet::unusedSettings(const std::vector<SettingText>
 std::string ParamSet::toJson() const {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     for (auto& p : params_) j[p.name] = p.text();
-    return j.dump(2) + "\n";
+    return dumpJson(j, 2) + "\n";
 }
 
 Status ParamSet::fromJson(std::string_view json, std::string_view fileName, ParamSource source) {
@@ -493,7 +503,7 @@ Status ParamSet::fromJson(std::string_view json, std::string_view fileName, Para
         if (!value.is_string() && !value.is_number() && !value.is_boolean())
             return Error{
                 cat(fileName, ": ", key, ": expected a number or a string, got ", describeJsonType(value))};
-        std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+        std::string text = value.is_string() ? value.get<std::string>() : dumpJson(value);
         auto v = parseFor(*p, text);
         if (!v) return Error{cat(fileName, ": ", key, ": ", v.error())};
         checked.emplace_back(p, *v);

@@ -6,6 +6,9 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/path_rule.hpp"
+#include "base/paths.hpp"
+#include "gl/macro_budget.hpp"
 #include "gl/shader_substitutes.hpp"
 
 namespace fx::gl {
@@ -22,11 +25,25 @@ std::string lineDirective(int line, int index) {
     return cat("#line ", long(index) * kLinesPerFile + line, " ", index, "\n");
 }
 
+// Where an #include may lead (see Expander::resolve).
+Result<fs::path> allowedInclude(const fs::path& includer, const std::string& name, const fs::path& base,
+                                const fs::path& includeRoot) {
+    const fs::path exercises = projectRoot() / "exercises";
+    const PathRoot allowed[] = {{includer.parent_path(), "the including file's folder"},
+                                {includeRoot, "the shaders' folder"},
+                                {exercises, "exercises/"}};
+    const PathRoot forbidden[] = {{exercises / "solutions", "the exercises' answers"}};
+    return resolveInsideRoots(name, base, allowed, forbidden,
+                              "a shader includes only files beside it, in shaders/ or in exercises/, never "
+                              "an exercise's answers");
+}
+
 struct Expander {
     const fs::path& includeRoot;
     const FileReader& reader;
     ExpandedSource out;
     std::vector<fs::path> stack;  // files being expanded, for cycle detection
+    MacroBudget macros;           // what the macros of every file expand to
 
     std::string displayName(const fs::path& file) const {
         std::error_code ec;
@@ -39,7 +56,13 @@ struct Expander {
         for (const fs::path& base : {includer.parent_path(), includeRoot}) {
             fs::path candidate = (base / name).lexically_normal();
             std::error_code ec;
-            if (fs::exists(candidate, ec)) return substitutedShaderFile(candidate);
+            if (!fs::exists(candidate, ec)) continue;
+            // The rule for every path a file names (base/path_rule.hpp): an #include stays beside the
+            // including file, in shaders/ or in the exercises' own folder, and never reaches an
+            // exercise's answers, so a student's one-line #include of the solution is refused.
+            if (auto allowed = allowedInclude(includer, name, base, includeRoot); !allowed)
+                return Error{cat(displayName(includer), ":", line, ": #include ", allowed.error())};
+            return substitutedShaderFile(candidate);
         }
         return Error{cat(displayName(includer), ":", line, ": cannot find included file \"", name,
                          "\" (looked beside the file and in ", includeRoot.generic_string(), ")")};
@@ -94,6 +117,7 @@ struct Expander {
                 out.text += lineDirective(number + 1, index);
                 continue;
             }
+            macros.line(line, cat(displayName(file), ":", number));
             out.text += line + "\n";
         }
         if (isMain && !sawVersion) {
@@ -111,9 +135,10 @@ Result<ExpandedSource> expandShaderSource(const fs::path& file, const fs::path& 
                                           std::string_view defines, const FileReader& reader) {
     FileReader read =
         reader ? reader : FileReader([](const fs::path& p) { return readFile(p, file_limits::shader); });
-    Expander expander{includeRoot, read, {}, {}};
+    Expander expander{includeRoot, read, {}, {}, {}};
     auto status = expander.expand(substitutedShaderFile(file.lexically_normal()), defines, true);
     if (!status) return Error{status.error()};
+    if (auto bomb = expander.macros.firstOverBudget()) return Error{*bomb};
     return std::move(expander.out);
 }
 

@@ -12,8 +12,11 @@
 
 #include "base/file_io.hpp"
 #include "base/log.hpp"
+#include "base/path_rule.hpp"
+#include "scene/gltf_files.hpp"
 #include "scene/gltf_model_builder.hpp"
 #include "scene/gltf_precheck.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace fx {
 namespace {
@@ -29,26 +32,52 @@ bool captureImage(tinygltf::Image* image, const int index, std::string*, std::st
     return true;
 }
 
-// Every file tinygltf reads (the .gltf or .glb, its .bin buffers, its images) goes through fxlab's
-// reader: regular files only, within the glTF size limit, with the system's reason on failure.
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-    auto bytes = readFile(path, file_limits::gltf);
-    if (!bytes) {
-        if (err) *err += bytes.error();
+// tinygltf opens no file itself: it is given the bytes readGltfFiles read under the path rule
+// (scene/gltf_files.hpp). Its own FileExists would fopen the path, which waits forever on a FIFO.
+bool knownFile(const std::string& path, void* user) {
+    const auto* files = static_cast<const GltfFiles*>(user);
+    const std::string key = gltfFileKey(path);
+    return files->bytes.contains(key) || files->unreadImages.contains(key);
+}
+
+bool readKnownFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    const auto* files = static_cast<const GltfFiles*>(user);
+    auto it = files->bytes.find(gltfFileKey(path));
+    if (it == files->bytes.end()) {
+        if (err) *err += "not read";  // an unread image: fxlab has warned in its own words
         return false;
     }
-    out->assign(bytes->begin(), bytes->end());
+    *out = it->second;
     return true;
 }
 
-void useFxlabFileReader(tinygltf::TinyGLTF& loader) {
+std::string unexpanded(const std::string& path, void*) {
+    return path;  // no shell expansion of a file's words
+}
+
+void useFxlabFiles(tinygltf::TinyGLTF& loader, GltfFiles& files) {
     tinygltf::FsCallbacks callbacks{};
-    callbacks.FileExists = &tinygltf::FileExists;
-    callbacks.ExpandFilePath = &tinygltf::ExpandFilePath;
-    callbacks.ReadWholeFile = &readWholeFile;
-    callbacks.WriteWholeFile = &tinygltf::WriteWholeFile;
-    callbacks.user_data = nullptr;
+    callbacks.FileExists = &knownFile;
+    callbacks.ExpandFilePath = &unexpanded;
+    callbacks.ReadWholeFile = &readKnownFile;
+    callbacks.WriteWholeFile = &tinygltf::WriteWholeFile;  // never called: fxlab writes no glTF through it
+    callbacks.user_data = &files;
     loader.SetFsCallbacks(callbacks);
+}
+
+// tinygltf's lines about an image fxlab did not read (it has said why in its own words).
+bool aboutAnUnreadImage(const std::string& line) {
+    return line.starts_with("File read error : ") ||
+           line.starts_with("Failed to load external 'uri' for image[") ||
+           line.starts_with("File not found : ");
+}
+
+// The folder a model's files must stay in: the asset root (the default one when none is given) when it
+// holds the model's folder, else the model's own folder.
+fs::path rootFor(const fs::path& modelFolder, const fs::path& assetRoot) {
+    const fs::path root = resolvedPath(fs::absolute(assetRoot.empty() ? defaultAssetRoot() : assetRoot));
+    const fs::path folder = resolvedPath(fs::absolute(modelFolder));
+    return isInsideFolder(folder, root) ? root : folder;
 }
 
 // Extensions fxlab reads; any other one a file *requires* changes what the file means (compressed
@@ -67,7 +96,8 @@ std::string trimmed(std::string text) {
 }
 
 Result<GltfModel> finish(bool ok, const tinygltf::Model& m, const std::string& err, const std::string& warn,
-                         const fs::path& file, const fs::path& baseDir, CapturedImages& images) {
+                         const fs::path& file, const fs::path& baseDir, CapturedImages& images,
+                         const GltfFiles& files) {
     if (!ok) {
         // tinygltf sometimes puts its only reason among the warnings.
         std::string message = trimmed(err.empty() ? warn : err);
@@ -85,12 +115,15 @@ Result<GltfModel> finish(bool ok, const tinygltf::Model& m, const std::string& e
     while (start < warn.size()) {
         std::size_t end = warn.find('\n', start);
         if (end == std::string::npos) end = warn.size();
-        if (end > start) model->warnings.push_back(warn.substr(start, end - start));
+        const std::string line = warn.substr(start, end - start);
+        if (end > start && !(files.warnings.size() > 0 && aboutAnUnreadImage(line)))
+            model->warnings.push_back(line);
         start = end + 1;
     }
+    model->warnings.insert(model->warnings.begin(), files.warnings.begin(), files.warnings.end());
     for (const std::string& extension : m.extensionsUsed)
         if (!supported(extension)) model->warnings.push_back(cat("extension ", extension, " is ignored"));
-    for (const auto& w : model->warnings) log::warning(file.filename().string(), ": ", w);
+    // Not logged here: the scene loader says them once (the meshes load the same file again for the GPU).
     return model;
 }
 
@@ -143,7 +176,7 @@ void computeNormals(MeshData& mesh) {
 }
 
 Result<GltfModel> parseGltfBytes(std::span<const std::byte> bytes, const fs::path& baseDir,
-                                 const fs::path& nominalFile) {
+                                 const fs::path& nominalFile, const fs::path& root) {
     const bool binary = isGlb(bytes);
     // What tinygltf would refuse without naming the rule, refused here with it.
     std::optional<std::string_view> document =
@@ -153,8 +186,11 @@ Result<GltfModel> parseGltfBytes(std::span<const std::byte> bytes, const fs::pat
     if (document)
         if (auto refusal = findUnnamedGltfRefusal(*document))
             return Error{cat(nominalFile.string(), ": ", *refusal)};
+    auto files = document ? readGltfFiles(*document, baseDir, root.empty() ? rootFor(baseDir, {}) : root)
+                          : Result<GltfFiles>(GltfFiles{});
+    if (!files) return Error{cat(nominalFile.string(), ": ", files.error())};
     tinygltf::TinyGLTF loader;
-    useFxlabFileReader(loader);
+    useFxlabFiles(loader, *files);
     CapturedImages images;
     loader.SetImageLoader(&captureImage, &images);
     tinygltf::Model m;
@@ -164,15 +200,16 @@ Result<GltfModel> parseGltfBytes(std::span<const std::byte> bytes, const fs::pat
     bool ok = binary ? loader.LoadBinaryFromMemory(&m, &err, &warn, data, size, baseDir.string())
                      : loader.LoadASCIIFromString(&m, &err, &warn, reinterpret_cast<const char*>(data), size,
                                                   baseDir.string());
-    return finish(ok, m, err, warn, nominalFile, baseDir, images);
+    return finish(ok, m, err, warn, nominalFile, baseDir, images, *files);
 }
 
-Result<GltfModel> loadGltf(const fs::path& file) {
+Result<GltfModel> loadGltf(const fs::path& file, const fs::path& assetRoot) {
     std::error_code ec;
     if (!fs::exists(file, ec)) return Error{cat(file.string(), ": no such file")};
     auto bytes = readFile(file, file_limits::gltf);
     if (!bytes) return Error{bytes.error()};
-    return parseGltfBytes(std::as_bytes(std::span(bytes->data(), bytes->size())), file.parent_path(), file);
+    return parseGltfBytes(std::as_bytes(std::span(bytes->data(), bytes->size())), file.parent_path(), file,
+                          rootFor(file.parent_path(), assetRoot));
 }
 
 Result<GltfModel> parseGltf(const std::string& json, const fs::path& baseDir, const fs::path& nominalFile) {

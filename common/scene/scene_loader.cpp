@@ -94,6 +94,8 @@ void checkModels(const Scene& scene) {
         if (cached == models.end()) {
             auto model = loadGltf(object.gltf.resolved);
             if (!model) failField(fieldPath(where, "gltf"), cat("cannot load the model: ", model.error()));
+            for (const std::string& w : model->warnings)
+                log::warning(object.gltf.resolved.filename().string(), ": ", w);  // once a file
             cached = models.emplace(object.gltf.resolved, std::move(*model)).first;
         }
         vertices += cached->second.vertexCount();

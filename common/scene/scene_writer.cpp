@@ -1,4 +1,5 @@
 #include "scene/scene_writer.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -302,7 +303,7 @@ std::string saveScene(const Scene& scene) {
     if (!scene.clouds.empty()) json["clouds"] = arrayOf(scene.clouds, cloudJson);
     Json post = postEffectsJson(scene);
     if (!post.empty()) json["postEffects"] = post;
-    return withNumberArraysOnOneLine(json.dump(2)) + "\n";
+    return withNumberArraysOnOneLine(dumpJson(json, 2)) + "\n";
 }
 
 }  // namespace fx

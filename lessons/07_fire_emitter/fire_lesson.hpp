@@ -56,9 +56,10 @@ public:
     struct Setup {
         std::vector<fx::EmitterSetup> emitters;
         Path path = Path::objects;
-        bool sort = false;           // back to front before drawing (the CPU paths)
-        int sortedFrom = 0;          // sort only the particles of emitters from this index on
-        bool premultiplied = false;  // step 5: one blend for fire and smoke
+        bool sort = false;              // back to front before drawing (the CPU paths)
+        int sortedFrom = 0;             // sort only the particles of emitters from this index on
+        bool premultiplied = false;     // step 5: one blend for fire and smoke
+        std::size_t sceneEmitters = 0;  // the scene's emitters behind `emitters` (step 2 doubles them)
         bool operator==(const Setup&) const = default;
     };
     Setup setupFor(const fx::FrameInfo& frame) const;

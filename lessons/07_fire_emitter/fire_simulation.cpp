@@ -57,6 +57,7 @@ FireLesson::Setup FireLesson::setupFor(const FrameInfo& frame) const {
     const bool beyond = step == Beyond;
     for (const ParticleEmitter& e : frame.world.scene().emitters) {
         if (!beyond && e.kind != EmitterKind::fire) continue;  // smoke and sparks are step 5's
+        ++setup.sceneEmitters;
         EmitterSetup s{e, {}, pool_, 1.0f, !e.sprite.empty() && renderer_->hasSprite()};
         if (e.kind == EmitterKind::fire) s.emitter.spinDegreesPerSecond += spin_;
         if (step == Objects) s.rules = {true, true};
@@ -103,6 +104,7 @@ void FireLesson::configure(const Setup& setup) {
     // The scene and the parameters together may ask for more than the device holds: fitted first.
     fitted_ = setup.emitters;
     budget_ = fitParticleBudget(fitted_, device_);
+    budget_.sceneEmitters = setup.sceneEmitters;
     if (budget_.clamped()) log::warning("lesson 07: ", budget_.warning());
     const bool gpu = setup.path == Path::gpu;
     system_ = ParticleSystem(fitted_, !gpu);

@@ -37,11 +37,28 @@ with tempfile.TemporaryDirectory(prefix="fx_class_") as klass:
     shutil.copy(os.path.join(root, "exercises", "solutions", "07-2", "wrong-past-limits.json"),
                 os.path.join(klass, "bob", "07-2", starter_name("07-2")))
 
-    run = subprocess.run([tool, "check", "--all", "--json", "--class", klass], capture_output=True, text=True, timeout=600)
+    # Issue 40: a student folder whose name is not UTF-8 aborted the grading (type_error.316), and a
+    # one-line #include of the solution, or a link to it, passed.
+    odd = os.fsdecode(b"st\xffudent")
+    os.makedirs(os.path.join(klass, odd, "05-1"))
+    solution = os.path.join(root, "exercises", "solutions", "05-1", starter_name("05-1"))
+    with open(os.path.join(klass, odd, "05-1", starter_name("05-1")), "w") as f:
+        f.write(f'#include "{solution}"\n')
+    os.makedirs(os.path.join(klass, odd, "09-1"))
+    os.symlink(os.path.join(root, "exercises", "solutions", "09-1", starter_name("09-1")),
+               os.path.join(klass, odd, "09-1", starter_name("09-1")))
+
+    run = subprocess.run([tool, "check", "--all", "--json", "--class", klass], capture_output=True, text=True,
+                         errors="replace", timeout=600)
     expect(run.returncode == 1, f"a class with a failing student exits 1, got {run.returncode}: {run.stderr}")
     report = json.loads(run.stdout)
     students = {s["student"]: s for s in report["students"]}
-    expect(sorted(students) == ["alice", "bob"], f"both students graded: {sorted(students)}")
+    expect(sorted(students) == ["alice", "bob", "st\\xffudent"], f"every student graded: {sorted(students)}")
+    if "st\\xffudent" in students:
+        cheats = {v["id"]: v for v in students["st\\xffudent"]["exercises"]}
+        expect(students["st\\xffudent"]["passed"] == 0, "an #include of the solution or a link to it passes nothing")
+        expect("inside the exercises' answers" in cheats["05-1"]["message"], f"05-1's #include: {cheats['05-1']}")
+        expect("one of the exercises' answers" in cheats["09-1"]["message"], f"09-1's link: {cheats['09-1']}")
     alice, bob = students["alice"], students["bob"]
     expect(alice["total"] == len(exercises) and alice["passed"] == len(exercises),
            f"alice passes all {len(exercises)}: {alice['passed']}/{alice['total']}")

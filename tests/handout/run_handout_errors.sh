@@ -37,8 +37,19 @@ if "$tool" --out "$work/full" "$broken" >"$work/full.log" 2>&1; then fail "a ful
 grep -q "$work/full: a folder with files in it; --force replaces it" "$work/full.log" ||
   fail "no message about the full folder: $(cat "$work/full.log")"
 grep -q "capturing" "$work/full.log" && fail "it captured before refusing the folder"
-# With --force, a run that fails still keeps the old folder: it is replaced only by a finished one.
+# With --force, a folder fxlab did not write (no marker: a home folder) is refused before anything
+# runs, and kept whole (issue 40: it was moved aside and removed).
+mkdir -p "$work/full/.ssh" && echo "a key" > "$work/full/.ssh/id_rsa"
+if "$tool" --force --out "$work/full" "$broken" >"$work/notours.log" 2>&1; then fail "--force took a folder fxlab did not write"; fi
+grep -q "$work/full: a folder with files in it that fxlab did not write" "$work/notours.log" ||
+  fail "no message saying why the folder is kept: $(cat "$work/notours.log")"
+grep -q "capturing" "$work/notours.log" && fail "it captured before refusing the folder"
+[ "$(cat "$work/full/.ssh/id_rsa" 2>/dev/null)" = "a key" ] && echo "ok: --force keeps a folder fxlab did not write" ||
+  fail "--force lost a folder fxlab did not write"
+# With --force, a run that fails still keeps an earlier handout: it is replaced only by a finished one.
+echo "an earlier handout" > "$work/full/.fxlab-handout"
 "$tool" --force --out "$work/full" "$broken" >"$work/force.log" 2>&1 && fail "a failed capture succeeded with --force"
+grep -q "capturing the steps failed" "$work/force.log" || fail "--force on an earlier handout did not run: $(cat "$work/force.log")"
 [ "$(cat "$work/full/notes.txt" 2>/dev/null)" = "a teacher's notes" ] && echo "ok: --force keeps the old folder when the run fails" ||
   fail "--force lost the old folder on a failed run"
 [ "$(find "$work" -maxdepth 1 -name '.full.*' | wc -l)" -eq 0 ] || fail "a hidden sibling of full/ was left"

@@ -1,4 +1,5 @@
 #include "gltf_builder.hpp"
+#include "base/json_text.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -190,7 +191,7 @@ void GltfBuilder::useExtension(const std::string& name) {
 std::string GltfBuilder::gltfText() const {
     Json doc = doc_;
     doc["buffers"][0]["byteLength"] = bin_.size();
-    return doc.dump(1) + "\n";
+    return fx::dumpJson(doc, 1) + "\n";
 }
 
 }  // namespace fx::assetgen

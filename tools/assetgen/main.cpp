@@ -6,9 +6,11 @@
 #include <iostream>
 
 #include "assetgen.hpp"
+#include "base/fatal_error.hpp"
 #include "base/paths.hpp"
 
 int main(int argc, char** argv) {
+    fx::installFatalErrorHandler("fxlab-assetgen");
     std::filesystem::path out = fx::resourceDir();
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {

@@ -16,6 +16,8 @@
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
 #include "app/exercise_words.hpp"
+#include "base/fatal_error.hpp"
+#include "base/json_text.hpp"
 #include "base/log.hpp"
 #include "base/words.hpp"
 
@@ -112,7 +114,7 @@ int list(const std::vector<Exercise>& exercises, bool json) {
                     state.c_str(), e.lesson, e.number);
     }
     if (json)
-        std::cout << out.dump(2) << "\n";
+        std::cout << fx::dumpJson(out, 2) << "\n";
     else
         std::cout << say("check.listFooter", {{"count", cat(exercises.size())}, {"root", root.string()}})
                   << "\n";
@@ -122,6 +124,7 @@ int list(const std::vector<Exercise>& exercises, bool json) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    fx::installFatalErrorHandler("fxlab-exercise");
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) return usage();
     const std::string command = args.front();
@@ -207,11 +210,11 @@ int main(int argc, char** argv) {
     if (classDir.empty()) {
         nlohmann::json results = checkStudent(chosen, studentRoot(), json, true, timeout, failures);
         if (json)
-            std::cout << nlohmann::json{{"student", studentRoot().string()},
-                                        {"passed", chosen.size() - failures},
-                                        {"total", chosen.size()},
-                                        {"exercises", results}}
-                             .dump(2)
+            std::cout << fx::dumpJson(nlohmann::json{{"student", studentRoot().string()},
+                                                     {"passed", chosen.size() - failures},
+                                                     {"total", chosen.size()},
+                                                     {"exercises", results}},
+                                      2)
                       << "\n";
         return failures == 0 ? 0 : 1;
     }
@@ -229,6 +232,7 @@ int main(int argc, char** argv) {
     for (const fs::path& student : students) {
         if (!json) std::cout << "== " << student.filename().string() << "\n";
         int failed = 0;
+        fx::Doing doing(fx::cat("checking the exercises of ", student.string()));
         nlohmann::json results = checkStudent(chosen, student, json, false, timeout, failed);
         failures += failed;
         out.push_back({{"student", student.filename().string()},
@@ -236,6 +240,7 @@ int main(int argc, char** argv) {
                        {"total", chosen.size()},
                        {"exercises", results}});
     }
-    if (json) std::cout << nlohmann::json{{"class", classDir.string()}, {"students", out}}.dump(2) << "\n";
+    if (json)
+        std::cout << fx::dumpJson(nlohmann::json{{"class", classDir.string()}, {"students", out}}, 2) << "\n";
     return failures == 0 ? 0 : 1;
 }

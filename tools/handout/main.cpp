@@ -5,6 +5,8 @@
 
 #include "app/handout_build.hpp"
 #include "app/handout_options.hpp"
+#include "base/fatal_error.hpp"
+#include "base/log.hpp"
 #include "base/output_folder.hpp"
 
 namespace {
@@ -19,6 +21,7 @@ void onSignal(int) {
 
 int main(int argc, char** argv) {
     using namespace fx::handout;
+    fx::installFatalErrorHandler("fxlab-handout");
     auto line = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!line) {
         std::cerr << "fxlab-handout: " << line.error() << "\n";
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
     std::vector<ContentsEntry> entries;
     for (const auto& lesson : line->lessons) {
         const std::filesystem::path lessonFolder = several ? folder / *lessonFolderOf(lesson) : folder;
+        fx::Doing doing(fx::cat("writing the handout of ", lesson.string()));
         auto entry = writeLessonHandout(lesson, line->options, lessonFolder);
         if (!entry || interrupted) {
             std::cerr << "fxlab-handout: " << (entry ? std::string("interrupted") : entry.error())

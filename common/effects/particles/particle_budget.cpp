@@ -75,6 +75,13 @@ std::string ParticleBudget::summary() const {
 }
 
 std::string ParticleBudget::warning() const {
+    if (sceneEmitters > 0 && sceneEmitters != emitters.size()) {
+        return cat(sceneEmitters, " emitter", sceneEmitters == 1 ? "" : "s", " of the scene, simulated as ",
+                   emitters.size(), " (", someNames(emitters), "), ask for ", asked,
+                   " particle slots together; ", allowed, " fit (", limitedBy,
+                   ", docs/reliability.md): every emitter's rate and pool are scaled by ",
+                   formatNumber(float(scale)), " to ", granted, " slots");
+    }
     return cat(emitters.size(), " emitter", emitters.size() == 1 ? "" : "s", " (", someNames(emitters),
                ") ask for ", asked, " particle slots together; ", allowed, " fit (", limitedBy,
                ", docs/reliability.md): every emitter's rate and pool are scaled by ",

@@ -32,6 +32,9 @@ struct ParticleBudget {
     std::string limitedBy;              // which limit sets `allowed`
     double scale = 1.0;                 // every emitter's rate and pool were multiplied by this (1: as asked)
     std::vector<std::string> emitters;  // the emitters' names (for the warning)
+    // The scene's emitters behind them, when a step simulates each more than once (lesson 07's step 2
+    // sets the chapter's fire beside the fixed one): the warning counts the scene's, not the copies.
+    std::size_t sceneEmitters = 0;
 
     bool clamped() const { return asked > allowed; }
     // The facts' line: "125004 of 2097152 slots" or "4250136 slots asked; 2097152 allowed (...): x0.49".

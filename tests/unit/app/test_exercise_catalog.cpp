@@ -9,6 +9,8 @@
 #include <fstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "app/child_watchdog.hpp"
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_scene_check.hpp"
@@ -233,4 +235,37 @@ TEST(Exercises, ASceneExerciseFailsPastTheLimitsOverTheBudgetAndWithoutAnEmitter
     EXPECT_GT(solution.measured, 0.0);
     EXPECT_LE(solution.measured, 2000.0);
     EXPECT_EQ(solution.nonFiniteTexels, 0);
+}
+
+// Issue 40, defect 7: a scene at the format's limits (256 emitters at rate 10000 x lifetime 10, within
+// every scene limit) took the check 157 s and 1.6 GB to fail, and timed out under the watchdog saying
+// "does a loop in your shader never end?". Now it is judged from the scene, before any simulation.
+TEST(Exercises, ASceneAtTheFormatsLimitsIsJudgedFromTheSceneWithoutSimulating) {
+    auto all = loadExercises(exerciseRoot());
+    ASSERT_TRUE(all.ok()) << all.error();
+    auto e = findExercise(*all, 7, 2);
+    ASSERT_TRUE(e.ok()) << e.error();
+    auto text = readTextFile(exerciseRoot() / "solutions" / "07-2" / "wrong-over-budget.json");
+    ASSERT_TRUE(text.ok());
+    nlohmann::json scene = nlohmann::json::parse(*text);
+    nlohmann::json emitter = scene["emitters"][0];
+    emitter["rate"] = 10000;
+    emitter["lifetime"] = 10;
+    scene["emitters"] = nlohmann::json::array();
+    for (int i = 0; i < 256; ++i) {
+        emitter["name"] = "torch" + std::to_string(i);
+        scene["emitters"].push_back(emitter);
+    }
+    const fs::path file =
+        fs::temp_directory_path() / ("fx_07-2_limits_" + std::to_string(::getpid()) + ".json");
+    ASSERT_TRUE(writeFileAtomically(file, scene.dump()));
+    const ExerciseVerdict verdict = checkSceneExercise(*e, file);
+    fs::remove(file);
+    EXPECT_FALSE(verdict.passed);
+    EXPECT_EQ(verdict.measured, 256.0 * 10000 * 10);
+    EXPECT_NE(verdict.message.find("256 emitters"), std::string::npos) << verdict.message;
+    EXPECT_NE(verdict.message.find("needs <= 2000; judged from your scene without simulating it"),
+              std::string::npos)
+        << verdict.message;
+    EXPECT_NE(verdict.hint.find("Too many particles"), std::string::npos) << verdict.hint;
 }

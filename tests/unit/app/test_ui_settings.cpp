@@ -3,6 +3,11 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <unistd.h>
 
 #include "app/ui_settings.hpp"
 #include "base/file_io.hpp"
@@ -51,4 +56,49 @@ TEST(UiSettings, TheFileIsUnderTheConfigFolder) {
     setenv("XDG_CONFIG_HOME", "/tmp/b", 1);
     EXPECT_EQ(fx::uiSettingsPath(), fs::path("/tmp/b/fxlab/ui.json"));
     unsetenv("XDG_CONFIG_HOME");
+}
+
+// Issue 40, defect 2: a settings file that cannot be read was replaced by the defaults at exit.
+TEST(UiSettings, AFileThatCannotBeReadIsNeverWrittenOver) {
+    const fs::path dir = fs::temp_directory_path() / ("fxlab-ui-kept-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string big(1 << 20, ' ');
+    const std::vector<std::pair<std::string, std::string>> damaged = {
+        {"syntax", "{\"textScale\": 1.5,\n  \"window\": [1280 720]}\n"},
+        {"big", "{\"textScale\": 1.5" + big + "}"},
+        {"byte", "{\"textScale\": 1.5, \"x\": \"\xff\"}"},
+        {"type", "{\"textScale\": \"big\"}"},
+        {"array", "[1, 2]"},
+    };
+    fx::UiSettings changed;
+    changed.textScale = 2.0f;
+    for (const auto& [name, text] : damaged) {
+        const fs::path file = dir / (name + ".json");
+        ASSERT_TRUE(fx::writeFileAtomically(file, std::string_view(text)));
+        EXPECT_EQ(fx::loadUiSettings(file), fx::UiSettings{}) << name;  // the defaults, in memory
+        ASSERT_TRUE(fx::whyUiSettingsAreKept(file)) << name;
+        auto first = fx::saveUiSettings(file, changed);
+        ASSERT_FALSE(first) << name;
+        EXPECT_NE(first.error().find("kept as it is"), std::string::npos) << first.error();
+        EXPECT_TRUE(fx::saveUiSettings(file, changed)) << name;  // said once a run, not at every change
+        EXPECT_EQ(*fx::readFile(file, {"settings", 4 << 20}), text) << name;  // byte for byte
+    }
+    // A syntax error is placed by line and column.
+    EXPECT_NE(fx::whyUiSettingsAreKept(dir / "syntax.json")->find("syntax.json:2:"), std::string::npos)
+        << *fx::whyUiSettingsAreKept(dir / "syntax.json");
+
+    // A read-only file is the teacher's choice: the rename would replace it all the same.
+    const fs::path locked = dir / "locked.json";
+    ASSERT_TRUE(fx::saveUiSettings(locked, fx::UiSettings{}));
+    const std::string before = *fx::readTextFile(locked);
+    fs::permissions(locked, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    EXPECT_FALSE(fx::saveUiSettings(locked, changed));  // by its mode, so even as root
+    EXPECT_EQ(*fx::readTextFile(locked), before);
+    // A good file is written as before.
+    const fs::path good = dir / "good.json";
+    ASSERT_TRUE(fx::saveUiSettings(good, fx::UiSettings{}));
+    ASSERT_TRUE(fx::saveUiSettings(good, changed));
+    EXPECT_EQ(fx::loadUiSettings(good), changed);
+    fs::remove_all(dir);
 }

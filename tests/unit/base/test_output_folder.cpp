@@ -57,7 +57,13 @@ TEST_F(OutputFolder, AFailedRunLeavesNothing) {
 }
 
 TEST_F(OutputFolder, AFolderWithFilesIsRefusedUnlessReplaced) {
-    ASSERT_TRUE(fx::writeFileAtomically(root_ / "out" / "old.html", std::string_view("old")).ok());
+    {  // an earlier handout: a folder StagedFolder wrote, with its marker
+        auto earlier = fx::StagedFolder::begin(root_ / "out", false);
+        ASSERT_TRUE(earlier.ok()) << earlier.error();
+        ASSERT_TRUE(fx::writeFileAtomically((*earlier)->path() / "old.html", std::string_view("old")).ok());
+        ASSERT_TRUE((*earlier)->commit().ok());
+    }
+    EXPECT_TRUE(fs::is_regular_file(root_ / "out" / fx::kStagedFolderMarker));
     auto refused = fx::StagedFolder::begin(root_ / "out", false);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.error(), (root_ / "out").string() + ": a folder with files in it; --force replaces it");
@@ -70,7 +76,42 @@ TEST_F(OutputFolder, AFolderWithFilesIsRefusedUnlessReplaced) {
     ASSERT_TRUE((*staged)->commit().ok());
     EXPECT_FALSE(fs::exists(root_ / "out" / "old.html"));
     EXPECT_TRUE(fs::exists(root_ / "out" / "new.html"));
+    EXPECT_TRUE(fs::is_regular_file(root_ / "out" / fx::kStagedFolderMarker));  // replaceable again
     EXPECT_EQ(entries(), std::vector<std::string>{"out"});
+}
+
+// Issue 40, defect 1: --force on a folder of the user's (a home folder) left only the handout.
+TEST_F(OutputFolder, ForceNeverReplacesAFolderFxlabDidNotWrite) {
+    ASSERT_TRUE(fx::writeFileAtomically(root_ / "home" / ".ssh" / "id_rsa", std::string_view("key")).ok());
+    ASSERT_TRUE(
+        fx::writeFileAtomically(root_ / "home" / "Documents" / "thesis.tex", std::string_view("t")).ok());
+    auto refused = fx::StagedFolder::begin(root_ / "home", true);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().find((root_ / "home").string() +
+                                   ": a folder with files in it that fxlab did not write"),
+              std::string::npos)
+        << refused.error();
+    EXPECT_NE(refused.error().find("--force replaces only a folder an earlier handout wrote"),
+              std::string::npos);
+    EXPECT_EQ(entries(), std::vector<std::string>{"home"});  // no staging folder left beside it
+    EXPECT_EQ(*fx::readTextFile(root_ / "home" / ".ssh" / "id_rsa"), "key");
+
+    // A marker that is a link (to a file elsewhere) or a folder does not count.
+    ASSERT_TRUE(fx::writeFileAtomically(root_ / "elsewhere", std::string_view("x")).ok());
+    fs::create_symlink(root_ / "elsewhere", root_ / "home" / fx::kStagedFolderMarker);
+    EXPECT_FALSE(fx::StagedFolder::begin(root_ / "home", true).ok());
+    fs::remove(root_ / "home" / fx::kStagedFolderMarker);
+    fs::create_directory(root_ / "home" / fx::kStagedFolderMarker);
+    EXPECT_FALSE(fx::StagedFolder::begin(root_ / "home", true).ok());
+
+    // A folder that was the handout's when the run began but lost its marker is not replaced at the commit.
+    fs::remove(root_ / "home" / fx::kStagedFolderMarker);
+    ASSERT_TRUE(fx::writeFileAtomically(root_ / "home" / fx::kStagedFolderMarker, std::string_view("")).ok());
+    auto staged = fx::StagedFolder::begin(root_ / "home", true);
+    ASSERT_TRUE(staged.ok()) << staged.error();
+    fs::remove(root_ / "home" / fx::kStagedFolderMarker);
+    EXPECT_FALSE((*staged)->commit().ok());
+    EXPECT_EQ(*fx::readTextFile(root_ / "home" / "Documents" / "thesis.tex"), "t");
 }
 
 TEST_F(OutputFolder, AnEmptyFolderIsTakenOver) {

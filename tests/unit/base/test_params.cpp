@@ -345,3 +345,20 @@ TEST(Params, AStepOpensWithItsOwnValuesAndAChangeStaysWithItsStep) {
     EXPECT_EQ(broken, 1);
     EXPECT_FLOAT_EQ(exposure, 2.0f);
 }
+
+// Issue 40, defect 10: --param threshold=1e-400 was taken as 0 while a scene's 1e-300 is refused.
+TEST(Params, ANumberTooSmallForTheFloatIsRefusedNotTakenAsZero) {
+    float threshold = 1.0f;
+    fx::ParamSet params;
+    params.addFloat("threshold", &threshold, 0.0f, 16.0f, "");
+    for (const char* text : {"threshold=1e-400", "threshold=1e-300", "threshold=-1e-400"}) {
+        auto refused = params.assign(text);
+        ASSERT_FALSE(refused.ok()) << text;
+        EXPECT_NE(refused.error().find("parameter threshold: "), std::string::npos) << refused.error();
+        EXPECT_EQ(threshold, 1.0f) << text;
+    }
+    EXPECT_NE(params.assign("threshold=1e-400").error().find("too small for a double"), std::string::npos);
+    EXPECT_NE(params.assign("threshold=1e-300").error().find("becomes 0 as a float"), std::string::npos);
+    EXPECT_TRUE(params.assign("threshold=0").ok());
+    EXPECT_TRUE(params.assign("threshold=1e-30").ok());  // small, and a float still
+}

@@ -94,3 +94,19 @@ TEST(ParticleBudget, EachDeviceLimitCanDecide) {
     EXPECT_TRUE(fx::fitParticleBudget(over, small).clamped());
     EXPECT_LE(over[0].capacity, 1000);
 }
+
+// Issue 40, defect 10: lesson 07's step 2 simulates each emitter twice (the chapter's fire beside the
+// fixed one), and the warning counted 512 emitters for a scene of 256.
+TEST(ParticleBudget, TheWarningCountsTheScenesEmittersNotTheirCopies) {
+    std::vector<fx::EmitterSetup> setups;
+    for (int i = 0; i < 512; ++i) setups.push_back(emitter("fire " + std::to_string(i / 2), 125004));
+    fx::ParticleBudget budget = fx::fitParticleBudget(setups, llvmpipe());
+    budget.sceneEmitters = 256;
+    const std::string warning = budget.warning();
+    EXPECT_EQ(
+        warning.rfind("256 emitters of the scene, simulated as 512 ('fire 0', 'fire 0', 'fire 1', 'fire 1' "
+                      "and 508 more), ask for 64002048 particle slots together",
+                      0),
+        0u)
+        << warning;
+}

@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
+#include "base/paths.hpp"
 #include "gl/shader_source.hpp"
 
 using fx::gl::expandShaderSource;
@@ -133,4 +136,74 @@ TEST(ShaderSource, AFolderIsNamedAsAFolderNotAMissingVersion) {
     ASSERT_FALSE(expanded.ok());
     EXPECT_NE(expanded.error().find("is a folder, not a shader"), std::string::npos) << expanded.error();
     EXPECT_EQ(expanded.error().find("#version"), std::string::npos) << expanded.error();
+}
+
+// Issue 40, defects 5 and 6: an #include read any file (/etc/passwd, /proc/self/environ), and a
+// student's one-line #include of the solution passed the check.
+TEST(ShaderSource, AnIncludeStaysBesideTheFileInTheShadersOrInExercises) {
+    Files files;
+    const fs::path solution =
+        fx::projectRoot() / "exercises" / "solutions" / "05-1" / "radial_blur_offset.glsl";
+    ASSERT_TRUE(fs::is_regular_file(solution));
+    files.add("elsewhere/secret.glsl", "float secret;\n");
+    fs::create_directories(files.root / "student");
+    fs::create_symlink(solution, files.root / "student" / "linked.glsl");
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"\"../elsewhere/secret.glsl\"", "outside the including file's folder"},
+        {"\"/etc/passwd\"", "resolves to /etc/passwd, which is outside"},
+        {"\"" + solution.string() + "\"", "inside the exercises' answers"},
+        {"\"../../../../../../../../../../../.." + solution.string() + "\"", "inside the exercises' answers"},
+        {"\"linked.glsl\"", "inside the exercises' answers"},  // a link beside the file to the answer
+    };
+    for (const auto& [name, reason] : refused) {
+        auto student =
+            files.add("student/radial_blur_offset.glsl", "#version 450 core\n\n#include " + name + "\n");
+        auto source = expandShaderSource(student, fx::shaderDir());
+        ASSERT_FALSE(source.ok()) << name;
+        EXPECT_NE(source.error().find("radial_blur_offset.glsl:3: #include \""), std::string::npos)
+            << source.error();
+        EXPECT_NE(source.error().find(reason), std::string::npos) << source.error();
+        EXPECT_NE(source.error().find("never an exercise's answers"), std::string::npos) << source.error();
+    }
+    // Beside the file and in shaders/: as before.
+    files.add("student/helper.glsl", "float helper;\n");
+    auto fine = files.add(
+        "student/ok.frag",
+        "#version 450 core\n#include \"helper.glsl\"\n#include \"effects/post/post_bindings.glsl\"\n");
+    auto source = expandShaderSource(fine, fx::shaderDir());
+    EXPECT_TRUE(source.ok()) << source.error();
+}
+
+// Issue 40, defect 8: a 2 KB macro bomb killed the lesson inside Mesa's compiler (SIGSEGV at 5.4 GB).
+TEST(ShaderSource, AMacroBombIsRefusedBeforeTheCompilerSeesIt) {
+    Files files;
+    std::string bomb = "#version 450 core\n#define B0 1.0\n";
+    for (int n = 1; n <= 23; ++n)
+        bomb += "#define B" + std::to_string(n) + " (B" + std::to_string(n - 1) + "+B" +
+                std::to_string(n - 1) + ")\n";
+    bomb += "out vec4 c;\nvoid main() { c = vec4(B23); }\n";
+    auto source = expandShaderSource(files.add("bomb.frag", bomb), files.root);
+    ASSERT_FALSE(source.ok());
+    EXPECT_NE(source.error().find("bomb.frag:"), std::string::npos) << source.error();
+    EXPECT_NE(source.error().find("expands to"), std::string::npos) << source.error();
+    EXPECT_NE(source.error().find("the shader is not compiled"), std::string::npos) << source.error();
+
+    // Defined in reverse order, or across an include: counted the same.
+    std::string reversed = "#version 450 core\n#include \"half.glsl\"\n";
+    for (int n = 23; n >= 12; --n)
+        reversed += "#define B" + std::to_string(n) + " (B" + std::to_string(n - 1) + "+B" +
+                    std::to_string(n - 1) + ")\n";
+    std::string half = "#define B0 1.0\n";
+    for (int n = 1; n < 12; ++n)
+        half += "#define B" + std::to_string(n) + " B" + std::to_string(n - 1) + " B" +
+                std::to_string(n - 1) + "\n";
+    files.add("half.glsl", half);
+    EXPECT_FALSE(expandShaderSource(files.add("reversed.frag", reversed), files.root).ok());
+
+    // Ordinary macros, a self-reference and the shipped shaders: fine.
+    auto fine = expandShaderSource(
+        files.add("fine.frag",
+                  "#version 450 core\n#define TAPS 16\n#define TWICE (TAPS + TAPS)\n#define X X\n"),
+        files.root);
+    EXPECT_TRUE(fine.ok()) << fine.error();
 }

@@ -3,14 +3,20 @@
 // character in res/models.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -678,4 +684,96 @@ TEST(GltfLoader, TheScenesVerticesOverAllObjectsAreBounded) {
                                      "have 8388609 vertices together"))
         << over.error();
     fs::remove_all(dir);
+}
+
+// Issue 40, defects 4, 5 and 10: a buffer or image URI that is a FIFO hung the lesson forever
+// (tinygltf's own FileExists opens the file); "../", "%2e%2e" and links read files from anywhere;
+// tinygltf's own words ("File not found : ...") were the message.
+namespace {
+
+struct ModelFolder {
+    fs::path root = fs::temp_directory_path() / ("fx_gltf_uris_" + std::to_string(::getpid()));
+    ModelFolder() {
+        fs::remove_all(root);
+        fs::create_directories(root / "model");
+        std::FILE* f = std::fopen((root / "outside.bin").c_str(), "wb");
+        std::fwrite("abcd", 1, 4, f);
+        std::fclose(f);
+        f = std::fopen((root / "model" / "inside.bin").c_str(), "wb");
+        std::fwrite("abcd", 1, 4, f);
+        std::fclose(f);
+        ::mkfifo((root / "model" / "pipe.bin").c_str(), 0600);
+        ::mkfifo((root / "pipe-outside").c_str(), 0600);
+        fs::create_symlink(root / "outside.bin", root / "model" / "link.bin");
+        fs::create_symlink(root / "model" / "pipe.bin", root / "model" / "link-to-pipe.bin");
+        fs::create_symlink("/dev/zero", root / "model" / "zero.bin");
+    }
+    ~ModelFolder() { fs::remove_all(root); }
+    fs::path write(const std::string& kind, const std::string& uri) const {
+        nlohmann::json doc = {{"asset", {{"version", "2.0"}}}};
+        if (kind == "buffers")
+            doc["buffers"] = {{{"uri", uri}, {"byteLength", 4}}};
+        else
+            doc["images"] = {{{"uri", uri}}};
+        const fs::path file = root / "model" / "m.gltf";
+        std::FILE* f = std::fopen(file.c_str(), "wb");
+        const std::string text = doc.dump();
+        std::fwrite(text.data(), 1, text.size(), f);
+        std::fclose(f);
+        return file;
+    }
+};
+
+// loadGltf, or a failure (and the end of the test program) when it does not return within 20 s.
+fx::Result<fx::GltfModel> loadWithin(const fs::path& file) {
+    auto result = std::make_shared<std::optional<fx::Result<fx::GltfModel>>>();
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    std::thread([file, result, done] {
+        *result = fx::loadGltf(file);
+        *done = true;
+    }).detach();
+    for (int i = 0; i < 200 && !*done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (!*done) {
+        ADD_FAILURE() << file << ": loadGltf did not return within 20 s (a blocking read)";
+        std::_Exit(1);
+    }
+    return std::move(**result);
+}
+
+}  // namespace
+
+TEST(GltfLoader, EveryUriStaysInTheModelsFolderAndIsReadOnlyWhenARegularFile) {
+    ModelFolder m;
+    struct Case {
+        const char* kind;
+        const char* uri;
+        const char* says;
+    };
+    const Case refused[] = {
+        {"buffers", "pipe.bin", "buffers[0].uri \"pipe.bin\": "},
+        {"buffers", "link-to-pipe.bin", "is a FIFO (named pipe)"},
+        {"images", "pipe.bin", "images[0].uri \"pipe.bin\": "},
+        {"buffers", "zero.bin", "which is outside the model's folder"},
+        {"buffers", "../outside.bin", "buffers[0].uri: \"../outside.bin\" resolves to"},
+        {"buffers", "%2e%2e/outside.bin", "which is outside the model's folder"},
+        {"buffers", "link.bin", "which is outside the model's folder"},
+        {"images", "../pipe-outside", "images[0].uri: \"../pipe-outside\" resolves to"},
+        {"images", "/etc/passwd", "a glTF file may only name files in its own folder or below it"},
+    };
+    for (const Case& c : refused) {
+        auto model = loadWithin(m.write(c.kind, c.uri));
+        ASSERT_FALSE(model.ok()) << c.uri;
+        EXPECT_TRUE(scene_test::contains(model.error(), "m.gltf: ")) << model.error();
+        EXPECT_TRUE(scene_test::contains(model.error(), c.says)) << model.error();
+        EXPECT_FALSE(scene_test::contains(model.error(), "File read error")) << model.error();
+        EXPECT_FALSE(scene_test::contains(model.error(), "File not found")) << model.error();
+    }
+    auto fine = loadWithin(m.write("buffers", "inside.bin"));
+    ASSERT_TRUE(fine.ok()) << fine.error();
+    // A missing buffer in fxlab's words, not tinygltf's.
+    auto missing = loadWithin(m.write("buffers", "gone.bin"));
+    ASSERT_FALSE(missing.ok());
+    EXPECT_TRUE(scene_test::contains(missing.error(), "buffers[0].uri \"gone.bin\": ")) << missing.error();
+    EXPECT_TRUE(scene_test::contains(missing.error(), "gone.bin: no such file")) << missing.error();
+    EXPECT_FALSE(scene_test::contains(missing.error(), "File not found")) << missing.error();
 }

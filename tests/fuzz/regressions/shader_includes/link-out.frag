@@ -1,0 +1,3 @@
+#version 450 core
+#include "out.glsl"
+void main() {}

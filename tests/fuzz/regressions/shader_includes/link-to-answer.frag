@@ -1,0 +1,3 @@
+#version 450 core
+#include "answer.glsl"
+void main() {}

@@ -1,0 +1,3 @@
+#version 450 core
+#include "/proc/self/environ"
+void main() {}
