@@ -3,6 +3,7 @@
 python3-renderdoc, for /usr/bin/python3) and checks what a student sees in qrenderdoc:
 
   check_capture.py CAPTURE.rdc REPORT.json FLOATS_DIR [--levels PREFIX,...] [--distinct-dispatches]
+  check_capture.py CAPTURE.rdc --replay-only     only open it and replay it to its last event
 
 - names: every texture a pass of the report's pass table reads or writes is, in the capture, a
   texture named as the table names it (a pooled texture's label lists every name it holds this
@@ -240,15 +241,17 @@ def check_levels(replay, report, floats_dir, prefixes):
 def main(argv):
     parser = argparse.ArgumentParser(description="checks a RenderDoc capture of one fxlab frame")
     parser.add_argument("capture")
-    parser.add_argument("report")
-    parser.add_argument("floats_dir")
+    parser.add_argument("report", nargs="?")
+    parser.add_argument("floats_dir", nargs="?")
+    parser.add_argument("--replay-only", action="store_true",
+                        help="only open the capture and replay it to its last event")
     parser.add_argument("--levels", default="")
     parser.add_argument("--distinct-dispatches", action="store_true")
     a = parser.parse_args(argv[1:])
     capture, report_path, floats_dir = a.capture, a.report, a.floats_dir
     prefixes = [p for p in a.levels.split(",") if p]
-    with open(report_path) as f:
-        report = json.load(f)
+    if not a.replay_only and not (report_path and floats_dir):
+        parser.error("REPORT and FLOATS_DIR are needed unless --replay-only")
     rd.InitialiseReplay(rd.GlobalEnvironment(), [])
     try:
         replay = Replay(capture)
@@ -256,6 +259,16 @@ def main(argv):
         print(f"FAIL: {e}")
         rd.ShutdownReplay()
         return 2
+    if a.replay_only:
+        last = max((action.eventId for action, _, _ in replay.actions), default=0)
+        replay.controller.SetFrameEvent(last, True)
+        print(f"{capture}: opened and replayed to event {last}: {len(replay.actions)} actions, "
+              f"{len(replay.resources)} objects")
+        replay.shutdown()
+        rd.ShutdownReplay()
+        return 0 if replay.actions else 1
+    with open(report_path) as f:
+        report = json.load(f)
     failures = []
     names, checked = check_names(replay, report)
     unnamed = check_unnamed(replay)
