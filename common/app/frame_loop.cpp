@@ -13,6 +13,7 @@
 #include "app/facts_panel.hpp"
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
+#include "app/renderdoc_session.hpp"
 #include "app/run_options.hpp"
 #include "base/fact_references.hpp"
 #include "base/file_io.hpp"
@@ -119,6 +120,7 @@ void FrameLoop::run() {
             measureSlice(at, index);
             continue;
         }
+        if (s_.renderdoc) s_.renderdoc->frameStarts(index, frames != 0 && index + 1 == frames);
         // --exercise: a saved student's file is checked again before the frame that shows it.
         if (s_.exercise) (void)s_.exercise->recheckIfChanged();
         const double delta = clock_.advance();
@@ -179,6 +181,8 @@ void FrameLoop::run() {
         }
         keep(rendered, lastFrame, request.readFinal, screenshot);
         context_.present();
+        if (s_.renderdoc)
+            if (auto captured = s_.renderdoc->frameEnded()) notify(*captured);
         gl::drainErrorFlags();
         const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         record_.facts.addFrame(frameMs, rendered.passMs);
@@ -406,6 +410,13 @@ bool FrameLoop::takeKeys(Clock::time_point now, std::uint64_t index) {
         }
     }
     screenshotAsked_ = keys.screenshot;
+    if (keys.renderdoc) {
+        if (s_.renderdoc)
+            s_.renderdoc->captureNextFrame();
+        else
+            notify(
+                "RenderDoc: start the lesson with --renderdoc FILE.rdc to capture frames (docs/debugging.md)");
+    }
     if (!plan_.headless && now - lastReloadCheck_ > std::chrono::milliseconds(500)) {
         lastReloadCheck_ = now;
         if (int reloaded = programs_.reloadChanged(); reloaded > 0) {

@@ -241,6 +241,16 @@ Status addResize(RunOptions& o, const FlagUse& use) {
     return Status::success();
 }
 
+// A capture file: RenderDoc's tools open only names ending in .rdc.
+Status parseRenderDocFile(RunOptions& o, const FlagUse& use) {
+    const std::filesystem::path file = use.value;
+    if (use.value.empty() || file.extension() != ".rdc" || file.stem().empty())
+        return Error{
+            cat(use.flag, ": expected a file name ending in .rdc, got \"", excerpt(use.value), "\"")};
+    o.renderdoc = file;
+    return Status::success();
+}
+
 // The languages lesson text comes in (lesson_text_files.hpp), each its own word.
 std::vector<Choice<std::string>> languageChoices() {
     std::vector<Choice<std::string>> choices;
@@ -403,6 +413,20 @@ const std::vector<Flag>& flags() {
          .help = "every tenth frame, the process's memory and its live GL objects, written as CSV\n"
                  "when the run ends (a soak's figures: tools/soak/run_soak.sh)",
          .apply = nonEmpty(&RunOptions::resourceLog, "a path")},
+        {.name = "--renderdoc",
+         .value = "FILE.rdc",
+         .help = "capture the run's last frame (or --renderdoc-frame N) in RenderDoc, window or headless,\n"
+                 "through its in-application API (Debian package renderdoc); in a window F9 captures the\n"
+                 "next frame into FILE-2.rdc, FILE-3.rdc ... (docs/debugging.md)",
+         .apply = parseRenderDocFile},
+        {.name = "--renderdoc-frame",
+         .value = "N",
+         .help = "with --renderdoc: capture frame N of the run (1 is the first) instead of the last",
+         .apply =
+             whole(1, 1000000, "a frame number", [](RunOptions& o, long n) { o.renderdocFrame = int(n); })},
+        {.name = "--renderdoc-open",
+         .help = "with --renderdoc: open each capture in qrenderdoc once written",
+         .apply = set(&RunOptions::renderdocOpen, true)},
         {.name = "--list-steps",
          .help = "print the lesson's steps and exit",
          .apply = set(&RunOptions::listSteps, true)},
@@ -462,6 +486,15 @@ Result<RunOptions> parseRunOptions(const std::vector<std::string>& args, int ste
     if (o.allSteps && o.captureDir.empty())
         return Error{"--all-steps: needs --capture DIR (each step's captures go into DIR/step-K/)"};
     if (o.allSteps && o.step) return Error{"--all-steps: captures every step; leave out --step"};
+    if (o.renderdoc.empty() && (o.renderdocFrame || o.renderdocOpen))
+        return Error{cat(o.renderdocFrame ? "--renderdoc-frame" : "--renderdoc-open",
+                         ": needs --renderdoc FILE.rdc (where the capture goes)")};
+    if (o.renderdoc.empty() == false && (o.allSteps || o.bench))
+        return Error{
+            cat("--renderdoc: captures one run's frame; leave out ", o.allSteps ? "--all-steps" : "--bench")};
+    if (o.renderdocFrame && o.frames && *o.renderdocFrame > *o.frames)
+        return Error{cat("--renderdoc-frame: frame ", *o.renderdocFrame, " of a run of ", *o.frames,
+                         " frames (--frames); give a frame from 1 to ", *o.frames)};
     return o;
 }
 

@@ -68,6 +68,10 @@ struct RunOptions {
     std::optional<double> pictureScale;  // --picture-scale S: pinned; nothing: automatic (a window)
     double aspect = 16.0 / 9.0;          // --aspect W:H: the picture's aspect; 0: free
     int minFrameMs = 0;                  // --min-frame-time MS: a slow renderer, imitated
+    std::filesystem::path
+        renderdoc;  // --renderdoc FILE.rdc: a frame in RenderDoc (app/renderdoc_session.hpp)
+    std::optional<int> renderdocFrame;  // --renderdoc-frame N: that frame (1-based); default the last
+    bool renderdocOpen = false;         // --renderdoc-open: the capture opens in qrenderdoc
 };
 
 // Errors name the flag and what it takes: "--size: expected WxH with sizes from 0 to 16384, got 12".

@@ -12,6 +12,7 @@
 namespace fx {
 
 class ExerciseSession;
+class RenderDocSession;
 
 struct RunSession {
     std::unique_ptr<Lesson> lesson;  // released while the context is current (LessonRelease)
@@ -30,6 +31,8 @@ struct RunSession {
     Size2D windowSize;
     // --exercise N: the student's file in the lesson, checked at every save (app/exercise_session.hpp).
     std::shared_ptr<ExerciseSession> exercise;
+    // --renderdoc FILE.rdc: the frames RenderDoc captures (app/renderdoc_session.hpp).
+    std::shared_ptr<RenderDocSession> renderdoc;
 };
 
 // Where a run draws and what it leaves behind, decided from the options and whether a display exists.

@@ -10,6 +10,7 @@
 #include "app/lesson_listing.hpp"
 #include "app/lesson_switch.hpp"
 #include "app/lesson_text_files.hpp"
+#include "app/renderdoc_session.hpp"
 #include "app/run_context.hpp"
 #include "app/run_results.hpp"
 #include "base/fatal_error.hpp"
@@ -41,6 +42,26 @@ int run(RunSession& s) {
     const RunOptions& o = s.options;
     RunPlan plan = planRun(o, s.exe);
     if (!plan.headless) s.ui = loadUiSettings(uiSettingsPath());
+    if (!o.renderdoc.empty()) {
+        // RenderDoc hooks GL only when it is in the process before GL is: this program starts again
+        // with it preloaded (platform/renderdoc_api.hpp).
+        auto restart = prepareRenderDocStart();
+        if (!restart) {
+            log::error(s.exe, ": ", restart.error());
+            return 1;
+        }
+        if (*restart) {
+            Error failed = execLesson(runningExecutable(), s.args);
+            log::error(s.exe, ": --renderdoc: could not start again with RenderDoc: ", failed.message);
+            return 1;
+        }
+        auto renderdoc = RenderDocSession::open(o, plan.frames);
+        if (!renderdoc) {
+            log::error(s.exe, ": ", renderdoc.error());
+            return 1;
+        }
+        s.renderdoc = std::move(*renderdoc);
+    }
     auto made = openRunContext(s, plan);
     if (!made) {
         log::error(made.error());
@@ -80,7 +101,14 @@ int run(RunSession& s) {
     loop.run();
     // Page Down / Page Up: the next lesson writes the captures and the report asked for, not this one.
     if (s.switchLesson != 0) return 0;
-    return writeRunResults(s, plan, *context, programs, loop.record());
+    const int code = writeRunResults(s, plan, *context, programs, loop.record());
+    if (s.renderdoc) {
+        if (Status captured = s.renderdoc->finish(); !captured) {
+            log::error(s.exe, ": ", captured.error());
+            return code == 0 ? 1 : code;
+        }
+    }
+    return code;
 }
 
 // The scene first: its settings are the parameters' starting values, which a preset and the command
@@ -177,7 +205,7 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
         std::cerr << exe << ": " << parsed.error() << "\n";
         return 2;
     }
-    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}, {}};
+    RunSession s{std::move(owned), exe, std::move(*parsed), {}, {}, 0, {}, args, {}, 0, {}, {}, {}};
     // The words a student reads (the panel, the facts' labels, the parameters' help), in --lang's language.
     if (auto loaded = Words::load(lessonSourceFolder(lesson.info()), s.options.language); !loaded) {
         std::cerr << exe << ": " << loaded.error() << "\n";

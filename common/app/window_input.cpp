@@ -47,6 +47,8 @@ constexpr WindowKey kWindowKeys[] = {
     {GLFW_KEY_F5, 0, "F5", "F5", "reload shaders (they also reload when saved)", &KeyPresses::reload},
     {GLFW_KEY_F12, 0, "F12", "F12", "save a screenshot to out/ (named by lesson and step, never replaced)",
      &KeyPresses::screenshot},
+    {GLFW_KEY_F9, 0, "F9", "F9",
+     "capture the next frame in RenderDoc (a run started with --renderdoc FILE.rdc)", &KeyPresses::renderdoc},
     {GLFW_KEY_ESCAPE, 0, "Esc", "Esc", "quit (while the cost panel measures: cancel the measure)",
      &KeyPresses::quit},
 };

@@ -20,7 +20,8 @@ struct KeyPresses {
     bool resetLayout = false, compare = false, findSpecial = false;
     bool pictureScale = false, measure = false;  // the frame budget's scale; the cost panel's sweep
     bool nextLesson = false, previousLesson = false;
-    bool quit = false;  // Esc: quits, or cancels the cost panel's sweep while one runs (FrameLoop)
+    bool renderdoc = false;  // a frame in RenderDoc (app/renderdoc_session.hpp)
+    bool quit = false;       // Esc: quits, or cancels the cost panel's sweep while one runs (FrameLoop)
     // Not keys of the app: a mouse button went down, Enter or Esc was pressed (either may open or close
     // one of the overlay's text fields, which decides whose the other keys are: FrameLoop::takeKeys).
     bool clicked = false, enterOrEscape = false;

@@ -8,6 +8,12 @@ namespace fx::gl {
 
 Framebuffer::Framebuffer(std::string_view label) : name_(createFramebuffer(label)), label_(label) {}
 
+void Framebuffer::relabel(std::string_view label) {
+    if (label == label_) return;
+    label_ = std::string(label);
+    name_.label(label);
+}
+
 void Framebuffer::attachColor(int index, const Texture& texture, int level) {
     glNamedFramebufferTexture(name(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(index), texture.name(),
                               level);

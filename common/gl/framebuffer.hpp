@@ -25,6 +25,8 @@ public:
 
     GLuint name() const { return name_.name(); }
     const std::string& label() const { return label_; }
+    // A framebuffer kept for textures whose names change (a pooled texture's) says what they hold now.
+    void relabel(std::string_view label);
 
 private:
     FramebufferName name_;

@@ -11,6 +11,16 @@ void labelObject(GLenum identifier, GLuint name, std::string_view label) {
     glObjectLabel(identifier, name, length, label.data());
 }
 
+std::string objectLabel(GLenum identifier, GLuint name) {
+    GLint maxLength = 0;
+    glGetIntegerv(GL_MAX_LABEL_LENGTH, &maxLength);
+    std::string label(std::size_t(std::max(maxLength, 1)), '\0');
+    GLsizei length = 0;
+    glGetObjectLabel(identifier, name, GLsizei(label.size()), &length, label.data());
+    label.resize(std::size_t(std::max(length, 0)));
+    return label;
+}
+
 namespace {
 
 // Every owner is made the same way: a DSA create call for one name, then its label.

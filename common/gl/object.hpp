@@ -1,6 +1,7 @@
 #pragma once
 // Move-only owners of GL names. Each kind of name has a small traits struct that says how to
 // delete it and which namespace glObjectLabel uses for it.
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -11,6 +12,8 @@ namespace fx::gl {
 
 // Gives a GL name a label that debuggers and KHR_debug messages show.
 void labelObject(GLenum identifier, GLuint name, std::string_view label);
+// The object's label as GL has it (empty when it has none).
+std::string objectLabel(GLenum identifier, GLuint name);
 
 template <class Traits>
 class Object {

@@ -4,10 +4,12 @@
 // captures read back.
 #include <glad/egl.h>
 
+#include <cstring>
 #include <vector>
 
 #include "base/log.hpp"
 #include "gl/context_guard.hpp"
+#include "gl/debug_output.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/texture.hpp"
 #include "platform/context.hpp"
@@ -67,13 +69,26 @@ public:
 
     Status setup(const std::string& kind, Size2D size) {
         if (auto status = finishSetup(kind); !status) return status;
+        frameTerminator_ = findFrameTerminator();
         resize(size);
         return Status::success();
     }
 
     Size2D framebufferSize() const override { return size_; }
     GLuint presentFramebuffer() const override { return target_.framebuffer.name(); }
-    void present() override { glFlush(); }
+    // Nothing is presented headless; a debugger that offers GL_GREMEDY_frame_terminator (RenderDoc,
+    // apitrace) is told here that a frame ended, which a swap would have told it.
+    // RenderDoc, told so, reads the default framebuffer that a surfaceless context lacks
+    // (GL_INVALID_FRAMEBUFFER_OPERATION): the frame's own errors are counted first, and the debugger's
+    // are not the lesson's.
+    void present() override {
+        glFlush();
+        if (!frameTerminator_) return;
+        gl::drainErrorFlags();
+        frameTerminator_();
+        while (glGetError() != GL_NO_ERROR) {
+        }
+    }
     void pollEvents() override {}
     bool shouldClose() const override { return false; }
     bool headless() const override { return true; }
@@ -84,6 +99,19 @@ public:
     }
 
 private:
+    using FrameTerminator = void (*)();
+    static FrameTerminator findFrameTerminator() {
+        GLint count = 0;
+        glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+        for (GLint i = 0; i < count; ++i) {
+            const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+            if (name && std::strcmp(name, "GL_GREMEDY_frame_terminator") == 0)
+                return reinterpret_cast<FrameTerminator>(eglGetProcAddress("glFrameTerminatorGREMEDY"));
+        }
+        return nullptr;
+    }
+
+    FrameTerminator frameTerminator_ = nullptr;
     EGLDisplay display_;
     EGLContext context_;
     EGLSurface surface_;

@@ -17,18 +17,20 @@ void GlPassExecutor::beginFrame(const FrameGraph&) {
 Result<GLuint> GlPassExecutor::framebufferFor(const Pass& pass, PassContext& ctx) {
     if (pass.writesPresentedOutput()) return options_.presentFramebuffer;
     Attachments key;
-    std::string label;
-    for (TextureHandle h : pass.colorAttachments()) {
-        key.colors.push_back(ctx.native(h));
-        label += (label.empty() ? "" : " + ") + ctx.texture(h).name;
-    }
+    for (TextureHandle h : pass.colorAttachments()) key.colors.push_back(ctx.native(h));
     if (auto depth = pass.depthAttachment()) {
         key.depth = ctx.native(*depth);
         key.depthStencil = hasStencil(ctx.texture(*depth).spec.format);
-        label += (label.empty() ? "" : " + ") + ctx.texture(*depth).name;
     }
     if (key.colors.empty() && key.depth == 0) return 0u;  // a compute or storage-only pass
+    // Named by its textures' labels, not this pass's names for them: the pool shares a texture between
+    // names (render/texture_pool.hpp), and the framebuffer serves every pass that draws into it.
+    std::string label;
+    for (GLuint color : key.colors)
+        label += (label.empty() ? "" : " + ") + gl::objectLabel(GL_TEXTURE, color);
+    if (key.depth != 0) label += (label.empty() ? "" : " + ") + gl::objectLabel(GL_TEXTURE, key.depth);
     auto it = framebuffers_.find(key);
+    if (it != framebuffers_.end()) it->second.relabel(label);
     if (it == framebuffers_.end()) {
         gl::Framebuffer fbo(label);
         for (std::size_t i = 0; i < key.colors.size(); ++i) {

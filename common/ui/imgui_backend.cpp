@@ -1,14 +1,17 @@
 #include "ui/imgui_backend.hpp"
 
 #include <imgui.h>
+
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <cstdint>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include "base/log.hpp"
 #include "gl/gl.hpp"
+#include "gl/object.hpp"
 // glad's EGL loader (loaded by the headless context) for eglGetProcAddress.
 #include <glad/egl.h>
 
@@ -41,7 +44,43 @@ void useContextLoader(GLFWwindow* window) {
     }
 }
 
+// The backend's objects as last labelled: each is labelled when it first shows up (a new name is a new
+// object: the font atlas is made again when the fonts change). Kept here rather than asked back with
+// glGetObjectLabel, which a debugger may answer with a name of its own ("Buffer 172").
+struct LabelledObjects {
+    GLint program = 0, vertices = 0, indices = 0, font = 0;
+};
+LabelledObjects labelled;
+
+void labelOnce(GLenum identifier, GLint name, GLint& last, const char* label) {
+    if (name <= 0 || name == last) return;
+    gl::labelObject(identifier, GLuint(name), label);
+    last = name;
+}
+
+// Runs inside the backend's RenderDrawData, with its program, vertex array and buffers bound.
+void labelBoundObjects(const ImDrawList*, const ImDrawCmd*) {
+    GLint program = 0, vertexArray = 0, vertices = 0, indices = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &vertices);
+    glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &indices);
+    labelOnce(GL_PROGRAM, program, labelled.program, "Dear ImGui: program");
+    labelOnce(GL_BUFFER, vertices, labelled.vertices, "Dear ImGui: vertices");
+    labelOnce(GL_BUFFER, indices, labelled.indices, "Dear ImGui: indices");
+    const auto font = GLint(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID));
+    labelOnce(GL_TEXTURE, font, labelled.font, "Dear ImGui: font atlas");
+    // The backend makes its vertex array anew every frame.
+    if (vertexArray > 0)
+        gl::labelObject(GL_VERTEX_ARRAY, GLuint(vertexArray), "Dear ImGui: vertex array (made every frame)");
+}
+
 }  // namespace
+
+void labelImGuiObjectsThisFrame() {
+    // The background list is drawn first; a list that holds only a callback is still drawn.
+    ImGui::GetBackgroundDrawList()->AddCallback(labelBoundObjects, nullptr);
+}
 
 ImGuiBackends startImGui(GLFWwindow* window) {
     ImGuiBackends started;
@@ -72,6 +111,7 @@ ImGuiBackends startImGui(GLFWwindow* window) {
 }
 
 void stopImGui(const ImGuiBackends& started) {
+    labelled = {};  // a new overlay's objects are new objects
     if (started.renderer) ImGui_ImplOpenGL3_Shutdown();
     if (started.platform) ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -22,6 +22,12 @@ struct ImGuiBackends {
 // Creates the ImGui context and starts the backends, logging what failed. window == nullptr:
 // headless, no platform backend (the overlay sets the display size itself).
 ImGuiBackends startImGui(GLFWwindow* window);
+// Dear ImGui's backend makes its GL objects without labels (its program, vertex and index buffers,
+// font texture, and a vertex array every frame). Call before ImGui::Render(): a draw callback, which
+// the backend runs with its own objects bound, labels each new one ("Dear ImGui: ..."), so a debugger
+// shows them by name from the frame they are made in. Its two shaders are deleted as soon as the
+// program is linked, before anything of ours runs: they stay unnamed.
+void labelImGuiObjectsThisFrame();
 // Stops what started and destroys the context.
 void stopImGui(const ImGuiBackends& started);
 

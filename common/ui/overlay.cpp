@@ -235,6 +235,7 @@ void Overlay::draw(const OverlayModel& m, int width, int height, double deltaSec
             shares_ = clampShares(shares_);
         }
     }
+    labelImGuiObjectsThisFrame();
     ImGui::Render();
     gl::DebugGroup group(kImGuiGroup);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -89,10 +89,11 @@ TextureHandle DeferredLighting::declarePositionError(FrameGraph& graph, const Sc
         glProgramUniformMatrix4fv(error->program(), glsl::kInverseViewProjectionLocation, 1, GL_FALSE,
                                   glm::value_ptr(inverse));
         GLuint position = g.position ? ctx.native(*g.position) : 0;
-        error->draw({ctx.native(g.albedo), ctx.native(g.normal), position, ctx.native(g.depth),
-                     ctx.native(reference)});
+        // The normal's unit stays empty: the shader never samples it, so the pass table does not say
+        // it reads it (RenderDoc's capture of the pass would show no such read).
+        error->draw({ctx.native(g.albedo), 0, position, ctx.native(g.depth), ctx.native(reference)});
     });
-    pass.read(g.albedo).read(g.normal).read(g.depth).read(reference);
+    pass.read(g.albedo).read(g.depth).read(reference);
     pass.setTaps(gbufferTaps(g));  // the normal is not read; the reference position is
     if (g.position) pass.read(*g.position);
     return pass.create("gbuffer.position_error", {TextureSize::output(), TextureFormat::RGBA16F, 1},

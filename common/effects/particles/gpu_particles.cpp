@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "base/log.hpp"
 #include "effects/particles/particles_bindings.hpp"
 #include "gl/debug_output.hpp"
 
@@ -50,6 +51,9 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
         const GpuEmitter& g = system.emitters()[e];
         const ParticleEmitter& em = system.setups()[e].emitter;
         const SpawnBatch& b = batches[e];
+        // One dispatch an emitter, all alike in a debugger's event list but for their group's name.
+        gl::DebugGroup group(cat("simulate emitter ", e + 1, " of ", system.emitters().size(),
+                                 em.name.empty() ? "" : cat(" (", em.name, ")"), ": ", g.ring.y, " slots"));
         // ring.z is the oldest slot after this frame's spawns; they start `count` slots before it.
         const GLuint head = GLuint((std::uint64_t(g.ring.z) + g.ring.y - b.count % g.ring.y) % g.ring.y);
         glProgramUniform1ui(sim, glsl::kSimulateFirstSlotLocation, g.ring.x);
@@ -75,7 +79,10 @@ void GpuParticles::simulate(const ParticleSystem& system, double dt, GLuint emit
     const GLuint compact = compact_.name();
     glUseProgram(compact);
     glProgramUniform1ui(compact, glsl::kCompactTotalSlotsLocation, capacity_);
-    glDispatchCompute(1, 1, 1);
+    {
+        gl::DebugGroup group("compact the live particles into the indirect draw");
+        glDispatchCompute(1, 1, 1);
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
 }

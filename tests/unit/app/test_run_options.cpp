@@ -143,20 +143,23 @@ TEST(RunOptions, HelpListsEveryFlagAndTheWindowKeys) {
         std::string flag = help.substr(start, help.find_first_of(" ,", start) - start);
         inHelp.insert(flag);
         // --all-steps goes with --capture DIR (AllStepsNeedsACaptureFolder).
-        auto o = flag == "--all-steps" ? parseRunOptions({flag, "--capture", "c"}) : parseRunOptions({flag});
+        // --renderdoc-open goes with --renderdoc FILE.rdc (RenderDocFlags).
+        auto o = flag == "--all-steps"        ? parseRunOptions({flag, "--capture", "c"})
+                 : flag == "--renderdoc-open" ? parseRunOptions({flag, "--renderdoc", "c.rdc"})
+                                              : parseRunOptions({flag});
         EXPECT_TRUE(o.ok() || o.error().rfind(flag + ": needs a value (", 0) == 0)
             << flag << ": " << (o.ok() ? "" : o.error());
     }
     EXPECT_EQ(inHelp,
               (std::set<std::string>{
-                  "--headless",      "--size",         "--frames",         "--step",         "--exercise",
-                  "--scene",         "--lang",         "--param",          "--preset",       "--capture",
-                  "--capture-float", "--report",       "--graph",          "--time-step",    "--seed",
-                  "--timing",        "--inspect",      "--overlay",        "--no-overlay",   "--bench",
-                  "--knob",          "--bench-frames", "--bench-values",   "--bench-out",    "--list-steps",
-                  "--list-params",   "--help",         "--press",          "--all-steps",    "--resize",
-                  "--picture-scale", "--aspect",       "--min-frame-time", "--resource-log", "--cost",
-                  "--dump-shaders"}));
+                  "--headless",      "--size",         "--frames",          "--step",          "--exercise",
+                  "--scene",         "--lang",         "--param",           "--preset",        "--capture",
+                  "--capture-float", "--report",       "--graph",           "--time-step",     "--seed",
+                  "--timing",        "--inspect",      "--overlay",         "--no-overlay",    "--bench",
+                  "--knob",          "--bench-frames", "--bench-values",    "--bench-out",     "--list-steps",
+                  "--list-params",   "--help",         "--press",           "--all-steps",     "--resize",
+                  "--picture-scale", "--aspect",       "--min-frame-time",  "--resource-log",  "--cost",
+                  "--dump-shaders",  "--renderdoc",    "--renderdoc-frame", "--renderdoc-open"}));
 }
 
 TEST(RunOptions, PictureScaleAspectAndASlowRendererImitated) {
@@ -348,4 +351,35 @@ TEST(RunOptions, EchoedValuesAreCutAndEscaped) {
     auto control = parseRunOptions({"--size", "1x1\n\x1b[2J"});
     ASSERT_FALSE(control.ok());
     EXPECT_NE(control.error().find("1x1\\n\\u001b[2J"), std::string::npos) << control.error();
+}
+
+TEST(RunOptions, RenderDocFlags) {
+    auto o = parseRunOptions({"--renderdoc", "out/06.rdc", "--renderdoc-frame", "2", "--renderdoc-open"});
+    ASSERT_TRUE(o.ok()) << o.error();
+    EXPECT_EQ(o->renderdoc, "out/06.rdc");
+    EXPECT_EQ(*o->renderdocFrame, 2);
+    EXPECT_TRUE(o->renderdocOpen);
+    EXPECT_FALSE(parseRunOptions({}).value().renderdocFrame);
+    // What RenderDoc's tools open, and nothing that would be silently ignored.
+    auto error = [](std::vector<std::string> args) {
+        auto parsed = parseRunOptions(args);
+        return parsed ? std::string() : parsed.error();
+    };
+    EXPECT_NE(error({"--renderdoc", "out/06.png"}).find("--renderdoc: expected a file name ending in .rdc"),
+              std::string::npos);
+    EXPECT_NE(error({"--renderdoc", ".rdc"}).find("ending in .rdc"), std::string::npos);
+    EXPECT_NE(error({"--renderdoc-frame", "2"}).find("--renderdoc-frame: needs --renderdoc FILE.rdc"),
+              std::string::npos);
+    EXPECT_NE(error({"--renderdoc-open"}).find("--renderdoc-open: needs --renderdoc"), std::string::npos);
+    EXPECT_NE(error({"--renderdoc", "a.rdc", "--renderdoc-frame", "0"}).find("from 1 to"), std::string::npos);
+    EXPECT_NE(error({"--renderdoc", "a.rdc", "--frames", "3", "--renderdoc-frame", "4"})
+                  .find("--renderdoc-frame: frame 4 of a run of 3 frames"),
+              std::string::npos);
+    EXPECT_NE(error({"--renderdoc", "a.rdc", "--bench"}).find("leave out --bench"), std::string::npos);
+    // The window's key, in --help and the Keys tab, and not F12 (fxlab's screenshot).
+    const std::string help = fx::runOptionsHelp("fxlab-06-bloom");
+    EXPECT_NE(help.find("\n  F9 [F9]"), std::string::npos) << help;
+    EXPECT_NE(help.find("RenderDoc"), std::string::npos);
+    EXPECT_TRUE(fx::keyPressNamed("F9").value().renderdoc);
+    EXPECT_FALSE(fx::keyPressNamed("F12").value().renderdoc);
 }

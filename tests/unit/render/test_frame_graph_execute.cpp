@@ -81,9 +81,9 @@ TEST(FrameGraphExecute, DisjointLifetimesShareOneTextureWithinAFrame) {
     EXPECT_EQ(seen["blur.c"], seen["blur.a"]);
     EXPECT_NE(seen["blur.b"], seen["blur.a"]);
     EXPECT_NE(seen["scene.color"], seen["blur.a"]);
-    // The reused texture carries the new resource's name for debuggers.
+    // The reused texture carries both resources' names for debuggers, true for every pass that uses it.
     ASSERT_EQ(gpu.relabelled.size(), 1u);
-    EXPECT_EQ(gpu.relabelled[0], (std::pair<NativeTexture, std::string>{seen["blur.a"], "blur.c"}));
+    EXPECT_EQ(gpu.relabelled[0], (std::pair<NativeTexture, std::string>{seen["blur.a"], "blur.a | blur.c"}));
     EXPECT_EQ(pool.peakBytes(), 3 * kHdrBytes);
 }
 

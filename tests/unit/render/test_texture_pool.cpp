@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "fake_gpu.hpp"
 #include "render/texture_pool.hpp"
 
@@ -19,8 +22,46 @@ TEST(TexturePool, ReleasedTextureServesTheNextRequestWithTheSameKey) {
     NativeTexture b = pool.acquire(kHdr, "b");
     EXPECT_EQ(a, b);
     EXPECT_EQ(gpu.created.size(), 1u);
+    // Both names, in order: a debugger keeps one label a texture, and it must be true for both uses.
     ASSERT_EQ(gpu.relabelled.size(), 1u);
-    EXPECT_EQ(gpu.relabelled[0], (std::pair<NativeTexture, std::string>{a, "b"}));
+    EXPECT_EQ(gpu.relabelled[0], (std::pair<NativeTexture, std::string>{a, "a | b"}));
+}
+
+TEST(TexturePool, ASharedTextureKeepsEveryNameItHoldsAndAFrameLikeTheLastRelabelsNothing) {
+    FakeAllocator gpu;
+    TexturePool pool(gpu);
+    auto frame = [&](std::vector<std::string> names) {
+        NativeTexture used = 0;
+        for (const std::string& name : names) {
+            used = pool.acquire(kHdr, name);
+            pool.release(used);
+        }
+        pool.endFrame();
+        return used;
+    };
+    NativeTexture t = frame({"bloom.down[0]", "bloom.flicker"});
+    ASSERT_EQ(gpu.relabelled.size(), 1u);
+    EXPECT_EQ(gpu.relabelled[0].second, "bloom.down[0] | bloom.flicker");
+    // Frame after frame the same: the label is set, and no capture sees it change.
+    EXPECT_EQ(frame({"bloom.down[0]", "bloom.flicker"}), t);
+    EXPECT_EQ(frame({"bloom.down[0]", "bloom.flicker"}), t);
+    EXPECT_EQ(gpu.relabelled.size(), 1u);
+    // Another step: a name no longer held leaves the label at the frame's end.
+    EXPECT_EQ(frame({"bloom.down[0]"}), t);
+    ASSERT_EQ(gpu.relabelled.size(), 2u);
+    EXPECT_EQ(gpu.relabelled[1], (std::pair<NativeTexture, std::string>{t, "bloom.down[0]"}));
+    EXPECT_EQ(gpu.created.size(), 1u);
+}
+
+TEST(TexturePool, ATextureHeldAcrossFramesKeepsItsName) {
+    FakeAllocator gpu;
+    TexturePool pool(gpu);
+    NativeTexture held = pool.acquire(kHdr, "history");
+    pool.endFrame();
+    pool.endFrame();
+    pool.release(held);
+    EXPECT_EQ(pool.acquire(kHdr, "history"), held);
+    EXPECT_TRUE(gpu.relabelled.empty());
 }
 
 TEST(TexturePool, DifferentKeysOrOverlappingUseGetDifferentTextures) {
