@@ -1,4 +1,5 @@
 #include "app/runner.hpp"
+#include "app/process_start.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -167,7 +168,7 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
     Lesson& lesson = *owned;
     lesson.setInfo(std::move(info));
     std::string exe = executableName(lesson.info());
-    std::vector<std::string> args(argv + 1, argv + argc);
+    std::vector<std::string> args = programArguments(argc, argv);
     auto parsed = parseRunOptions(args, int(lesson.steps().size()));
     if (!parsed) {
         std::cerr << exe << ": " << parsed.error() << "\n";

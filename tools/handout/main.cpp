@@ -5,6 +5,7 @@
 
 #include "app/handout_build.hpp"
 #include "app/handout_options.hpp"
+#include "app/process_start.hpp"
 #include "base/output_folder.hpp"
 
 namespace {
@@ -19,7 +20,7 @@ void onSignal(int) {
 
 int main(int argc, char** argv) {
     using namespace fx::handout;
-    auto line = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    auto line = parseCommandLine(fx::programArguments(argc, argv));
     if (!line) {
         std::cerr << "fxlab-handout: " << line.error() << "\n";
         return 2;
