@@ -93,7 +93,11 @@ Result<std::optional<Found>> lookAt(const fs::path& path, const fs::path& shown)
     BY_HANDLE_FILE_INFORMATION info{};
     if (!GetFileInformationByHandle(h, &info))
         return Error{cat(shown.string(), ": cannot look at it (", windows::lastErrorText(), ")")};
-    return std::optional<Found>(Found{info.dwFileAttributes, GetFileType(h)});
+    Found found{info.dwFileAttributes, GetFileType(h)};
+    // Wine reports a symbolic link's reparse attribute by name only, not through the link's own handle.
+    if (const DWORD byName = GetFileAttributesW(path.c_str()); byName != INVALID_FILE_ATTRIBUTES)
+        found.attributes |= byName & FILE_ATTRIBUTE_REPARSE_POINT;
+    return std::optional<Found>(found);
 }
 
 std::string describe(const Found& found) {
