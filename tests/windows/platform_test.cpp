@@ -133,7 +133,8 @@ TEST_F(JapaneseFolder, NeverWritesThroughALink) {
     ASSERT_TRUE(writeFileAtomically(victim, std::string_view("the user's")).ok());
     if (!CreateSymbolicLinkW((dir_ / "link.txt").c_str(), victim.c_str(), 0) &&
         !CreateSymbolicLinkW((dir_ / "link.txt").c_str(), victim.c_str(), 0x2 /* unprivileged */))
-        GTEST_SKIP() << "no symbolic links here (Wine does not make them; Windows needs Developer Mode)";
+        GTEST_SKIP()
+            << "no symbolic links here (Windows makes them only in Developer Mode or as administrator)";
     const DWORD attributes = GetFileAttributesW((dir_ / "link.txt").c_str());
     const bool seenAsLink =
         attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_REPARSE_POINT);
