@@ -22,8 +22,8 @@ TEST(LessonSwitch, TheNeighboursAreTheLessonExecutablesInNumberOrder) {
     const fs::path dir = fs::temp_directory_path() / "fxlab-lesson-switch-test";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const std::string name : {"fxlab-02-b" + kExe, "fxlab-01-a" + kExe, "fxlab-10-c" + kExe,
-                                   std::string("fxlab-notes.txt"), std::string("fxlab-03-d.log")}) {
+    for (const std::string& name : {"fxlab-02-b" + kExe, "fxlab-01-a" + kExe, "fxlab-10-c" + kExe,
+                                    std::string("fxlab-notes.txt"), std::string("fxlab-03-d.log")}) {
         std::ofstream(dir / name) << "x";
         fs::permissions(dir / name, fs::perms::owner_all);
     }
