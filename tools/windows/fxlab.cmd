@@ -4,6 +4,8 @@ rem   fxlab list | fxlab run 01 [options] | fxlab exercise list | fxlab exercise
 rem   fxlab check 04 1 | fxlab check --all | fxlab handout 06 [--lang ja]
 setlocal EnableExtensions
 set "HERE=%~dp0"
+rem The whole command line as typed: %1..%9 would split "--param name=value" at the "=".
+set ALL=%*
 set "COMMAND=%~1"
 if "%COMMAND%"=="" goto usage
 shift
@@ -16,13 +18,13 @@ echo fxlab: unknown command "%COMMAND%" 1>&2
 goto usage
 
 :list
-for %%f in ("%HERE%fxlab-[0-9][0-9]-*.exe") do echo   %%~nf
+for /f "delims=" %%f in ('dir /b "%HERE%fxlab-??-*.exe" 2^>nul') do echo   %%~nf
 exit /b 0
 
 :run
-call :find "%~1" || exit /b 2
-shift
-call :rest %1 %2 %3 %4 %5 %6 %7 %8 %9
+call :find "%~1"
+if errorlevel 1 exit /b 2
+call :after 2
 "%LESSON%" %REST%
 exit /b %ERRORLEVEL%
 
@@ -30,14 +32,16 @@ exit /b %ERRORLEVEL%
 if /i "%~1"=="list" ( "%HERE%fxlab-exercise.exe" list & exit /b %ERRORLEVEL% )
 if /i not "%~1"=="start" goto usage
 if "%~3"=="" goto usage
-"%HERE%fxlab-exercise.exe" start %2 %3 >nul || exit /b 1
-call :find "%~2" || exit /b 2
+"%HERE%fxlab-exercise.exe" start %2 %3 >nul
+if errorlevel 1 exit /b 1
+call :find "%~2"
+if errorlevel 1 exit /b 2
 set /a NUMBER=1%~3 %% 100
 "%LESSON%" --exercise %NUMBER%
 exit /b %ERRORLEVEL%
 
 :check
-call :rest %1 %2 %3 %4 %5 %6 %7 %8 %9
+call :after 1
 "%HERE%fxlab-exercise.exe" check %REST%
 exit /b %ERRORLEVEL%
 
@@ -52,7 +56,8 @@ if "%ARG:~0,1%"=="-" (
   if /i "%ARG%"=="--lang" ( set OPTIONS=%OPTIONS% %2 & shift )
   if /i "%ARG%"=="--out" ( set OPTIONS=%OPTIONS% %2 & shift )
 ) else (
-  call :find "%ARG%" || exit /b 2
+  call :find "%ARG%"
+  if errorlevel 1 exit /b 2
   call set LESSONS=%%LESSONS%% "%%LESSON%%"
 )
 shift
@@ -61,28 +66,32 @@ goto handout_next
 "%HERE%fxlab-handout.exe" %OPTIONS% %LESSONS%
 exit /b %ERRORLEVEL%
 
+rem (Its callers test errorlevel on the next line: Wine's cmd mistakes "call :find ... || ..." for a failure.)
 rem :find NUMBER-or-NAME sets LESSON to the lesson's .exe (01, 1, bloom, 06-bloom).
 :find
 set "WANT=%~1"
 set "LESSON="
 if "%WANT%"=="" goto find_failed
 if "%WANT:~1%"=="" set "WANT=0%WANT%"
-for %%f in ("%HERE%fxlab-%WANT%-*.exe") do set "LESSON=%%~ff"
-if not defined LESSON for %%f in ("%HERE%fxlab-*-%WANT%.exe" "%HERE%fxlab-%WANT%.exe") do if exist "%%~ff" set "LESSON=%%~ff"
+rem dir /b, not a for over a quoted pattern: Wine's cmd matches no wildcard in a quoted absolute path.
+for /f "delims=" %%f in ('dir /b "%HERE%fxlab-%WANT%-*.exe" 2^>nul') do set "LESSON=%HERE%%%f"
+if defined LESSON exit /b 0
+for /f "delims=" %%f in ('dir /b "%HERE%fxlab-??-%WANT%.exe" 2^>nul') do set "LESSON=%HERE%%%f"
+if defined LESSON exit /b 0
+if exist "%HERE%fxlab-%WANT%.exe" set "LESSON=%HERE%fxlab-%WANT%.exe"
 if defined LESSON exit /b 0
 :find_failed
 echo fxlab: no lesson "%~1"; these exist: 1>&2
-for %%f in ("%HERE%fxlab-[0-9][0-9]-*.exe") do echo   %%~nf 1>&2
+for /f "delims=" %%f in ('dir /b "%HERE%fxlab-??-*.exe" 2^>nul') do echo   %%~nf 1>&2
 exit /b 1
 
-rem :rest ARG... sets REST to the arguments given, quotes kept.
-:rest
+rem :after N sets REST to the command line after its first N words, as typed (quotes and "=" kept).
+:after
 set "REST="
-:rest_next
-if "%~1"=="" exit /b 0
-set REST=%REST% %1
-shift
-goto rest_next
+if "%~1"=="1" for /f "tokens=1,*" %%a in ("%ALL:"=""%") do set "REST=%%b"
+if "%~1"=="2" for /f "tokens=1,2,*" %%a in ("%ALL:"=""%") do set "REST=%%c"
+if defined REST set "REST=%REST:""="%"
+exit /b 0
 
 :usage
 echo usage: fxlab ^<command^> [args]
