@@ -66,7 +66,9 @@ Status OverlayFonts::prepare(const std::vector<std::string_view>& texts, float s
         config.PixelSnapH = true;
         config.GlyphOffset.y = 1.0f;
         config.OversampleH = 1;  // the atlas is sampled at whole pixels; no sub-pixel positions
-        if (!io.Fonts->AddFontFromFileTTF(file.c_str(), kMergedPixels * scale, &config, ranges_.data())) {
+        // ImGui takes the name in UTF-8 (and opens it with the wide functions on Windows).
+        const std::string name = file.string();
+        if (!io.Fonts->AddFontFromFileTTF(name.c_str(), kMergedPixels * scale, &config, ranges_.data())) {
             io.Fonts->Clear();
             io.Fonts->AddFontDefault(&base);
             ranges_.clear();
