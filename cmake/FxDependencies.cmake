@@ -1,4 +1,13 @@
 # Every third-party piece comes from Debian's packages (see ./fxlab setup for the package names).
+# The Windows cross-build (cmake/windows/) builds the same pieces from Debian's sources instead.
+# Visual Studio takes them from vcpkg (vcpkg.json; untested here).
+if(WIN32 AND CMAKE_CROSSCOMPILING)
+  include(FxWindowsDependencies)
+  return()
+elseif(MSVC)
+  include(FxVcpkgDependencies)
+  return()
+endif()
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)
 find_package(glfw3 3.3 REQUIRED)

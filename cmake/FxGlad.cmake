@@ -20,7 +20,12 @@ if(NOT EXISTS "${FX_GLAD_DIR}/src/gl.c" OR NOT "${FX_GLAD_STAMP}" STREQUAL "${FX
   set(FX_GLAD_LAST_STAMP "${FX_GLAD_STAMP}" CACHE INTERNAL "arguments of the last glad run")
 endif()
 
-add_library(fx_glad STATIC "${FX_GLAD_DIR}/src/gl.c" "${FX_GLAD_DIR}/src/egl.c")
+# Windows has no EGL (its headless context is a hidden window): GL's loader only.
+if(WIN32)
+  add_library(fx_glad STATIC "${FX_GLAD_DIR}/src/gl.c")
+else()
+  add_library(fx_glad STATIC "${FX_GLAD_DIR}/src/gl.c" "${FX_GLAD_DIR}/src/egl.c")
+endif()
 target_include_directories(fx_glad SYSTEM PUBLIC "${FX_GLAD_DIR}/include")
 target_link_libraries(fx_glad PUBLIC ${CMAKE_DL_LIBS})
 set_target_properties(fx_glad PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -32,5 +32,11 @@ function(fxlab_add_lesson dir)
   add_executable(${exe_name} ${sources} ${headers} ${shown})
   target_compile_definitions(${exe_name} PRIVATE FXLAB_LESSON_NUMBER=${number} FXLAB_LESSON_SLUG="${slug}")
   target_link_libraries(${exe_name} PRIVATE fxcommon fx_warnings)
+  # Windows: a GUI program, so that a double-click opens the lesson's window and no console beside it
+  # (from a console it still writes there: app/process_start_win.cpp).
+  set_target_properties(${exe_name} PROPERTIES WIN32_EXECUTABLE ON)
+  if(MSVC)  # a GUI program whose entry is still main() (mingw-w64 does this by itself)
+    target_link_options(${exe_name} PRIVATE /ENTRY:mainCRTStartup)
+  endif()
   set_property(GLOBAL APPEND PROPERTY FXLAB_LESSON_TARGETS ${exe_name})
 endfunction()

@@ -3,10 +3,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include <unistd.h>
-
 #include "app/bench.hpp"
 #include "app/lesson_listing.hpp"
+#include "app/process_start.hpp"
 #include "base/log.hpp"
 #include "gl/debug_output.hpp"
 
@@ -41,7 +40,7 @@ int runBenchMode(RunSession& s, FrameRenderer& renderer, Context& context) {
     int step = !o.step && lesson.benchStep() >= 0 ? lesson.benchStep() : s.step;
     SweepOptions options{o.benchKnob, o.benchFrames, o.benchValues, {}};
     // On a terminal, one line that says which setting is being measured (a sweep takes minutes).
-    if (isatty(STDERR_FILENO)) {
+    if (standardErrorIsTerminal()) {
         options.progress = [](const SweepProgress& p) {
             if (p.next.empty()) {
                 std::fprintf(stderr, "\r\033[Kmeasured %d settings\n", p.total);

@@ -1,76 +1,50 @@
+// The registry of work a child can do, and the child's side of the Windows way (child_watchdog.hpp).
 #include "app/child_watchdog.hpp"
 
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include <map>
+#include <mutex>
 
-#include <cerrno>
-#include <chrono>
-#include <cstdio>
-#include <cstring>
-
+#include "base/file_io.hpp"
 #include "base/log.hpp"
 
 namespace fx {
+namespace {
 
-ChildOutcome runInChildWithin(const std::function<std::string()>& work, double seconds) {
-    ChildOutcome outcome;
-    int fds[2];
-    if (pipe(fds) != 0) {
-        outcome.reason = cat("no pipe: ", std::strerror(errno));
-        return outcome;
+std::mutex& registryMutex() {
+    static std::mutex m;
+    return m;
+}
+std::map<std::string, ChildWork>& registry() {
+    static std::map<std::string, ChildWork> works;
+    return works;
+}
+
+}  // namespace
+
+void registerChildWork(const std::string& name, ChildWork work) {
+    std::lock_guard lock(registryMutex());
+    registry()[name] = std::move(work);
+}
+
+const ChildWork* detail::findChildWork(const std::string& name) {
+    std::lock_guard lock(registryMutex());
+    auto it = registry().find(name);
+    return it == registry().end() ? nullptr : &it->second;
+}
+
+std::optional<int> runChildWorkIfAsked(const std::vector<std::string>& arguments) {
+    if (arguments.size() < 2 || arguments[0] != detail::kChildFlag) return std::nullopt;
+    const ChildWork* work = detail::findChildWork(arguments[1]);
+    if (!work) {
+        log::error(detail::kChildFlag, ": no work named \"", arguments[1], "\"");
+        return 2;
     }
-    std::fflush(nullptr);  // what is buffered would be written twice
-    const pid_t child = fork();
-    if (child < 0) {
-        outcome.reason = cat("fork failed: ", std::strerror(errno));
-        close(fds[0]);
-        close(fds[1]);
-        return outcome;
+    const std::string answer = (*work)(std::vector<std::string>(arguments.begin() + 2, arguments.end()));
+    if (Status written = writeStandardOutput(answer); !written) {
+        log::error(written.error());
+        return 1;
     }
-    if (child == 0) {
-        close(fds[0]);
-        const std::string answer = work();
-        std::size_t written = 0;
-        while (written < answer.size()) {
-            const ssize_t n = write(fds[1], answer.data() + written, answer.size() - written);
-            if (n <= 0) break;
-            written += std::size_t(n);
-        }
-        _exit(0);  // no destructors of the parent's objects, no atexit handlers twice
-    }
-    close(fds[1]);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    bool timedOut = false;
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) {
-            timedOut = true;
-            break;
-        }
-        pollfd fd{fds[0], POLLIN, 0};
-        if (poll(&fd, 1, int(left.count())) <= 0) continue;  // the time is up, or a signal came
-        char buffer[4096];
-        const ssize_t n = read(fds[0], buffer, sizeof buffer);
-        if (n <= 0) break;  // the child closed its end: done (or gone)
-        outcome.answer.append(buffer, std::size_t(n));
-    }
-    close(fds[0]);
-    if (timedOut) kill(child, SIGKILL);  // our own child, by its id
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (timedOut) {
-        outcome.kind = ChildOutcome::Kind::timedOut;
-    } else if (WIFSIGNALED(status)) {
-        outcome.kind = ChildOutcome::Kind::crashed;
-        outcome.reason = cat("signal ", WTERMSIG(status));
-    } else {
-        outcome.kind = ChildOutcome::Kind::finished;
-    }
-    return outcome;
+    return 0;
 }
 
 }  // namespace fx

@@ -10,6 +10,8 @@
 
 #include "base/file_io.hpp"
 #include "base/paths.hpp"
+#include "base/user_folders.hpp"
+#include "base/utf8_path.hpp"
 #include "scene/json_field_reader.hpp"
 
 namespace fx {
@@ -196,8 +198,8 @@ Result<Exercise> findExercise(const std::vector<Exercise>& all, int lesson, int 
 }
 
 fs::path studentRoot() {
-    if (const char* dir = std::getenv("FXLAB_EXERCISES"); dir && *dir) return dir;
-    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / "fxlab-exercises";
+    if (const char* dir = std::getenv("FXLAB_EXERCISES"); dir && *dir) return pathFromUtf8(dir);
+    if (auto home = userHomeFolder()) return *home / "fxlab-exercises";
     return fs::current_path() / "fxlab-exercises";
 }
 

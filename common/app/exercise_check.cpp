@@ -12,6 +12,7 @@
 #include "app/exercise_scene_check.hpp"
 #include "base/log.hpp"
 #include "base/words.hpp"
+#include "base/utf8_path.hpp"
 #include "gl/debug_output.hpp"
 #include "gl/framebuffer.hpp"
 #include "gl/program.hpp"
@@ -279,6 +280,30 @@ Result<ExerciseVerdict> verdictFromJson(const std::string& text) {
     }
 }
 
+void registerExerciseCheckWork() {
+    registerChildWork(kExerciseCheckWork, [](const std::vector<std::string>& arguments) {
+        // The child: its own headless context, the check, the verdict as text.
+        ExerciseVerdict verdict;
+        if (arguments.size() != 2) {
+            verdict.error = verdict.message = "the check's child was started without an exercise and a file";
+            return verdictJson(verdict);
+        }
+        auto exercise = loadExercise(pathFromUtf8(arguments[0]));
+        if (!exercise) {
+            verdict.error = verdict.message = exercise.error();
+            return verdictJson(verdict);
+        }
+        ContextOptions options;
+        options.size = {16, 16};
+        options.title = cat("fxlab check ", exercise->id());
+        if (auto context = createHeadlessContext(options))
+            verdict = checkExercise(*exercise, pathFromUtf8(arguments[1]));
+        else
+            verdict.error = verdict.message = cat("no GL context for the check: ", context.error());
+        return verdictJson(verdict);
+    });
+}
+
 ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const fs::path& studentFile, double seconds) {
     if (auto notOwn = whyNotTheStudentsOwn(studentFile)) {
         ExerciseVerdict refused;
@@ -287,20 +312,9 @@ ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const fs::path& s
         refused.error = refused.message = *notOwn;
         return refused;
     }
-    const ChildOutcome outcome = runInChildWithin(
-        [&] {
-            // The child: its own headless context, the check, the verdict as text.
-            ContextOptions options;
-            options.size = {16, 16};
-            options.title = cat("fxlab check ", exercise.id());
-            ExerciseVerdict verdict;
-            if (auto context = createHeadlessContext(options))
-                verdict = checkExercise(exercise, studentFile);
-            else
-                verdict.error = verdict.message = cat("no GL context for the check: ", context.error());
-            return verdictJson(verdict);
-        },
-        seconds);
+    registerExerciseCheckWork();
+    const ChildOutcome outcome =
+        runInChildWithin(kExerciseCheckWork, {exercise.folder.string(), studentFile.string()}, seconds);
     ExerciseVerdict failed;
     failed.measure = exercise.measure;
     failed.tolerance = exercise.tolerance;

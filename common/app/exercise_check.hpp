@@ -39,6 +39,10 @@ ExerciseVerdict checkExercise(const Exercise& exercise, const std::filesystem::p
 std::string verdictSummary(const ExerciseVerdict& verdict);
 
 // checkExercise in a child process that gets `seconds` to finish.
+// The child's work of checkExerciseGuarded, by name (app/child_watchdog.hpp); a program that grades
+// calls registerExerciseCheckWork, then runChildWorkIfAsked, first thing in main().
+inline constexpr const char* kExerciseCheckWork = "check-exercise";
+void registerExerciseCheckWork();
 ExerciseVerdict checkExerciseGuarded(const Exercise& exercise, const std::filesystem::path& studentFile,
                                      double seconds);
 

@@ -1,9 +1,5 @@
 #include "app/handout_io.hpp"
 
-#include <cstdlib>
-
-#include <unistd.h>
-
 #include "app/lesson_switch.hpp"
 #include "base/file_io.hpp"
 #include "base/log.hpp"
@@ -55,20 +51,6 @@ Status runLogged(const fs::path& program, const std::vector<std::string>& args, 
     if (*code != 0)
         return Error{cat(what, " failed (exit code ", *code, "); the end of its output:\n", logTail(log))};
     return Status::success();
-}
-
-fs::path findProgram(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    const std::string dirs = path ? path : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        std::size_t end = dirs.find(':', start);
-        if (end == std::string::npos) end = dirs.size();
-        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
-        if (end > start && ::access(candidate.c_str(), X_OK) == 0) return candidate;
-        start = end + 1;
-    }
-    return {};
 }
 
 Status moveFile(const fs::path& from, const fs::path& to) {

@@ -26,7 +26,7 @@ Status runLogged(const std::filesystem::path& program, const std::vector<std::st
                  const std::filesystem::path& log, const std::string& what);
 // The last `lines` lines of a log, for an error message.
 std::string logTail(const std::filesystem::path& log, int lines = 12);
-// A program on PATH ("dot"), or empty.
+// A program on PATH ("dot"), or empty (Windows: PATH split at ";", each of PATHEXT tried: "dot.exe").
 std::filesystem::path findProgram(const std::string& name);
 
 // A file written by the app (a capture) into the handout: renamed, so it stays whole.

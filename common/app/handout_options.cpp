@@ -5,6 +5,7 @@
 
 #include "app/lesson_text_files.hpp"
 #include "base/log.hpp"
+#include "base/utf8_path.hpp"
 
 namespace fx::handout {
 namespace {
@@ -79,10 +80,10 @@ Result<CommandLine> parseCommandLine(const std::vector<std::string>& args) {
             line.options.languages = *list;
         } else if (a == "--out") {
             if (value.empty()) return Error{"--out: needs a folder"};
-            line.out = value;
+            line.out = pathFromUtf8(value);
         } else if (a == "--bench-dir") {
             if (value.empty()) return Error{"--bench-dir: needs a folder"};
-            line.options.benchRoot = value;
+            line.options.benchRoot = pathFromUtf8(value);
         } else if (a == "--size") {
             const std::size_t x = value.find('x');
             auto w = wholeNumber(std::string_view(value).substr(0, x), 1, 8192);

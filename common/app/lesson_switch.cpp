@@ -1,19 +1,10 @@
 #include "app/lesson_switch.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <set>
-
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "app/run_options.hpp"
 #include "base/log.hpp"
-
-extern char** environ;
 
 namespace fx {
 
@@ -39,16 +30,6 @@ std::vector<std::string> without(const std::vector<std::string>& args, const std
     return kept;
 }
 
-std::vector<char*> argv(const fs::path& executable, const std::vector<std::string>& args,
-                        std::string& program) {
-    program = executable.string();
-    std::vector<char*> v;
-    v.push_back(program.data());
-    for (const std::string& a : args) v.push_back(const_cast<char*>(a.c_str()));
-    v.push_back(nullptr);
-    return v;
-}
-
 }  // namespace
 
 bool isLessonExecutableName(const std::string& name) {
@@ -63,8 +44,7 @@ std::vector<fs::path> lessonExecutables(const fs::path& folder) {
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
         const std::string name = e.path().filename().string();
-        if (!isLessonExecutableName(name) || !e.is_regular_file(ec)) continue;
-        if ((e.status(ec).permissions() & fs::perms::owner_exec) == fs::perms::none) continue;
+        if (!isLessonExecutableName(name) || !isRunnableFile(e)) continue;
         found.push_back(e.path());
     }
     std::sort(found.begin(), found.end(),
@@ -75,7 +55,7 @@ std::vector<fs::path> lessonExecutables(const fs::path& folder) {
 std::optional<fs::path> neighbourIn(const std::vector<fs::path>& executables, const std::string& current,
                                     int direction) {
     auto it = std::find_if(executables.begin(), executables.end(),
-                           [&](const fs::path& p) { return p.filename() == current; });
+                           [&](const fs::path& p) { return programName(p) == current; });
     if (it == executables.end()) return std::nullopt;
     const auto index = std::distance(executables.begin(), it) + direction;
     if (index < 0 || index >= std::ssize(executables)) return std::nullopt;
@@ -108,42 +88,6 @@ std::vector<std::string> stepCaptureArguments(const std::vector<std::string>& ar
                           (folder / "graph.dot").string()})
         one.push_back(std::move(a));
     return one;
-}
-
-Error execLesson(const fs::path& executable, const std::vector<std::string>& args) {
-    std::string program;
-    std::vector<char*> v = argv(executable, args, program);
-    execv(program.c_str(), v.data());
-    return Error{cat("could not start ", program, ": ", std::strerror(errno))};
-}
-
-Result<int> runAndWait(const fs::path& executable, const std::vector<std::string>& args,
-                       const fs::path& output) {
-    std::string program;
-    std::vector<char*> v = argv(executable, args, program);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    if (!output.empty()) {
-        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    }
-    pid_t child = 0;
-    int error = posix_spawn(&child, program.c_str(), &actions, nullptr, v.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) return Error{cat("could not start ", program, ": ", std::strerror(error))};
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0) {
-        if (errno != EINTR) return Error{cat("waiting for ", program, ": ", std::strerror(errno))};
-    }
-    if (WIFEXITED(status)) return WEXITSTATUS(status);
-    return Error{cat(program, " ended by signal ", WTERMSIG(status))};
-}
-
-fs::path runningExecutable() {
-    std::error_code ec;
-    fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    return ec ? fs::path() : self;
 }
 
 }  // namespace fx

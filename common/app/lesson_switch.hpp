@@ -2,8 +2,9 @@
 // Moving between lessons in class while each lesson stays its own executable: Page Down / Page Up end
 // this run and start the neighbouring lesson's executable (the next fxlab-NN-* beside this one, in
 // number order) in its place, with the same window size and the flags that mean the same to every
-// lesson. The process is replaced (exec), so the teacher sees one window close and the next open at
-// the same size; nothing of one lesson's GL state can leak into the next.
+// lesson. The process is replaced (exec; Windows, which has no exec, starts the neighbour and ends this
+// one), so the teacher sees one window close and the next open at the same size; nothing of one
+// lesson's GL state can leak into the next (lesson_switch_posix.cpp, lesson_switch_win.cpp).
 //
 // --all-steps runs this executable once per step the same way (as a child, waiting for each), so a
 // step's captures are exactly what `--step K --capture DIR/step-K` gives.
@@ -19,6 +20,11 @@ namespace fx {
 
 // Whether a file name is a lesson executable's: fxlab-NN-<name>.
 bool isLessonExecutableName(const std::string& name);
+
+// Whether `entry` is a program this system runs: an executable regular file (POSIX), a .exe (Windows).
+bool isRunnableFile(const std::filesystem::directory_entry& entry);
+// A program's name without the system's suffix: "fxlab-05-radial-blur" (Windows: of "...blur.exe").
+std::string programName(const std::filesystem::path& executable);
 
 // The lesson executables in `folder` (fxlab-NN-name, executable regular files), in number order.
 std::vector<std::filesystem::path> lessonExecutables(const std::filesystem::path& folder);
@@ -47,7 +53,7 @@ Error execLesson(const std::filesystem::path& executable, const std::vector<std:
 Result<int> runAndWait(const std::filesystem::path& executable, const std::vector<std::string>& args,
                        const std::filesystem::path& output = {});
 
-// This process's executable (/proc/self/exe).
+// This process's executable (/proc/self/exe; Windows: GetModuleFileNameW).
 std::filesystem::path runningExecutable();
 
 }  // namespace fx

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <set>
@@ -12,6 +13,7 @@
 #include "app/picture_scale.hpp"
 #include "base/log.hpp"
 #include "base/message_text.hpp"
+#include "base/utf8_path.hpp"
 #include "render/frame_report.hpp"
 #include "scene/closest_name.hpp"
 
@@ -42,9 +44,9 @@ struct Flag {
 
 // --- What the values may be: the parse and range check of each kind of value ---
 
-Result<long> parseWhole(std::string_view text, long min, long max, std::string_view flag,
-                        std::string_view what) {
-    long value = 0;
+Result<std::int64_t> parseWhole(std::string_view text, std::int64_t min, std::int64_t max,
+                                std::string_view flag, std::string_view what) {
+    std::int64_t value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max) {
         return Error{
@@ -62,7 +64,8 @@ Apply set(T RunOptions::*field, T value) {
 }
 
 // A whole number from `min` to `max` (`what` names it: "a frame count"), handed to `store`.
-Apply whole(long min, long max, std::string what, std::function<void(RunOptions&, long)> store) {
+Apply whole(std::int64_t min, std::int64_t max, std::string what,
+            std::function<void(RunOptions&, std::int64_t)> store) {
     return [=](RunOptions& o, const FlagUse& use) -> Status {
         auto n = parseWhole(use.value, min, max, use.flag, what);
         if (!n) return Error{n.error()};
@@ -76,7 +79,10 @@ template <class Field>
 Apply nonEmpty(Field RunOptions::*field, std::string noun) {
     return [=](RunOptions& o, const FlagUse& use) -> Status {
         if (use.value.empty()) return Error{cat(use.flag, ": needs ", noun)};
-        o.*field = use.value;
+        if constexpr (std::is_same_v<Field, std::filesystem::path>)
+            o.*field = pathFromUtf8(use.value);
+        else
+            o.*field = use.value;
         return Status::success();
     };
 }
@@ -216,7 +222,7 @@ Status addPress(RunOptions& o, const FlagUse& use) {
         return Error{cat(use.flag, ": no key named \"", excerpt(key), "\"",
                          near ? cat(" (did you mean ", *near, "?)") : "", "; the keys: ", list)};
     }
-    long frame = 0;
+    std::int64_t frame = 0;
     if (at != std::string::npos) {
         auto n =
             parseWhole(std::string_view(v).substr(at + 1), 0, 1000000, use.flag, "a frame number after @");
@@ -273,7 +279,8 @@ const std::vector<Flag>& flags() {
         {.name = "--frames",
          .value = "N",
          .help = "frames to render, then exit (default 3 headless; a window runs until closed)",
-         .apply = whole(1, 1000000, "a frame count", [](RunOptions& o, long n) { o.frames = int(n); })},
+         .apply =
+             whole(1, 1000000, "a frame count", [](RunOptions& o, std::int64_t n) { o.frames = int(n); })},
         {.name = "--step",
          .value = "K",
          .help = "start at step K of the lesson (see --list-steps)",
@@ -282,7 +289,8 @@ const std::vector<Flag>& flags() {
          .value = "N",
          .help =
              "exercise N of this lesson: the student's file stands in for the lesson's, at the exercise's step, checked at every save (docs/exercises.md)",
-         .apply = whole(1, 99, "an exercise number", [](RunOptions& o, long n) { o.exercise = int(n); })},
+         .apply =
+             whole(1, 99, "an exercise number", [](RunOptions& o, std::int64_t n) { o.exercise = int(n); })},
         {.name = "--scene",
          .value = "FILE",
          .help = "a scene file instead of the lesson's default (see docs/scene-format.md)",
@@ -337,7 +345,8 @@ const std::vector<Flag>& flags() {
          .value = "MS",
          .help = "in a window: every frame takes at least MS milliseconds (it waits the rest), to see\n"
                  "a lesson as a slow renderer shows it (the lesson clock still moves one step a frame)",
-         .apply = whole(0, 10000, "milliseconds", [](RunOptions& o, long n) { o.minFrameMs = int(n); })},
+         .apply =
+             whole(0, 10000, "milliseconds", [](RunOptions& o, std::int64_t n) { o.minFrameMs = int(n); })},
         {.name = "--aspect",
          .value = "W:H|free",
          .help = "in a window (and with --overlay): the picture's aspect, letterboxed in the space the\n"
@@ -346,7 +355,8 @@ const std::vector<Flag>& flags() {
         {.name = "--seed",
          .value = "N",
          .help = "seed for everything random (default 1)",
-         .apply = whole(0, 4294967295L, "a seed", [](RunOptions& o, long n) { o.seed = std::uint32_t(n); })},
+         .apply = whole(0, 4294967295, "a seed",
+                        [](RunOptions& o, std::int64_t n) { o.seed = std::uint32_t(n); })},
         {.name = "--timing",
          .value = "MODE",
          .help = "pass timing: gpu (timer queries), fenced (glFinish + wall clock), off, auto",
@@ -377,11 +387,13 @@ const std::vector<Flag>& flags() {
         {.name = "--bench-frames",
          .value = "N",
          .help = "with --bench: measured frames per setting (default 5; the median is kept)",
-         .apply = whole(1, 1000, "a frame count", [](RunOptions& o, long n) { o.benchFrames = int(n); })},
+         .apply =
+             whole(1, 1000, "a frame count", [](RunOptions& o, std::int64_t n) { o.benchFrames = int(n); })},
         {.name = "--bench-values",
          .value = "N",
          .help = "with --bench: only the first N values of each knob",
-         .apply = whole(1, 1000, "a value count", [](RunOptions& o, long n) { o.benchValues = int(n); })},
+         .apply =
+             whole(1, 1000, "a value count", [](RunOptions& o, std::int64_t n) { o.benchValues = int(n); })},
         {.name = "--bench-out",
          .value = "DIR",
          .help = "with --bench: where the results go (default out/bench/<lesson>/)",

@@ -1,4 +1,5 @@
 #include "app/runner.hpp"
+#include "app/process_start.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -199,7 +200,7 @@ int runLesson(std::unique_ptr<Lesson> owned, LessonInfo info, int argc, char** a
     std::string exe = executableName(lesson.info());
     installFatalErrorHandler(exe);
     Doing doing(cat("running ", exe));
-    std::vector<std::string> args(argv + 1, argv + argc);
+    std::vector<std::string> args = programArguments(argc, argv);
     auto parsed = parseRunOptions(args, int(lesson.steps().size()));
     if (!parsed) {
         std::cerr << exe << ": " << parsed.error() << "\n";

@@ -14,6 +14,8 @@
 #include "base/file_io.hpp"
 #include "base/json_document.hpp"
 #include "base/log.hpp"
+#include "base/user_folders.hpp"
+#include "base/utf8_path.hpp"
 
 namespace fx {
 
@@ -27,7 +29,7 @@ constexpr JsonLimits kSettingsDocument{"settings file", 1024, 8};
 std::optional<fs::path> fromEnvironment(const char* name) {
     const char* value = std::getenv(name);
     if (!value || !*value) return std::nullopt;
-    return fs::path(value);
+    return pathFromUtf8(value);
 }
 
 Result<float> number(const nlohmann::json& j, const char* field, const std::string& source, float fallback) {
@@ -49,8 +51,7 @@ float clampTextScale(float scale) {
 
 fs::path uiSettingsPath() {
     if (auto dir = fromEnvironment("FXLAB_CONFIG_DIR")) return *dir / "ui.json";
-    if (auto dir = fromEnvironment("XDG_CONFIG_HOME")) return *dir / "fxlab" / "ui.json";
-    if (auto home = fromEnvironment("HOME")) return *home / ".config" / "fxlab" / "ui.json";
+    if (auto dir = userConfigFolder()) return *dir / "fxlab" / "ui.json";
     return fs::path("out") / "ui.json";
 }
 

@@ -56,7 +56,8 @@ protected:
 Result<std::unique_ptr<Context>> createWindowContext(const ContextOptions& options);
 Result<std::unique_ptr<Context>> createHeadlessContext(const ContextOptions& options);
 
-// True when a window system is reachable ($DISPLAY or $WAYLAND_DISPLAY set and GLFW starts).
+// True when a window system is reachable (Linux: $DISPLAY or $WAYLAND_DISPLAY set; Windows: always,
+// its headless context being a hidden GLFW window: platform/headless_context_win.cpp).
 bool displayAvailable();
 
 }  // namespace fx

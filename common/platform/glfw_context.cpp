@@ -5,8 +5,6 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <cstdlib>
-
 #include "base/log.hpp"
 #include "gl/context_guard.hpp"
 
@@ -84,12 +82,6 @@ private:
 };
 
 }  // namespace
-
-bool displayAvailable() {
-    const char* x = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    return (x && *x) || (wayland && *wayland);
-}
 
 Result<std::unique_ptr<Context>> createWindowContext(const ContextOptions& options) {
     if (!glfwInit()) return Error{"GLFW could not start: " + lastGlfwError()};

@@ -12,8 +12,7 @@
 #include "base/log.hpp"
 #include "gl/gl.hpp"
 #include "gl/object.hpp"
-// glad's EGL loader (loaded by the headless context) for eglGetProcAddress.
-#include <glad/egl.h>
+#include "ui/headless_gl_loader.hpp"
 
 // The bundled loader's public entry point (imgui_impl_opengl3_loader.h). That header is not
 // included here because its GL macros would replace glad's.
@@ -27,8 +26,8 @@ int imgl3wInit(void);
 namespace fx {
 namespace {
 
-GL3WglProc fromEgl(const char* name) {
-    return reinterpret_cast<GL3WglProc>(eglGetProcAddress(name));
+GL3WglProc fromHeadless(const char* name) {
+    return reinterpret_cast<GL3WglProc>(headlessGlProc(name));
 }
 GL3WglProc fromGlfw(const char* name) {
     return reinterpret_cast<GL3WglProc>(glfwGetProcAddress(name));
@@ -36,8 +35,8 @@ GL3WglProc fromGlfw(const char* name) {
 
 // Points the backend at the context's own loader; see imgui_backend.hpp for why.
 void useContextLoader(GLFWwindow* window) {
-    GL3WGetProcAddressProc proc = window ? fromGlfw : fromEgl;
-    if (!window && (!glad_eglGetProcAddress || eglGetCurrentContext() == EGL_NO_CONTEXT)) return;
+    GL3WGetProcAddressProc proc = window ? fromGlfw : fromHeadless;
+    if (!window && !headlessContextCurrent()) return;
     if (imgl3wInit2(proc) != 0) {
         log::warning("the overlay could not load GL through the context's loader; using libGL.so.1's");
         (void)imgl3wInit();

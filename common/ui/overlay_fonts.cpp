@@ -1,7 +1,6 @@
 #include "ui/overlay_fonts.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <system_error>
 
 #include <imgui.h>
@@ -19,11 +18,6 @@ namespace {
 // strokes. One pixel down keeps them on the built-in font's baseline.
 constexpr float kMergedPixels = 14.0f;
 }  // namespace
-
-std::filesystem::path japaneseFontFile() {
-    if (const char* file = std::getenv("FXLAB_JAPANESE_FONT"); file && *file) return file;
-    return "/usr/share/fonts/opentype/ipafont-gothic/ipag.ttf";
-}
 
 std::vector<char32_t> codePointsBeyondLatin1(const std::vector<std::string_view>& texts) {
     std::vector<char32_t> points;
@@ -72,7 +66,9 @@ Status OverlayFonts::prepare(const std::vector<std::string_view>& texts, float s
         config.PixelSnapH = true;
         config.GlyphOffset.y = 1.0f;
         config.OversampleH = 1;  // the atlas is sampled at whole pixels; no sub-pixel positions
-        if (!io.Fonts->AddFontFromFileTTF(file.c_str(), kMergedPixels * scale, &config, ranges_.data())) {
+        // ImGui takes the name in UTF-8 (and opens it with the wide functions on Windows).
+        const std::string name = file.string();
+        if (!io.Fonts->AddFontFromFileTTF(name.c_str(), kMergedPixels * scale, &config, ranges_.data())) {
             io.Fonts->Clear();
             io.Fonts->AddFontDefault(&base);
             ranges_.clear();

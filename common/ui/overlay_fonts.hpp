@@ -13,7 +13,8 @@
 
 namespace fx {
 
-// FXLAB_JAPANESE_FONT in the environment, else /usr/share/fonts/opentype/ipafont-gothic/ipag.ttf.
+// FXLAB_JAPANESE_FONT in the environment, else the system's (Linux: Debian's IPA Gothic; Windows: MS Gothic
+// or Yu Gothic, else the IPA Gothic the zip carries: japanese_font_posix.cpp, japanese_font_win.cpp).
 std::filesystem::path japaneseFontFile();
 
 // The code points above U+00FF in `texts` (the built-in font has everything below), sorted, once each.

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/child_watchdog.hpp"
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
 #include "app/exercise_words.hpp"
@@ -20,6 +21,8 @@
 #include "base/json_text.hpp"
 #include "base/log.hpp"
 #include "base/words.hpp"
+#include "app/process_start.hpp"
+#include "base/utf8_path.hpp"
 
 namespace {
 
@@ -125,7 +128,10 @@ int list(const std::vector<Exercise>& exercises, bool json) {
 
 int main(int argc, char** argv) {
     fx::installFatalErrorHandler("fxlab-exercise");
-    std::vector<std::string> args(argv + 1, argv + argc);
+    // Windows grades in a child that is this program started again (app/child_watchdog.hpp).
+    std::vector<std::string> args = fx::programArguments(argc, argv);
+    fx::registerExerciseCheckWork();
+    if (auto code = fx::runChildWorkIfAsked(args)) return *code;
     if (args.empty()) return usage();
     const std::string command = args.front();
     args.erase(args.begin());
@@ -148,7 +154,7 @@ int main(int argc, char** argv) {
                 return 2;
             }
         } else if (args[i] == "--class" && i + 1 < args.size())
-            classDir = args[++i];
+            classDir = fx::pathFromUtf8(args[++i]);
         else if (args[i] == "--lang" && i + 1 < args.size()) {
             language = args[++i];
             if (language != "en" && language != "ja") {

@@ -7,6 +7,7 @@
 #include "app/handout_options.hpp"
 #include "base/fatal_error.hpp"
 #include "base/log.hpp"
+#include "app/process_start.hpp"
 #include "base/output_folder.hpp"
 
 namespace {
@@ -22,7 +23,7 @@ void onSignal(int) {
 int main(int argc, char** argv) {
     using namespace fx::handout;
     fx::installFatalErrorHandler("fxlab-handout");
-    auto line = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    auto line = parseCommandLine(fx::programArguments(argc, argv));
     if (!line) {
         std::cerr << "fxlab-handout: " << line.error() << "\n";
         return 2;

@@ -151,32 +151,41 @@ TEST(Exercises, ProgressIsKeptPerExerciseBesideTheWork) {
 }
 
 TEST(Exercises, TheWatchdogEndsAChildThatDoesNotFinish) {
+#ifdef _WIN32
+    GTEST_SKIP() << "Windows starts the child as this program again, which gtest_main cannot serve: "
+                    "tests/windows/watchdog_check.cpp is this test there";
+#endif
+    registerChildWork("test-hang", [](const std::vector<std::string>&) {
+        // Far longer than the watchdog's half second, but finite: with the watchdog broken the
+        // test fails in 20 s (finished, too late) instead of hanging until CTest's timeout.
+        for (int second = 0; second < 20; ++second) std::this_thread::sleep_for(std::chrono::seconds(1));
+        return std::string("finished too late");
+    });
+    registerChildWork("test-answer", [](const std::vector<std::string>& arguments) {
+        return "verdict for " + arguments.at(0);
+    });
+    registerChildWork("test-abort", [](const std::vector<std::string>&) {
+        // SIGABRT, an assert's crash: AddressSanitizer catches SIGSEGV itself and exits
+        // instead, so under the sanitizer build the child would not die by a signal.
+        std::raise(SIGABRT);
+        return std::string();
+    });
     const auto start = std::chrono::steady_clock::now();
-    ChildOutcome hung = runInChildWithin(
-        [] {
-            // Far longer than the watchdog's half second, but finite: with the watchdog broken the
-            // test fails in 20 s (finished, too late) instead of hanging until CTest's timeout.
-            for (int second = 0; second < 20; ++second) std::this_thread::sleep_for(std::chrono::seconds(1));
-            return std::string("finished too late");
-        },
-        0.5);
+    ChildOutcome hung = runInChildWithin("test-hang", {}, 0.5);
     EXPECT_EQ(hung.kind, ChildOutcome::Kind::timedOut);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 
-    ChildOutcome done = runInChildWithin([] { return std::string("verdict"); }, 10.0);
+    ChildOutcome done = runInChildWithin("test-answer", {"04-2"}, 10.0);
     EXPECT_EQ(done.kind, ChildOutcome::Kind::finished);
-    EXPECT_EQ(done.answer, "verdict");
+    EXPECT_EQ(done.answer, "verdict for 04-2");
 
-    ChildOutcome crashed = runInChildWithin(
-        [] {
-            // SIGABRT, an assert's crash: AddressSanitizer catches SIGSEGV itself and exits
-            // instead, so under the sanitizer build the child would not die by a signal.
-            std::raise(SIGABRT);
-            return std::string();
-        },
-        10.0);
+    ChildOutcome crashed = runInChildWithin("test-abort", {}, 10.0);
     EXPECT_EQ(crashed.kind, ChildOutcome::Kind::crashed);
     EXPECT_NE(crashed.reason.find("signal"), std::string::npos);
+
+    ChildOutcome unknown = runInChildWithin("no-such-work", {}, 10.0);
+    EXPECT_EQ(unknown.kind, ChildOutcome::Kind::notStarted);
+    EXPECT_NE(unknown.reason.find("no-such-work"), std::string::npos) << unknown.reason;
 }
 
 // The overlay shows an exercise's text from its lesson's lesson.md and lesson.ja.md, like a step's.

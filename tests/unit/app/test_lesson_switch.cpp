@@ -4,27 +4,37 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "app/lesson_switch.hpp"
 
 namespace fs = std::filesystem;
 using Args = std::vector<std::string>;
 
+// A program's file name on this system: Windows runs .exe's; POSIX runs files with the exec bit.
+#ifdef _WIN32
+const std::string kExe = ".exe";
+#else
+const std::string kExe;
+#endif
+
 TEST(LessonSwitch, TheNeighboursAreTheLessonExecutablesInNumberOrder) {
     const fs::path dir = fs::temp_directory_path() / "fxlab-lesson-switch-test";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const char* name : {"fxlab-02-b", "fxlab-01-a", "fxlab-10-c", "fxlab-notes.txt", "fxlab-03-d.log"}) {
+    for (const std::string& name : {"fxlab-02-b" + kExe, "fxlab-01-a" + kExe, "fxlab-10-c" + kExe,
+                                    std::string("fxlab-notes.txt"), std::string("fxlab-03-d.log")}) {
         std::ofstream(dir / name) << "x";
         fs::permissions(dir / name, fs::perms::owner_all);
     }
     fs::permissions(dir / "fxlab-03-d.log", fs::perms::owner_read);  // not executable
     auto found = fx::lessonExecutables(dir);
     ASSERT_EQ(found.size(), 3u);
-    EXPECT_EQ(found[0].filename(), "fxlab-01-a");
-    EXPECT_EQ(found[2].filename(), "fxlab-10-c");
-    EXPECT_EQ(fx::neighbourIn(found, "fxlab-01-a", 1)->filename(), "fxlab-02-b");
-    EXPECT_EQ(fx::neighbourIn(found, "fxlab-02-b", -1)->filename(), "fxlab-01-a");
+    EXPECT_EQ(found[0].filename(), "fxlab-01-a" + kExe);
+    EXPECT_EQ(found[2].filename(), "fxlab-10-c" + kExe);
+    // The neighbour is found by the lesson's name, without the system's suffix.
+    EXPECT_EQ(fx::neighbourIn(found, "fxlab-01-a", 1)->filename(), "fxlab-02-b" + kExe);
+    EXPECT_EQ(fx::neighbourIn(found, "fxlab-02-b", -1)->filename(), "fxlab-01-a" + kExe);
     EXPECT_FALSE(fx::neighbourIn(found, "fxlab-10-c", 1));
     EXPECT_FALSE(fx::neighbourIn(found, "fxlab-01-a", -1));
     EXPECT_FALSE(fx::neighbourIn(found, "fxlab-99-unknown", 1));

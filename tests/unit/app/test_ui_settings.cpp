@@ -11,6 +11,7 @@
 
 #include "app/ui_settings.hpp"
 #include "base/file_io.hpp"
+#include "base/user_folders.hpp"
 
 namespace fs = std::filesystem;
 
@@ -49,13 +50,33 @@ TEST(UiSettings, TextScaleStaysOnItsSteps) {
     EXPECT_EQ(tiny->textScale, fx::kMaxTextScale);
 }
 
+namespace {
+// Sets an environment variable, or removes it (nullptr).
+void setVariable(const char* name, const char* value) {
+#ifdef _WIN32
+    _putenv_s(name, value ? value : "");  // an empty value removes it
+#else
+    if (value)
+        setenv(name, value, 1);
+    else
+        unsetenv(name);
+#endif
+}
+}  // namespace
+
 TEST(UiSettings, TheFileIsUnderTheConfigFolder) {
-    setenv("FXLAB_CONFIG_DIR", "/tmp/a", 1);
+    setVariable("FXLAB_CONFIG_DIR", "/tmp/a");
     EXPECT_EQ(fx::uiSettingsPath(), fs::path("/tmp/a/ui.json"));
-    unsetenv("FXLAB_CONFIG_DIR");
-    setenv("XDG_CONFIG_HOME", "/tmp/b", 1);
+    setVariable("FXLAB_CONFIG_DIR", nullptr);
+#ifdef _WIN32
+    // Windows: %APPDATA%\fxlab (base/user_folders_win.cpp).
+    ASSERT_TRUE(fx::userConfigFolder());
+    EXPECT_EQ(fx::uiSettingsPath(), *fx::userConfigFolder() / "fxlab" / "ui.json");
+#else
+    setVariable("XDG_CONFIG_HOME", "/tmp/b");
     EXPECT_EQ(fx::uiSettingsPath(), fs::path("/tmp/b/fxlab/ui.json"));
-    unsetenv("XDG_CONFIG_HOME");
+    setVariable("XDG_CONFIG_HOME", nullptr);
+#endif
 }
 
 // Issue 40, defect 2: a settings file that cannot be read was replaced by the defaults at exit.
