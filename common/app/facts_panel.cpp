@@ -3,8 +3,8 @@
 #include <imgui.h>
 
 #include "base/log.hpp"
-#include "ui/word_wrap.hpp"
 #include "base/words.hpp"
+#include "ui/word_wrap.hpp"
 
 namespace fx {
 

@@ -129,7 +129,8 @@ nlohmann::ordered_json buildRunReport(const RunFacts& f, const FrameReport& fram
     j["shownFacts"] = shown;
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const ParamFact& p : f.params) {
-        nlohmann::ordered_json param = {{"name", p.name}, {"label", p.label}, {"value", p.value}, {"source", p.source}};
+        nlohmann::ordered_json param = {
+            {"name", p.name}, {"label", p.label}, {"value", p.value}, {"source", p.source}};
         if (!p.changedInSteps.empty()) {
             nlohmann::ordered_json steps = nlohmann::ordered_json::object();
             for (const auto& [step, value] : p.changedInSteps) steps[std::to_string(step)] = value;

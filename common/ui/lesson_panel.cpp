@@ -103,7 +103,8 @@ void drawParam(ParamSet& params, const Param& p) {
         std::string from = say(source == ParamSource::scene ? "param.fromScene" : "param.from", args);
         if (!p.sceneSetting.empty() && source != ParamSource::scene) from += say("param.sceneStarts", args);
         ImGui::SetTooltip("%s\n(%s%s)\n%s\n%s", p.help().c_str(), p.shownRangeText().c_str(),
-                          p.knob ? say("param.knob").c_str() : "", from.c_str(), say("param.stepNote").c_str());
+                          p.knob ? say("param.knob").c_str() : "", from.c_str(),
+                          say("param.stepNote").c_str());
     }
     ImGui::PopID();
 }
@@ -131,8 +132,9 @@ void drawParams(ParamSet& params, int step) {
         else
             others.push_back(&p);
     }
-    if (!others.empty() && ImGui::TreeNode("other steps", "%s",
-                                           say("panel.otherSteps", {{"count", cat(others.size())}}).c_str())) {
+    if (!others.empty() &&
+        ImGui::TreeNode("other steps", "%s",
+                        say("panel.otherSteps", {{"count", cat(others.size())}}).c_str())) {
         for (const Param* p : others) drawParam(params, *p);
         ImGui::TreePop();
     }

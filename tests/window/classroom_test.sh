@@ -140,7 +140,7 @@ case "$case_" in
     for _ in $(seq 1 120); do grep -q "overlay font" "$work/focus.log" && break; sleep 0.5; done
     sleep 1
     # The first parameter's slider (centre_x) at 1280x720: ctrl+click opens its text field.
-    xdotool mousemove --window "$wid" "${FOCUS_X:-130}" "${FOCUS_Y:-333}"
+    xdotool mousemove --window "$wid" "${FOCUS_X:-130}" "${FOCUS_Y:-362}"
     # At a person's pace (each key a quick tap, shorter than a frame: Dear ImGui 1.86 alone misses those).
     xdotool keydown ctrl click 1 keyup ctrl
     sleep 1
@@ -245,7 +245,7 @@ PY
     # Within one frame: F6 three times (50% pinned -> 25% -> automatic -> 100%: the notice changes on
     # each of the next three frames, and is gone on the third), then a click on split_view's checkbox.
     xdotool key --delay 30 F6 F6 F6
-    xdotool mousemove --window "$wid" "${SLOW_X:-17}" "${SLOW_Y:-345}" click 1
+    xdotool mousemove --window "$wid" "${SLOW_X:-17}" "${SLOW_Y:-368}" click 1
     sleep 8
     xdotool key Escape
     if ! timeout 30 tail --pid="$app" -f /dev/null; then

@@ -36,6 +36,8 @@ picture lesson04-overlay fxlab-04-colour-matrix --step 4
 picture lesson06-japanese fxlab-06-bloom --step 5 --lang ja
 picture bloom-chain-strip fxlab-06-bloom --step 3 --inspect "bloom.down[0]"
 picture lesson10-japanese-title fxlab-10-deferred-shading --step 4 --lang ja
+picture overlay-06-ja fxlab-06-bloom --step 3 --lang ja
+picture overlay-10-ja fxlab-10-deferred-shading --step 6 --lang ja
 
 # Only when every picture was made: nothing half-replaced.
 for f in "$work"/*.png; do cp "$f" "$images/"; done

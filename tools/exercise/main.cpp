@@ -17,12 +17,12 @@
 #include "app/exercise_catalog.hpp"
 #include "app/exercise_check.hpp"
 #include "app/exercise_words.hpp"
+#include "app/process_start.hpp"
 #include "base/fatal_error.hpp"
 #include "base/json_text.hpp"
 #include "base/log.hpp"
-#include "base/words.hpp"
-#include "app/process_start.hpp"
 #include "base/utf8_path.hpp"
+#include "base/words.hpp"
 
 namespace {
 

@@ -5,9 +5,9 @@
 
 #include "app/handout_build.hpp"
 #include "app/handout_options.hpp"
+#include "app/process_start.hpp"
 #include "base/fatal_error.hpp"
 #include "base/log.hpp"
-#include "app/process_start.hpp"
 #include "base/output_folder.hpp"
 
 namespace {
