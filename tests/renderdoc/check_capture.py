@@ -28,6 +28,9 @@ import sys
 
 import renderdoc as rd
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "smoke"))
+from lesson_captures import read_pfm  # noqa: E402  (the smoke checks' reader of --capture-float)
+
 WORK = (rd.ActionFlags.Drawcall | rd.ActionFlags.Dispatch | rd.ActionFlags.Clear | rd.ActionFlags.Copy
         | rd.ActionFlags.GenMips | rd.ActionFlags.Resolve)
 NAMED_TYPES = {rd.ResourceType.Texture, rd.ResourceType.Buffer, rd.ResourceType.Sampler, rd.ResourceType.Shader,
@@ -51,17 +54,6 @@ def file_stem(name):
         elif not stem or stem[-1] != "-":
             stem += "-"
     return stem or "texture"
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        channels = 3 if kind == b"PF" else 1
-        count = width * height * channels
-        values = struct.unpack(("<" if scale < 0 else ">") + f"{count}f", f.read(4 * count))
-    return width, height, channels, values
 
 
 class Replay:

@@ -7,6 +7,18 @@ import report as reports
 from png_pixels import read_png
 
 
+def read_pfm(path):
+    """(width, height, channels, values) of a PFM file (--capture-float), rows bottom-up as stored."""
+    with open(path, "rb") as f:
+        kind = f.readline().strip()
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        channels = 3 if kind == b"PF" else 1
+        count = width * height * channels
+        values = struct.unpack(("<" if scale < 0 else ">") + f"{count}f", f.read(4 * count))
+    return width, height, channels, values
+
+
 class Captures:
     def __init__(self, work):
         self.work = work
@@ -22,14 +34,7 @@ class Captures:
 
     def floats(self, name, texture):
         """(width, height, channels, values) of DIR/NAME/TEXTURE.pfm, rows bottom-up as stored."""
-        with open(f"{self.work}/{name}/{texture}.pfm", "rb") as f:
-            kind = f.readline().strip()
-            width, height = map(int, f.readline().split())
-            scale = float(f.readline())
-            channels = 3 if kind == b"PF" else 1
-            count = width * height * channels
-            values = struct.unpack(("<" if scale < 0 else ">") + f"{count}f", f.read(4 * count))
-        return width, height, channels, values
+        return read_pfm(f"{self.work}/{name}/{texture}.pfm")
 
     def gl_error_failures(self, names):
         return [f"{name}: GL errors" for name in names if self.report(name)["glErrors"] != 0]
